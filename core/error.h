@@ -1,0 +1,18 @@
+#pragma once
+/// @file error.h
+/// The single exception type the core throws on API misuse.
+
+#include <stdexcept>
+#include <string>
+
+namespace impulse2d {
+
+/// Thrown when the core is used wrongly: invalid shapes, stale handles, non-finite input.
+/// The message names the function, the argument and the reason.
+class Error : public std::runtime_error {
+ public:
+  /// Creates an error with a message that says what was wrong and where.
+  explicit Error(const std::string& message) : std::runtime_error(message) {}
+};
+
+}  // namespace impulse2d

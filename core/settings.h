@@ -1,0 +1,83 @@
+#pragma once
+/// @file settings.h
+/// Every method choice of the step, as data: a scene picks them, benchmarks sweep them.
+
+#include "core/material.h"
+#include "core/math.h"
+
+namespace impulse2d {
+
+/// How contact impulses are computed.
+enum class SolverMethod {
+  /// The tutorial's form: each iteration computes a fresh impulse per contact point from the
+  /// current relative velocity and applies it (no memory between iterations or steps);
+  /// friction uses the static/dynamic Coulomb test against that iteration's normal impulse.
+  PerIteration,
+  /// Sequential impulses with accumulated (clamped) normal and friction impulses per point,
+  /// warm-started from the previous step through persistent contacts (Box2D's form).
+  /// Static/dynamic friction: the accumulated tangent impulse is clamped to mu_s * Pn while
+  /// the point sticks, and to mu_d * Pn once it slides.
+  AccumulatedImpulses,
+};
+
+/// How overlap left after the velocity solve is removed.
+enum class PositionCorrection {
+  None,              ///< leave overlap; stacks sink
+  LinearProjection,  ///< the tutorial's: move bodies by percent * max(depth - slop, 0) once a step
+  /// Nonlinear Gauss-Seidel: iterate on positions, recomputing each point's separation from
+  /// the current transforms (Box2D v2.x's position solver); no velocity is added.
+  NonlinearGaussSeidel,
+};
+
+/// How bodies move between steps.
+enum class Integrator {
+  ExplicitEuler,      ///< x += v dt, then v += a dt (the contrast; gains energy)
+  SemiImplicitEuler,  ///< v += a dt, then x += v dt (symplectic)
+};
+
+/// How candidate pairs are found.
+enum class BroadPhaseMethod {
+  BruteForce,    ///< test every pair of bodies' AABBs: O(n^2), the baseline
+  SortAndSweep,  ///< sort AABB lower x, sweep: O(n log n) for scattered scenes
+};
+
+/// All settings of a world's step.
+struct WorldSettings {
+  vec2 gravity{0.0f, -9.81f};  ///< m/s^2
+  float time_step = 1.0f / 60.0f;  ///< seconds per step
+  int substeps = 1;                ///< each step is split into this many equal sub-steps
+
+  SolverMethod solver = SolverMethod::AccumulatedImpulses;  ///< impulse scheme
+  int velocity_iterations = 8;  ///< passes over all contacts per (sub)step
+  bool warm_starting = true;    ///< carry accumulated impulses over (AccumulatedImpulses only)
+
+  PositionCorrection position_correction = PositionCorrection::NonlinearGaussSeidel;  ///< method
+  int position_iterations = 3;      ///< passes for NonlinearGaussSeidel
+  float correction_percent = 0.4f;  ///< fraction of overlap removed per pass (tutorial 0.2-0.8)
+  float slop = 0.01f;               ///< metres of overlap allowed without correction
+  float max_correction = 0.2f;      ///< metres a single NGS correction may move a point
+
+  /// Approach speed (m/s) below which a contact is treated as resting (restitution 0), so
+  /// stacks settle. Set 0 to bounce at any speed.
+  float restitution_threshold = 1.0f;
+  FrictionMixing friction_mixing = FrictionMixing::GeometricMean;      ///< friction rule
+  RestitutionMixing restitution_mixing = RestitutionMixing::Maximum;   ///< restitution rule
+
+  Integrator integrator = Integrator::SemiImplicitEuler;  ///< motion integration
+  BroadPhaseMethod broad_phase = BroadPhaseMethod::SortAndSweep;  ///< pair finding
+
+  bool enable_friction = true;     ///< off: skip all tangent impulses
+  bool enable_restitution = true;  ///< off: every contact is inelastic
+  bool enable_rotation = true;     ///< off: no body rotates (angular terms skipped)
+  bool enable_sleeping = false;    ///< put bodies at rest to sleep
+  float sleep_linear_speed = 0.05f;  ///< m/s below which a body may sleep
+  float sleep_angular_speed = 0.05f; ///< rad/s below which a body may sleep
+  float time_to_sleep = 0.5f;        ///< seconds a body must stay slow before it sleeps
+  float max_linear_speed = 400.0f;   ///< m/s clamp against blow-ups
+};
+
+/// Throws `Error` naming the field unless every setting is finite and in range
+/// (time_step > 0, substeps >= 1, iterations >= 0, 0 <= percent <= 1, slop >= 0, ...).
+void validate_settings(const WorldSettings& settings);
+
+}  // namespace impulse2d

@@ -1,0 +1,115 @@
+#pragma once
+/// @file shape.h
+/// Collision shapes: circle, axis-aligned box and convex polygon, validated on creation.
+/// Every shape is stored in body-local coordinates with the body origin at its centroid.
+
+#include "core/math.h"
+
+#include <array>
+#include <cstdint>
+
+namespace impulse2d {
+
+/// The kinds of shape; the narrow phase's jump table is indexed by these.
+enum class ShapeType : std::uint8_t { Circle = 0, Box = 1, Polygon = 2 };
+
+/// Number of shape kinds (size of each dimension of the collision jump table).
+constexpr int shape_type_count = 3;
+
+/// Largest number of vertices a convex polygon may have.
+constexpr int max_polygon_vertices = 8;
+
+/// A solid disc centred on the body origin.
+struct Circle {
+  float radius = 0.5f;  ///< metres, > 0
+};
+
+/// An axis-aligned box centred on the body origin. It never rotates: a body with this shape
+/// has its rotation fixed, which lets the narrow phase use the cheap AABB tests.
+struct Box {
+  vec2 half_extents{0.5f, 0.5f};  ///< half width and half height, metres, > 0
+};
+
+/// A convex polygon, counter-clockwise, with its centroid at the body origin.
+struct Polygon {
+  int count = 0;                                     ///< number of vertices, 3..8
+  std::array<vec2, max_polygon_vertices> vertices{};  ///< local vertices, metres, CCW
+  std::array<vec2, max_polygon_vertices> normals{};   ///< outward unit normal of edge i -> i+1
+};
+
+/// A shape of any kind. Build it with `make_circle`, `make_box`, `make_polygon` or
+/// `make_oriented_box`, which validate their input.
+struct Shape {
+  ShapeType type = ShapeType::Circle;  ///< which member below is in use
+  Circle circle;                       ///< valid when type == Circle
+  Box box;                             ///< valid when type == Box
+  Polygon polygon;                     ///< valid when type == Polygon
+};
+
+/// A circle of the given radius (metres). Throws `Error` unless 0 < radius < inf.
+Shape make_circle(float radius);
+
+/// An axis-aligned box of the given half extents (metres). Throws `Error` unless both are
+/// finite and positive.
+Shape make_box(vec2 half_extents);
+
+/// A convex polygon from 3..8 vertices in counter-clockwise order (metres). The vertices are
+/// shifted so that the centroid is at the body origin; `centroid_out`, when given, receives
+/// the centroid of the input so a caller can place the body there. Throws `Error` for too few
+/// or too many vertices, non-finite values, a clockwise order, a non-convex or
+/// self-overlapping outline, repeated points, or a degenerate (near zero) area.
+Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out = nullptr);
+
+/// A rectangle that rotates with its body: a 4-vertex polygon of the given half extents.
+Shape make_oriented_box(vec2 half_extents);
+
+/// Mass properties of a shape of uniform density.
+struct MassData {
+  float mass = 0.0f;     ///< kilograms (density * area)
+  float inertia = 0.0f;  ///< kg m^2, about the centroid
+  vec2 centroid{0.0f, 0.0f};  ///< metres, in the shape's coordinates
+  float area = 0.0f;     ///< square metres
+};
+
+/// Mass, centroid and rotational inertia of `shape` at `density` (kg/m^2).
+/// Disc: I = m r^2 / 2; box: I = m (w^2 + h^2) / 12; polygon: triangle fan, moved to the centroid.
+MassData compute_mass(const Shape& shape, float density);
+
+/// Mass properties of the raw polygon outline given (no re-centring), for tests and tools:
+/// centroid in the input coordinates, inertia about that centroid.
+MassData compute_polygon_mass(const vec2* vertices, int count, float density);
+
+/// Axis-aligned bounds of a shape placed with `transform`.
+struct Aabb {
+  vec2 lower{0.0f, 0.0f};  ///< minimum corner, metres
+  vec2 upper{0.0f, 0.0f};  ///< maximum corner, metres
+
+  /// True when the two boxes overlap or touch.
+  bool overlaps(const Aabb& other) const {
+    return !(upper.x < other.lower.x || lower.x > other.upper.x || upper.y < other.lower.y ||
+             lower.y > other.upper.y);
+  }
+  /// True when `point` lies inside or on the box.
+  bool contains(vec2 point) const {
+    return point.x >= lower.x && point.x <= upper.x && point.y >= lower.y && point.y <= upper.y;
+  }
+};
+
+/// The world-space bounding box of `shape` under `transform`.
+Aabb compute_aabb(const Shape& shape, const Transform& transform);
+
+/// True when the world point lies inside (or on) the shape under `transform`.
+bool shape_contains_point(const Shape& shape, const Transform& transform, vec2 point);
+
+/// A ray hit on a shape.
+struct ShapeRayHit {
+  float fraction = 0.0f;     ///< position along the ray, 0 at origin, 1 at origin + translation
+  vec2 normal{0.0f, 0.0f};   ///< outward unit surface normal at the hit
+};
+
+/// Casts the segment `origin` -> `origin + translation` against the shape. Returns true and
+/// fills `hit` for the first entry point; a ray that starts inside the shape does not hit.
+bool raycast_shape(const Shape& shape, const Transform& transform, vec2 origin, vec2 translation,
+                   ShapeRayHit* hit);
+
+}  // namespace impulse2d

@@ -1,0 +1,25 @@
+#pragma once
+/// @file step_stats.h
+/// What the last step did and how long each stage took.
+
+#include <cstdint>
+
+namespace impulse2d {
+
+/// Counts and wall-clock times of the last `World::step`. Times vary from run to run; they are
+/// for profiling and benchmarks, never part of the state hash.
+struct StepStats {
+  int body_count = 0;          ///< bodies in the world
+  int awake_body_count = 0;    ///< bodies not sleeping
+  int pairs_tested = 0;        ///< candidate pairs given to the narrow phase
+  int contact_count = 0;       ///< touching pairs after the narrow phase
+  int contact_point_count = 0; ///< manifold points after the narrow phase
+  double broad_phase_ms = 0.0;   ///< time finding candidate pairs
+  double narrow_phase_ms = 0.0;  ///< time in collide functions and contact matching
+  double solver_ms = 0.0;        ///< time in velocity iterations
+  double integrate_ms = 0.0;     ///< time integrating velocities and positions
+  double position_ms = 0.0;      ///< time in position correction
+  double total_ms = 0.0;         ///< whole step
+};
+
+}  // namespace impulse2d

@@ -1,0 +1,153 @@
+#pragma once
+/// @file world.h
+/// The simulation: bodies, contacts and settings, stepped at a fixed time step.
+/// The tutorial's `Scene`, with handles, methods as data and a deterministic order.
+
+#include "core/body.h"
+#include "core/contact.h"
+#include "core/debug_draw.h"
+#include "core/settings.h"
+#include "core/step_stats.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace impulse2d {
+
+/// A ray's hit on a body.
+struct RayHit {
+  BodyId body;               ///< the body hit
+  vec2 point{0.0f, 0.0f};    ///< world point of entry, metres
+  vec2 normal{0.0f, 0.0f};   ///< outward surface normal there
+  float fraction = 0.0f;     ///< 0 at the ray's origin, 1 at its end
+};
+
+/// Decides whether a new contact between two bodies is solved. Called once when the pair
+/// starts touching; the decision is kept until they separate. Return false to let them pass.
+using ContactFilter = std::function<bool(const Body& a, const Body& b, const Manifold& manifold)>;
+
+/// Called by queries for each body found; return false to stop the query.
+using QueryCallback = std::function<bool(BodyId)>;
+
+/// A 2D rigid-body world.
+class World {
+ public:
+  /// A world with the given settings (validated; throws `Error` naming a bad field).
+  explicit World(const WorldSettings& settings = WorldSettings{});
+
+  /// The current settings.
+  const WorldSettings& settings() const { return settings_; }
+  /// Replaces all settings (validated; throws `Error` naming a bad field).
+  void set_settings(const WorldSettings& settings);
+  /// Sets gravity, m/s^2.
+  void set_gravity(vec2 gravity);
+  /// Sets the fixed time step, seconds (> 0).
+  void set_time_step(float time_step);
+
+  /// Creates a body with one shape. Throws `Error` for non-finite or invalid definitions.
+  BodyId create_body(const BodyDef& def, const Shape& shape);
+  /// Removes a body; its handle and any copy of it become stale. Throws on a stale handle.
+  void remove_body(BodyId id);
+  /// True when `id` names a living body.
+  bool is_valid(BodyId id) const;
+  /// The body named by `id`. Throws `Error` on a stale or null handle.
+  const Body& body(BodyId id) const;
+  /// Handles of all living bodies in ascending slot order (stable across runs).
+  std::vector<BodyId> body_ids() const;
+  /// Number of living bodies.
+  int body_count() const { return living_body_count_; }
+
+  /// Sets position (metres) and angle (radians) directly; also resets the interpolation state.
+  void set_transform(BodyId id, vec2 position, float angle);
+  /// Sets the linear velocity, m/s.
+  void set_linear_velocity(BodyId id, vec2 velocity);
+  /// Sets the angular velocity, rad/s.
+  void set_angular_velocity(BodyId id, float angular_velocity);
+  /// Sets the gravity scale of a body.
+  void set_gravity_scale(BodyId id, float scale);
+  /// Adds a force (N) at a world point (metres) for the next step; it also makes a torque.
+  void apply_force(BodyId id, vec2 force, vec2 world_point);
+  /// Adds a force (N) at the centre of mass for the next step.
+  void apply_force_to_center(BodyId id, vec2 force);
+  /// Adds a torque (N m) for the next step.
+  void apply_torque(BodyId id, float torque);
+  /// Changes velocity at once by an impulse (N s) at a world point (metres).
+  void apply_linear_impulse(BodyId id, vec2 impulse, vec2 world_point);
+  /// Changes angular velocity at once by an angular impulse (N m s).
+  void apply_angular_impulse(BodyId id, float impulse);
+  /// Wakes a sleeping body (or puts an awake one to sleep).
+  void set_awake(BodyId id, bool awake);
+
+  /// Advances the simulation by one fixed step of `settings().time_step` seconds.
+  void step();
+  /// Fixed-step accumulator: adds `frame_time` seconds (clamped to 0.25 s against the spiral
+  /// of death), takes as many whole steps as fit and returns how many it took. Afterwards
+  /// `interpolation_alpha()` is the fraction of a step left over, for drawing.
+  int advance(float frame_time);
+  /// Left-over fraction of a step after `advance`, in [0, 1).
+  float interpolation_alpha() const { return accumulator_ / settings_.time_step; }
+  /// Simulated time, seconds (steps taken times the time step).
+  double time() const { return time_; }
+  /// Number of steps taken.
+  std::int64_t step_count() const { return step_count_; }
+
+  /// Calls `callback` for each body whose bounds overlap `box`, in ascending slot order.
+  void query_aabb(const Aabb& box, const QueryCallback& callback) const;
+  /// Calls `callback` for each body whose shape contains `point`, in ascending slot order.
+  void query_point(vec2 point, const QueryCallback& callback) const;
+  /// The first body hit along `origin` -> `origin + translation` among bodies sharing a bit
+  /// with `layers`; ties broken by slot order.
+  std::optional<RayHit> raycast_closest(vec2 origin, vec2 translation,
+                                        std::uint32_t layers = 0xFFFFFFFFu) const;
+  /// Every body hit along the ray, sorted by fraction (then slot order).
+  std::vector<RayHit> raycast_all(vec2 origin, vec2 translation,
+                                  std::uint32_t layers = 0xFFFFFFFFu) const;
+
+  /// Touching pairs after the last step, sorted by (A's slot, B's slot).
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  /// Installs a filter consulted when a pair starts touching (pass nullptr to remove it).
+  void set_contact_filter(ContactFilter filter) { contact_filter_ = std::move(filter); }
+
+  /// Counts and timings of the last step.
+  const StepStats& stats() const { return stats_; }
+  /// 64-bit FNV-1a hash over every living body's slot, position, angle and velocities, in slot
+  /// order. Equal hashes mean bit-identical states.
+  std::uint64_t state_hash() const;
+  /// Bodies whose state became non-finite during a step: they were restored to their previous
+  /// position, stopped and put to sleep instead of spreading NaN. Cleared by the next step.
+  const std::vector<BodyId>& diverged_bodies() const { return diverged_bodies_; }
+
+  /// Emits the world to `draw`: shapes (interpolated by `options.interpolation_alpha`), then
+  /// overlays in the order of `DebugDrawFlag`.
+  void draw(DebugDraw& draw, const DebugDrawOptions& options) const;
+
+  /// Direct slot access for the pipeline stages: every slot, living or not.
+  const std::vector<Body>& body_slots() const { return bodies_; }
+  /// True when slot `index` holds a living body.
+  bool slot_alive(std::uint32_t index) const { return alive_[index] != 0; }
+
+ private:
+  Body& checked_body(BodyId id, const char* caller);
+  const Body& checked_body(BodyId id, const char* caller) const;
+
+  WorldSettings settings_;
+  std::vector<Body> bodies_;               // slots, indexed by BodyId::index
+  std::vector<std::uint8_t> alive_;        // 1 where the slot holds a body
+  std::vector<std::uint32_t> free_slots_;  // removed slots, reused lowest-first
+  int living_body_count_ = 0;
+
+  std::vector<Contact> contacts_;          // sorted by (a.index, b.index)
+  std::vector<Contact> previous_contacts_; // last step's, for warm starting (reused buffer)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  // broad-phase output (reused)
+  ContactFilter contact_filter_;
+
+  StepStats stats_;
+  std::vector<BodyId> diverged_bodies_;
+  double time_ = 0.0;
+  std::int64_t step_count_ = 0;
+  float accumulator_ = 0.0f;
+};
+
+}  // namespace impulse2d
