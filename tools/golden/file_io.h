@@ -1,0 +1,26 @@
+#pragma once
+/// @file file_io.h
+/// Whole-file reads and atomic whole-file writes.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace impulse2d::golden {
+
+/// The bytes of a file. Throws `GoldenError` naming the file when it cannot be read.
+std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file);
+
+/// The text of a file. Throws `GoldenError` naming the file when it cannot be read.
+std::string read_text_file(const std::filesystem::path& file);
+
+/// Writes `size` bytes to a temporary file beside `file`, then renames it over `file`, so a
+/// reader sees the old content or the new, never a mix. Creates missing parent directories.
+/// Throws `GoldenError` naming the file on failure.
+void write_file_atomically(const std::filesystem::path& file, const void* data, std::size_t size);
+
+/// `write_file_atomically` for text.
+void write_text_file_atomically(const std::filesystem::path& file, const std::string& text);
+
+}  // namespace impulse2d::golden

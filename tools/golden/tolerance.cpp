@@ -1,0 +1,82 @@
+/// @file tolerance.cpp
+#include "tools/golden/tolerance.h"
+
+#include "tools/golden/error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <limits>
+
+namespace impulse2d::golden {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& origin, const std::string& field,
+                       const std::string& reason) {
+  throw GoldenError(origin + ": tolerance field '" + field + "': " + reason);
+}
+
+std::int64_t read_count(const nlohmann::json& value, const std::string& origin,
+                        const std::string& field, std::int64_t upper_limit) {
+  if (!value.is_number_integer()) fail(origin, field, "expected an integer, got " + value.dump());
+  const std::int64_t count = value.get<std::int64_t>();
+  if (count < 0 || count > upper_limit) {
+    fail(origin, field,
+         std::to_string(count) + " is outside 0.." + std::to_string(upper_limit));
+  }
+  return count;
+}
+
+}  // namespace
+
+bool Tolerance::is_strict() const {
+  return max_channel_delta == 0 && max_differing_pixels == 0 && max_differing_ratio == 0.0 &&
+         max_window_pixels == 0;
+}
+
+std::string Tolerance::describe_origin() const {
+  if (is_strict()) return "strict default";
+  return origin.empty() ? "override" : "override from " + origin;
+}
+
+Tolerance tolerance_from_json(const nlohmann::json& object, const std::string& origin) {
+  if (!object.is_object()) {
+    throw GoldenError(origin + ": tolerance: expected a JSON object, got " + object.dump());
+  }
+  Tolerance tolerance;
+  tolerance.origin = origin;
+  constexpr std::int64_t kIntLimit = 1'000'000'000;
+  for (const auto& [field, value] : object.items()) {
+    if (field == "max_channel_delta") {
+      tolerance.max_channel_delta = static_cast<int>(read_count(value, origin, field, 255));
+    } else if (field == "max_differing_pixels") {
+      tolerance.max_differing_pixels =
+          read_count(value, origin, field, std::numeric_limits<std::int64_t>::max());
+    } else if (field == "max_differing_ratio") {
+      if (!value.is_number()) fail(origin, field, "expected a number, got " + value.dump());
+      const double ratio = value.get<double>();
+      if (!(ratio >= 0.0 && ratio <= 1.0)) fail(origin, field, value.dump() + " is outside 0..1");
+      tolerance.max_differing_ratio = ratio;
+    } else if (field == "window_size") {
+      tolerance.window_size = static_cast<int>(read_count(value, origin, field, kIntLimit));
+      if (tolerance.window_size == 0) fail(origin, field, "must be at least 1");
+    } else if (field == "max_window_pixels") {
+      tolerance.max_window_pixels = static_cast<int>(read_count(value, origin, field, kIntLimit));
+    } else {
+      fail(origin, field,
+           "unknown field (known: max_channel_delta, max_differing_pixels, "
+           "max_differing_ratio, window_size, max_window_pixels)");
+    }
+  }
+  return tolerance;
+}
+
+nlohmann::json tolerance_to_json(const Tolerance& tolerance) {
+  return nlohmann::json{{"max_channel_delta", tolerance.max_channel_delta},
+                        {"max_differing_pixels", tolerance.max_differing_pixels},
+                        {"max_differing_ratio", tolerance.max_differing_ratio},
+                        {"window_size", tolerance.window_size},
+                        {"max_window_pixels", tolerance.max_window_pixels}};
+}
+
+}  // namespace impulse2d::golden
