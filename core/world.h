@@ -4,9 +4,11 @@
 /// The tutorial's `Scene`, with handles, methods as data and a deterministic order.
 
 #include "core/body.h"
+#include "core/broad_phase.h"
 #include "core/contact.h"
 #include "core/debug_draw.h"
 #include "core/settings.h"
+#include "core/sleep.h"
 #include "core/step_stats.h"
 
 #include <cstdint>
@@ -131,6 +133,10 @@ class World {
  private:
   Body& checked_body(BodyId id, const char* caller);
   const Body& checked_body(BodyId id, const char* caller) const;
+  void find_contacts();
+  void solve_velocities();
+  void correct_positions();
+  void restore_diverged_bodies();
 
   WorldSettings settings_;
   std::vector<Body> bodies_;               // slots, indexed by BodyId::index
@@ -140,7 +146,9 @@ class World {
 
   std::vector<Contact> contacts_;          // sorted by (a.index, b.index)
   std::vector<Contact> previous_contacts_; // last step's, for warm starting (reused buffer)
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  // broad-phase output (reused)
+  BroadPhase broad_phase_;
+  std::vector<BodyPair> pairs_;            // broad-phase output (reused)
+  SleepIslands sleep_islands_;
   ContactFilter contact_filter_;
 
   StepStats stats_;

@@ -1,0 +1,197 @@
+#include "core/contact_solver.h"
+
+#include "core/integrate.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse2d {
+
+namespace {
+
+// Effective inverse masses and inertias of a contact's two bodies.
+struct PairMass {
+  float inverse_mass_a;
+  float inverse_mass_b;
+  float inverse_inertia_a;
+  float inverse_inertia_b;
+};
+
+PairMass pair_mass(const Body& a, const Body& b, const WorldSettings& settings) {
+  return {a.inverse_mass, b.inverse_mass, effective_inverse_inertia(a, settings),
+          effective_inverse_inertia(b, settings)};
+}
+
+// Velocity of B's point relative to A's point.
+vec2 relative_velocity(const Body& a, const Body& b, const ContactPoint& point) {
+  const vec2 velocity_b = b.linear_velocity + cross(b.angular_velocity, point.anchor_b);
+  const vec2 velocity_a = a.linear_velocity + cross(a.angular_velocity, point.anchor_a);
+  return velocity_b - velocity_a;
+}
+
+// Applies `impulse` to B at its anchor and the opposite to A.
+void apply_impulse(Body& a, Body& b, const PairMass& mass, const ContactPoint& point, vec2 impulse) {
+  a.linear_velocity -= impulse * mass.inverse_mass_a;
+  a.angular_velocity -= mass.inverse_inertia_a * cross(point.anchor_a, impulse);
+  b.linear_velocity += impulse * mass.inverse_mass_b;
+  b.angular_velocity += mass.inverse_inertia_b * cross(point.anchor_b, impulse);
+}
+
+// 1 / (effective mass) along `direction` at a point: invA + invB + (rA x d)^2 invIA + ...
+float inverse_effective_mass(const PairMass& mass, const ContactPoint& point, vec2 direction) {
+  const float arm_a = cross(point.anchor_a, direction);
+  const float arm_b = cross(point.anchor_b, direction);
+  return mass.inverse_mass_a + mass.inverse_mass_b + arm_a * arm_a * mass.inverse_inertia_a +
+         arm_b * arm_b * mass.inverse_inertia_b;
+}
+
+bool is_solvable(const Contact& contact, const std::vector<Body>& bodies) {
+  return contact.enabled && (bodies[contact.body_a.index].inverse_mass > 0.0f ||
+                             bodies[contact.body_b.index].inverse_mass > 0.0f);
+}
+
+vec2 tangent_of(vec2 normal) { return right_perpendicular(normal); }
+
+}  // namespace
+
+void prepare_contacts(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                      const WorldSettings& settings) {
+  const bool keep_impulses =
+      settings.solver == SolverMethod::AccumulatedImpulses && settings.warm_starting;
+  for (Contact& contact : contacts) {
+    if (!contact.enabled) continue;
+    const Body& a = bodies[contact.body_a.index];
+    const Body& b = bodies[contact.body_b.index];
+    const PairMass mass = pair_mass(a, b, settings);
+    const vec2 normal = contact.normal;
+    const vec2 tangent = tangent_of(normal);
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      point.anchor_a = point.point - a.transform.position;
+      point.anchor_b = point.point - b.transform.position;
+      // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n.
+      const vec2 half_depth = normal * (0.5f * point.depth);
+      point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth);
+      point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
+      const float k_normal = inverse_effective_mass(mass, point, normal);
+      const float k_tangent = inverse_effective_mass(mass, point, tangent);
+      point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
+      point.tangent_mass = k_tangent > 0.0f ? 1.0f / k_tangent : 0.0f;
+      const float approach = glm::dot(relative_velocity(a, b, point), normal);
+      point.velocity_bias = 0.0f;
+      if (settings.enable_restitution && approach < -settings.restitution_threshold) {
+        point.velocity_bias = -contact.restitution * approach;
+      }
+      if (!keep_impulses) {
+        point.normal_impulse = 0.0f;
+        point.tangent_impulse = 0.0f;
+      }
+      if (!settings.enable_friction) point.tangent_impulse = 0.0f;
+    }
+  }
+}
+
+void warm_start_contacts(const std::vector<Contact>& contacts, std::vector<Body>& bodies,
+                         const WorldSettings& settings) {
+  for (const Contact& contact : contacts) {
+    if (!is_solvable(contact, bodies)) continue;
+    Body& a = bodies[contact.body_a.index];
+    Body& b = bodies[contact.body_b.index];
+    const PairMass mass = pair_mass(a, b, settings);
+    const vec2 tangent = tangent_of(contact.normal);
+    for (int i = 0; i < contact.point_count; ++i) {
+      const ContactPoint& point = contact.points[i];
+      apply_impulse(a, b, mass, point, contact.normal * point.normal_impulse + tangent * point.tangent_impulse);
+    }
+  }
+}
+
+void solve_contacts_accumulated(std::vector<Contact>& contacts, std::vector<Body>& bodies,
+                                const WorldSettings& settings) {
+  for (Contact& contact : contacts) {
+    if (!is_solvable(contact, bodies)) continue;
+    Body& a = bodies[contact.body_a.index];
+    Body& b = bodies[contact.body_b.index];
+    const PairMass mass = pair_mass(a, b, settings);
+    const vec2 normal = contact.normal;
+    const vec2 tangent = tangent_of(normal);
+
+    if (settings.enable_friction) {
+      for (int i = 0; i < contact.point_count; ++i) {
+        ContactPoint& point = contact.points[i];
+        const float tangent_speed = glm::dot(relative_velocity(a, b, point), tangent);
+        float accumulated = point.tangent_impulse - tangent_speed * point.tangent_mass;
+        if (!point.sliding && std::fabs(accumulated) > contact.static_friction * point.normal_impulse) {
+          point.sliding = true;  // static friction broke: Coulomb switches to the dynamic coefficient
+        }
+        const float limit =
+            (point.sliding ? contact.dynamic_friction : contact.static_friction) * point.normal_impulse;
+        accumulated = std::clamp(accumulated, -limit, limit);
+        const float change = accumulated - point.tangent_impulse;
+        point.tangent_impulse = accumulated;
+        apply_impulse(a, b, mass, point, tangent * change);
+      }
+    }
+
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      const float normal_speed = glm::dot(relative_velocity(a, b, point), normal);
+      const float accumulated =
+          std::max(point.normal_impulse - (normal_speed - point.velocity_bias) * point.normal_mass, 0.0f);
+      const float change = accumulated - point.normal_impulse;
+      point.normal_impulse = accumulated;
+      apply_impulse(a, b, mass, point, normal * change);
+    }
+  }
+}
+
+void solve_contacts_per_iteration(std::vector<Contact>& contacts, std::vector<Body>& bodies,
+                                  const WorldSettings& settings) {
+  for (Contact& contact : contacts) {
+    if (!is_solvable(contact, bodies)) continue;
+    Body& a = bodies[contact.body_a.index];
+    Body& b = bodies[contact.body_b.index];
+    const PairMass mass = pair_mass(a, b, settings);
+    const vec2 normal = contact.normal;
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      const float normal_speed = glm::dot(relative_velocity(a, b, point), normal);
+      if (normal_speed > 0.0f) continue;  // separating: this point needs nothing (others may)
+      // e (1 + e) form: the restitution target velocity_bias equals -e * approach speed.
+      const float normal_impulse = -(normal_speed - point.velocity_bias) * point.normal_mass;
+      apply_impulse(a, b, mass, point, normal * normal_impulse);
+      point.normal_impulse = normal_impulse;
+
+      if (!settings.enable_friction) continue;
+      const vec2 velocity = relative_velocity(a, b, point);
+      const vec2 tangential = velocity - normal * glm::dot(velocity, normal);
+      const float tangential_speed = glm::length(tangential);
+      if (tangential_speed <= 0.0f) continue;
+      const vec2 tangent = tangential / tangential_speed;
+      const float k_tangent = inverse_effective_mass(mass, point, tangent);
+      if (k_tangent <= 0.0f) continue;
+      const float sticking_impulse = -tangential_speed / k_tangent;
+      float friction_impulse = sticking_impulse;
+      point.sliding = std::fabs(sticking_impulse) >= normal_impulse * contact.static_friction;
+      if (point.sliding) friction_impulse = -normal_impulse * contact.dynamic_friction;
+      apply_impulse(a, b, mass, point, tangent * friction_impulse);
+      // Stored in the fixed tangent frame so drawing and statistics read one convention.
+      point.tangent_impulse = friction_impulse * glm::dot(tangent, tangent_of(normal));
+    }
+  }
+}
+
+void update_sliding_state(std::vector<Contact>& contacts, const std::vector<Body>& bodies) {
+  for (Contact& contact : contacts) {
+    if (!contact.enabled) continue;
+    const Body& a = bodies[contact.body_a.index];
+    const Body& b = bodies[contact.body_b.index];
+    const vec2 tangent = tangent_of(contact.normal);
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      point.sliding = std::fabs(glm::dot(relative_velocity(a, b, point), tangent)) > sticking_speed;
+    }
+  }
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,34 @@
+#pragma once
+/// @file integrate.h
+/// Moves bodies through time: velocities from forces and gravity, positions from velocities.
+
+#include "core/body.h"
+#include "core/settings.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace impulse2d {
+
+/// True when the body is moved by the integrator this step (awake and not static).
+inline bool is_integrated(const Body& body) {
+  return body.type != BodyType::Static && body.awake;
+}
+
+/// Effective inverse inertia of a body under the world's settings: 0 when rotation is
+/// disabled for the scene, fixed for the body, or the shape is an axis-aligned box.
+float effective_inverse_inertia(const Body& body, const WorldSettings& settings);
+
+/// v += (F / m + g * gravity_scale) dt, w += T / I dt, then damping and the speed clamp, for
+/// every awake dynamic body. Kinematic bodies keep their velocity.
+void integrate_velocities(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
+                          const WorldSettings& settings, float dt);
+
+/// x += v dt, angle += w dt for every awake non-static body; refreshes the transform.
+void integrate_positions(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
+                         const WorldSettings& settings, float dt);
+
+/// Recomputes the world bounds of every living body.
+void update_bounds(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive);
+
+}  // namespace impulse2d

@@ -1,0 +1,83 @@
+#include "core/narrow_phase.h"
+
+#include "core/collide.h"
+
+namespace impulse2d {
+
+namespace {
+
+// Copies last step's impulses into points whose feature ids match.
+void carry_over_impulses(const Contact& old_contact, Contact& contact) {
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    for (int k = 0; k < old_contact.point_count; ++k) {
+      const ContactPoint& old_point = old_contact.points[k];
+      if (old_point.feature_id == point.feature_id) {
+        point.normal_impulse = old_point.normal_impulse;
+        point.tangent_impulse = old_point.tangent_impulse;
+        point.sliding = old_point.sliding;
+        point.matched = true;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
+                    const WorldSettings& settings, const ContactFilter& filter,
+                    const std::vector<Contact>& previous, std::vector<Contact>& contacts) {
+  contacts.clear();
+  int point_total = 0;
+  std::size_t old_index = 0;  // merge walk: both lists are sorted by pair
+  for (const BodyPair& pair : pairs) {
+    const Body& a = bodies[pair.first];
+    const Body& b = bodies[pair.second];
+    const Manifold manifold = collide(a.shape, a.transform, b.shape, b.transform);
+    if (manifold.point_count == 0) continue;
+
+    Contact contact;
+    contact.body_a = a.id;
+    contact.body_b = b.id;
+    contact.normal = manifold.normal;
+    contact.point_count = manifold.point_count;
+    for (int i = 0; i < manifold.point_count; ++i) {
+      contact.points[i].point = manifold.points[i].point;
+      contact.points[i].depth = manifold.points[i].depth;
+      contact.points[i].feature_id = manifold.points[i].feature_id;
+    }
+    contact.static_friction = mix_friction(a.material.static_friction, b.material.static_friction,
+                                           settings.friction_mixing);
+    contact.dynamic_friction = mix_friction(a.material.dynamic_friction,
+                                            b.material.dynamic_friction, settings.friction_mixing);
+    // Mixing can put dynamic above static (e.g. root-sum-squares never does, but a custom
+    // rule might); Coulomb's model needs static >= dynamic.
+    if (contact.dynamic_friction > contact.static_friction) {
+      contact.dynamic_friction = contact.static_friction;
+    }
+    contact.restitution =
+        mix_restitution(a.material.restitution, b.material.restitution, settings.restitution_mixing);
+
+    while (old_index < previous.size() &&
+           (previous[old_index].body_a.index < pair.first ||
+            (previous[old_index].body_a.index == pair.first &&
+             previous[old_index].body_b.index < pair.second))) {
+      ++old_index;
+    }
+    const bool touched_before = old_index < previous.size() &&
+                                previous[old_index].body_a == a.id &&
+                                previous[old_index].body_b == b.id;
+    if (touched_before) {
+      contact.enabled = previous[old_index].enabled;
+      carry_over_impulses(previous[old_index], contact);
+    } else if (filter) {
+      contact.enabled = filter(a, b, manifold);
+    }
+    point_total += contact.point_count;
+    contacts.push_back(contact);
+  }
+  return point_total;
+}
+
+}  // namespace impulse2d

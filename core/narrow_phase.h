@@ -1,0 +1,21 @@
+#pragma once
+/// @file narrow_phase.h
+/// Turns candidate pairs into persistent contacts: collide through the jump table, mix the
+/// materials, carry impulses over from last step's points with the same feature ids, and keep
+/// a contact filter's decision for as long as the pair keeps touching.
+
+#include "core/broad_phase.h"
+#include "core/contact.h"
+#include "core/world.h"
+
+#include <vector>
+
+namespace impulse2d {
+
+/// Builds `contacts` (sorted by pair) from `pairs`. `previous` holds last step's contacts,
+/// sorted by pair. `filter` may be empty. Returns the number of manifold points made.
+int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
+                    const WorldSettings& settings, const ContactFilter& filter,
+                    const std::vector<Contact>& previous, std::vector<Contact>& contacts);
+
+}  // namespace impulse2d

@@ -1,0 +1,40 @@
+#include "core/settings.h"
+
+#include "core/error.h"
+
+#include <cmath>
+#include <string>
+
+namespace impulse2d {
+
+void validate_settings(const WorldSettings& s) {
+  auto require = [](bool ok, const char* field, const char* reason) {
+    if (!ok) throw Error(std::string("WorldSettings.") + field + ": " + reason);
+  };
+  auto finite = [](float value) { return std::isfinite(value); };
+  require(is_finite(s.gravity), "gravity", "must be finite");
+  require(finite(s.time_step) && s.time_step > 0.0f, "time_step", "must be finite and > 0");
+  require(s.substeps >= 1 && s.substeps <= 64, "substeps", "must be in 1..64");
+  require(s.velocity_iterations >= 0 && s.velocity_iterations <= 1000, "velocity_iterations",
+          "must be in 0..1000");
+  require(s.position_iterations >= 0 && s.position_iterations <= 1000, "position_iterations",
+          "must be in 0..1000");
+  require(finite(s.correction_percent) && s.correction_percent >= 0.0f &&
+              s.correction_percent <= 1.0f,
+          "correction_percent", "must be in [0, 1]");
+  require(finite(s.slop) && s.slop >= 0.0f, "slop", "must be finite and >= 0");
+  require(finite(s.max_correction) && s.max_correction > 0.0f, "max_correction",
+          "must be finite and > 0");
+  require(finite(s.restitution_threshold) && s.restitution_threshold >= 0.0f,
+          "restitution_threshold", "must be finite and >= 0");
+  require(finite(s.sleep_linear_speed) && s.sleep_linear_speed >= 0.0f, "sleep_linear_speed",
+          "must be finite and >= 0");
+  require(finite(s.sleep_angular_speed) && s.sleep_angular_speed >= 0.0f, "sleep_angular_speed",
+          "must be finite and >= 0");
+  require(finite(s.time_to_sleep) && s.time_to_sleep >= 0.0f, "time_to_sleep",
+          "must be finite and >= 0");
+  require(finite(s.max_linear_speed) && s.max_linear_speed > 0.0f, "max_linear_speed",
+          "must be finite and > 0");
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,121 @@
+// World::draw: shapes at interpolated poses, then each overlay that is switched on.
+#include "core/world.h"
+
+#include <algorithm>
+#include <string>
+
+namespace impulse2d {
+
+namespace {
+
+Color fill_of(const Body& body, const DebugDrawOptions& options) {
+  const DebugPalette& palette = options.palette;
+  if (body.type == BodyType::Static) return palette.static_fill;
+  if (body.type == BodyType::Kinematic) return palette.kinematic_fill;
+  if (!body.awake && (options.flags & draw_sleeping)) return palette.sleeping_fill;
+  return palette.dynamic_fill;
+}
+
+// The pose to draw: previous * (1 - alpha) + current * alpha.
+Transform drawn_transform(const Body& body, float alpha) {
+  const vec2 position = body.previous_position * (1.0f - alpha) + body.transform.position * alpha;
+  const float angle = body.previous_angle * (1.0f - alpha) + body.angle * alpha;
+  return Transform{position, Rotation::from_angle(angle)};
+}
+
+void draw_shape(DebugDraw& draw, const Shape& shape, const Transform& transform, Color fill,
+                Color outline) {
+  switch (shape.type) {
+    case ShapeType::Circle:
+      draw.draw_solid_circle(transform.position, shape.circle.radius, transform.rotation.x_axis(),
+                             fill, outline);
+      return;
+    case ShapeType::Box: {
+      const vec2 half = shape.box.half_extents;
+      const vec2 p = transform.position;  // boxes never rotate
+      const vec2 corners[4] = {p + vec2(-half.x, -half.y), p + vec2(half.x, -half.y),
+                               p + vec2(half.x, half.y), p + vec2(-half.x, half.y)};
+      draw.draw_solid_polygon(corners, 4, fill, outline);
+      return;
+    }
+    case ShapeType::Polygon: {
+      vec2 corners[max_polygon_vertices];
+      for (int i = 0; i < shape.polygon.count; ++i) corners[i] = transform.apply(shape.polygon.vertices[i]);
+      draw.draw_solid_polygon(corners, shape.polygon.count, fill, outline);
+      // Orientation mark: a line from the centroid to the first vertex.
+      draw.draw_segment(transform.position, corners[0], outline);
+      return;
+    }
+  }
+}
+
+void draw_box_outline(DebugDraw& draw, const Aabb& box, Color color) {
+  const vec2 corners[4] = {box.lower, vec2(box.upper.x, box.lower.y), box.upper,
+                           vec2(box.lower.x, box.upper.y)};
+  for (int i = 0; i < 4; ++i) draw.draw_segment(corners[i], corners[(i + 1) % 4], color);
+}
+
+}  // namespace
+
+void World::draw(DebugDraw& draw, const DebugDrawOptions& options) const {
+  const std::uint32_t flags = options.flags;
+  const DebugPalette& palette = options.palette;
+  const float alpha = std::clamp(options.interpolation_alpha, 0.0f, 1.0f);
+
+  if (flags & draw_shapes) {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      if (!alive_[i]) continue;
+      const Body& body = bodies_[i];
+      draw_shape(draw, body.shape, drawn_transform(body, alpha), fill_of(body, options), palette.outline);
+    }
+  }
+  if (flags & draw_aabbs) {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      if (alive_[i]) draw_box_outline(draw, bodies_[i].aabb, palette.aabb);
+    }
+  }
+  if (flags & draw_broad_phase) {
+    for (const BodyPair& pair : pairs_) {
+      if (!alive_[pair.first] || !alive_[pair.second]) continue;
+      draw.draw_segment(bodies_[pair.first].transform.position, bodies_[pair.second].transform.position,
+                        palette.broad_phase_pair);
+    }
+  }
+  for (const Contact& contact : contacts_) {
+    if (!contact.enabled) continue;
+    const vec2 normal = contact.normal;
+    const vec2 tangent = right_perpendicular(normal);
+    for (int i = 0; i < contact.point_count; ++i) {
+      const ContactPoint& point = contact.points[i];
+      if (flags & draw_penetration) {
+        const vec2 half = normal * (0.5f * point.depth * options.penetration_scale);
+        draw.draw_segment(point.point - half, point.point + half, palette.penetration);
+      }
+      if (flags & draw_contact_normals) {
+        draw.draw_arrow(point.point, point.point + normal * options.normal_length, palette.contact_normal);
+      }
+      if ((flags & draw_normal_impulses) && point.normal_impulse > 0.0f) {
+        draw.draw_arrow(point.point, point.point + normal * (point.normal_impulse * options.impulse_scale),
+                        palette.normal_impulse);
+      }
+      if ((flags & draw_friction_impulses) && point.tangent_impulse != 0.0f) {
+        draw.draw_arrow(point.point, point.point + tangent * (point.tangent_impulse * options.impulse_scale),
+                        palette.friction_impulse);
+      }
+      if (flags & draw_contact_points) draw.draw_point(point.point, 6.0f, palette.contact_point);
+    }
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!alive_[i]) continue;
+    const Body& body = bodies_[i];
+    const vec2 center = drawn_transform(body, alpha).position;
+    if ((flags & draw_velocities) && body.type != BodyType::Static &&
+        length_squared(body.linear_velocity) > 0.0f) {
+      draw.draw_arrow(center, center + body.linear_velocity * options.velocity_scale, palette.velocity);
+    }
+    if (flags & draw_center_of_mass) draw.draw_point(center, 5.0f, palette.center_of_mass);
+    if (flags & draw_body_ids) draw.draw_text(center, std::to_string(i), palette.label);
+  }
+}
+
+}  // namespace impulse2d

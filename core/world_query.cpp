@@ -1,0 +1,73 @@
+// World queries: bounding boxes, points and rays, each in ascending slot order.
+#include "core/error.h"
+#include "core/world.h"
+
+#include <algorithm>
+#include <string>
+
+namespace impulse2d {
+
+namespace {
+void require_finite_query(vec2 value, const char* caller, const char* name) {
+  if (!is_finite(value)) throw Error(std::string(caller) + ": " + name + " is not finite");
+}
+}  // namespace
+
+void World::query_aabb(const Aabb& box, const QueryCallback& callback) const {
+  require_finite_query(box.lower, "World::query_aabb", "box.lower");
+  require_finite_query(box.upper, "World::query_aabb", "box.upper");
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!alive_[i]) continue;
+    const Aabb bounds = compute_aabb(bodies_[i].shape, bodies_[i].transform);
+    if (bounds.overlaps(box) && !callback(bodies_[i].id)) return;
+  }
+}
+
+void World::query_point(vec2 point, const QueryCallback& callback) const {
+  require_finite_query(point, "World::query_point", "point");
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!alive_[i]) continue;
+    if (shape_contains_point(bodies_[i].shape, bodies_[i].transform, point) &&
+        !callback(bodies_[i].id)) {
+      return;
+    }
+  }
+}
+
+std::vector<RayHit> World::raycast_all(vec2 origin, vec2 translation, std::uint32_t layers) const {
+  require_finite_query(origin, "World::raycast", "origin");
+  require_finite_query(translation, "World::raycast", "translation");
+  std::vector<RayHit> hits;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const Body& body = bodies_[i];
+    if (!alive_[i] || (body.collision_layers & layers) == 0) continue;
+    ShapeRayHit shape_hit;
+    if (raycast_shape(body.shape, body.transform, origin, translation, &shape_hit)) {
+      hits.push_back(
+          RayHit{body.id, origin + translation * shape_hit.fraction, shape_hit.normal, shape_hit.fraction});
+    }
+  }
+  // Stable sort keeps slot order among equal fractions.
+  std::stable_sort(hits.begin(), hits.end(),
+                   [](const RayHit& a, const RayHit& b) { return a.fraction < b.fraction; });
+  return hits;
+}
+
+std::optional<RayHit> World::raycast_closest(vec2 origin, vec2 translation, std::uint32_t layers) const {
+  require_finite_query(origin, "World::raycast", "origin");
+  require_finite_query(translation, "World::raycast", "translation");
+  std::optional<RayHit> closest;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const Body& body = bodies_[i];
+    if (!alive_[i] || (body.collision_layers & layers) == 0) continue;
+    ShapeRayHit shape_hit;
+    if (raycast_shape(body.shape, body.transform, origin, translation, &shape_hit) &&
+        (!closest || shape_hit.fraction < closest->fraction)) {
+      closest = RayHit{body.id, origin + translation * shape_hit.fraction, shape_hit.normal,
+                       shape_hit.fraction};
+    }
+  }
+  return closest;
+}
+
+}  // namespace impulse2d
