@@ -152,8 +152,8 @@ CompareResult compare_images(const Image& expected, const Image& actual,
   }
   result.metrics = measure(expected, actual, tolerance);
   result.violations = check_rules(result.metrics, tolerance);
-  result.outcome =
-      result.violations.empty() ? CompareOutcome::WithinTolerance : CompareOutcome::ExceedsTolerance;
+  result.outcome = result.violations.empty() ? CompareOutcome::WithinTolerance
+                                             : CompareOutcome::ExceedsTolerance;
   return result;
 }
 
@@ -183,7 +183,9 @@ std::string CompareResult::message() const {
        << metrics.differing_ratio << "); max channel delta " << metrics.max_channel_delta
        << " (R " << metrics.channel_max_delta[0] << ", G " << metrics.channel_max_delta[1]
        << ", B " << metrics.channel_max_delta[2] << ", A " << metrics.channel_max_delta[3] << ")";
-  if (!metrics.differing_box.empty()) text << "; changes within " << box_text(metrics.differing_box);
+  if (!metrics.differing_box.empty()) {
+    text << "; changes within " << box_text(metrics.differing_box);
+  }
   if (metrics.alpha_only) text << "; only alpha differs, RGB is identical";
   for (const RuleViolation& violation : violations) text << "; " << violation.text;
   return text.str();

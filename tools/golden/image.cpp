@@ -79,7 +79,8 @@ Image load_png(const std::filesystem::path& file) {
 }
 
 std::vector<std::uint8_t> encode_png(const Image& image) {
-  if (image.width <= 0 || image.height <= 0 || image.pixels.size() != image.pixel_count() * kChannels) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.pixels.size() != image.pixel_count() * kChannels) {
     throw GoldenError("encode_png: image " + std::to_string(image.width) + "x" +
                       std::to_string(image.height) + " with " +
                       std::to_string(image.pixels.size()) + " bytes is not a valid RGBA image");

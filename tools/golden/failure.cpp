@@ -1,0 +1,89 @@
+/// @file failure.cpp
+#include "tools/golden/failure.h"
+
+#include "tools/golden/hex_hash.h"
+
+#include <sstream>
+
+namespace impulse2d::golden {
+
+namespace {
+
+/// ". Renderer differs: golden drawn by X, this run by Y" when the fingerprints differ.
+std::string renderer_note(const GoldenCheck& check) {
+  if (check.expected_renderer == check.actual_renderer) return "";
+  return ". Renderer differs: golden drawn by '" + check.expected_renderer.describe() +
+         "', this run by '" + check.actual_renderer.describe() + "'";
+}
+
+}  // namespace
+
+FailureClass classify_failure(const GoldenCheck& check) {
+  if (!check.second_render_identical) return FailureClass::Nondeterminism;
+  if (!check.golden_present || !check.comparison) return FailureClass::MissingGolden;
+  if (check.comparison->outcome == CompareOutcome::SizeMismatch) return FailureClass::SizeMismatch;
+  if (check.expected_state_hash && *check.expected_state_hash != check.actual_state_hash) {
+    return FailureClass::SimulationDiverged;
+  }
+  if (!check.comparison->passed()) return FailureClass::RasterisationDiffers;
+  return FailureClass::None;
+}
+
+std::string failure_class_name(FailureClass failure_class) {
+  switch (failure_class) {
+    case FailureClass::None: return "passed";
+    case FailureClass::Nondeterminism: return "nondeterminism";
+    case FailureClass::MissingGolden: return "missing golden";
+    case FailureClass::SizeMismatch: return "size mismatch";
+    case FailureClass::SimulationDiverged: return "simulation diverged";
+    case FailureClass::RasterisationDiffers: return "rasterisation differs";
+  }
+  return "unknown";
+}
+
+std::string failure_class_id(FailureClass failure_class) {
+  std::string id = failure_class_name(failure_class);
+  for (char& c : id) {
+    if (c == ' ') c = '_';
+  }
+  return id;
+}
+
+std::string failure_message(const GoldenCheck& check) {
+  const FailureClass failure_class = classify_failure(check);
+  std::ostringstream text;
+  text << failure_class_name(failure_class) << " for golden '" << check.name << "': ";
+  switch (failure_class) {
+    case FailureClass::None:
+      text << check.comparison->message();
+      break;
+    case FailureClass::Nondeterminism:
+      text << "simulating and rendering the same frame twice gave different results; "
+              "tolerance never absorbs this. Look for uninitialised memory, unordered "
+              "containers, thread-count-dependent reductions or time-dependent input";
+      break;
+    case FailureClass::MissingGolden:
+      text << "no golden image exists. The actual image and its sidecar were written to "
+              "the artifact directory; review them and promote with tools/promote_goldens.sh";
+      break;
+    case FailureClass::SizeMismatch:
+      text << "golden is " << check.comparison->expected_width << "x"
+           << check.comparison->expected_height << ", actual is "
+           << check.comparison->actual_width << "x" << check.comparison->actual_height;
+      break;
+    case FailureClass::SimulationDiverged:
+      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+           << ". Bodies that moved most: " << describe_drifts(check.moved_bodies)
+           << ". Image: " << check.comparison->message();
+      break;
+    case FailureClass::RasterisationDiffers:
+      text << "physics state matches (hash " << to_hex_hash(check.actual_state_hash)
+           << ") but the image does not: " << check.comparison->message()
+           << renderer_note(check);
+      break;
+  }
+  return text.str();
+}
+
+}  // namespace impulse2d::golden

@@ -1,0 +1,176 @@
+/// @file sidecar.cpp
+#include "tools/golden/sidecar.h"
+
+#include "tools/golden/error.h"
+#include "tools/golden/file_io.h"
+#include "tools/golden/hex_hash.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <set>
+#include <utility>
+
+namespace impulse2d::golden {
+
+namespace {
+
+using nlohmann::json;
+
+/// Reads fields of one JSON object, each access validated, errors naming origin and field.
+class FieldReader {
+ public:
+  FieldReader(const json& object, std::string origin, std::string prefix)
+      : object_(object), origin_(std::move(origin)), prefix_(std::move(prefix)) {
+    if (!object_.is_object()) {
+      const std::string where =
+          prefix_.empty() ? "top level" : "field '" + prefix_.substr(0, prefix_.size() - 1) + "'";
+      throw GoldenError(origin_ + ": " + where + ": expected a JSON object, got " +
+                        object_.dump());
+    }
+  }
+
+  [[noreturn]] void fail(const std::string& field, const std::string& reason) const {
+    throw GoldenError(origin_ + ": field '" + prefix_ + field + "': " + reason);
+  }
+
+  bool has(const std::string& field) const { return object_.contains(field); }
+
+  const json& get(const std::string& field) const {
+    if (!object_.contains(field)) fail(field, "missing");
+    return object_.at(field);
+  }
+
+  std::string string(const std::string& field, bool allow_empty) const {
+    const json& value = get(field);
+    if (!value.is_string()) fail(field, "expected a string, got " + value.dump());
+    std::string text = value.get<std::string>();
+    if (!allow_empty && text.empty()) fail(field, "must not be empty");
+    return text;
+  }
+
+  int integer(const std::string& field, int minimum) const {
+    const json& value = get(field);
+    if (!value.is_number_integer()) fail(field, "expected an integer, got " + value.dump());
+    const auto number = value.get<std::int64_t>();
+    if (number < minimum || number > std::numeric_limits<int>::max()) {
+      fail(field, value.dump() + " is out of range (minimum " + std::to_string(minimum) + ")");
+    }
+    return static_cast<int>(number);
+  }
+
+  double number(const std::string& field) const {
+    const json& value = get(field);
+    if (!value.is_number()) fail(field, "expected a number, got " + value.dump());
+    const double number = value.get<double>();
+    if (!std::isfinite(number)) fail(field, "must be finite");
+    return number;
+  }
+
+  void reject_unknown(const std::set<std::string>& known) const {
+    for (const auto& item : object_.items()) {
+      if (known.count(item.key()) == 0) fail(item.key(), "unknown field");
+    }
+  }
+
+  const std::string& origin() const { return origin_; }
+
+ private:
+  const json& object_;
+  std::string origin_;
+  std::string prefix_;
+};
+
+}  // namespace
+
+std::string RendererFingerprint::describe() const { return gl_renderer + " / " + gl_version; }
+
+bool RendererFingerprint::operator==(const RendererFingerprint& other) const {
+  return gl_renderer == other.gl_renderer && gl_version == other.gl_version;
+}
+
+std::filesystem::path sidecar_path_for(const std::filesystem::path& png) {
+  std::filesystem::path sidecar = png;
+  sidecar.replace_extension(".json");
+  return sidecar;
+}
+
+Sidecar sidecar_from_json(const json& object, const std::string& origin) {
+  const FieldReader top(object, origin, "");
+  top.reject_unknown(
+      {"format", "scene", "frame", "width", "height", "state_hash", "renderer", "tolerance",
+       "bodies"});
+  const int format = top.integer("format", 1);
+  if (format != kSidecarFormat) {
+    top.fail("format", "version " + std::to_string(format) + " is not supported (expected " +
+                           std::to_string(kSidecarFormat) + ")");
+  }
+  Sidecar sidecar;
+  sidecar.scene = top.string("scene", false);
+  sidecar.frame = top.integer("frame", 0);
+  sidecar.width = top.integer("width", 1);
+  sidecar.height = top.integer("height", 1);
+  const std::string hash_text = top.string("state_hash", false);
+  const std::optional<std::uint64_t> hash = parse_hex_hash(hash_text);
+  if (!hash) top.fail("state_hash", "expected 16 hex digits, got \"" + hash_text + "\"");
+  sidecar.state_hash = *hash;
+
+  const FieldReader renderer(top.get("renderer"), origin, "renderer.");
+  renderer.reject_unknown({"gl_renderer", "gl_version"});
+  sidecar.renderer.gl_renderer = renderer.string("gl_renderer", true);
+  sidecar.renderer.gl_version = renderer.string("gl_version", true);
+
+  if (top.has("tolerance")) sidecar.tolerance = tolerance_from_json(top.get("tolerance"), origin);
+
+  if (top.has("bodies")) {
+    const json& bodies = top.get("bodies");
+    if (!bodies.is_array()) top.fail("bodies", "expected an array, got " + bodies.dump());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const FieldReader body(bodies[i], origin, "bodies[" + std::to_string(i) + "].");
+      body.reject_unknown({"name", "x", "y", "angle"});
+      sidecar.bodies.push_back(
+          {body.string("name", false), body.number("x"), body.number("y"), body.number("angle")});
+    }
+  }
+  return sidecar;
+}
+
+json sidecar_to_json(const Sidecar& sidecar) {
+  json bodies = json::array();
+  for (const BodyPose& pose : sidecar.bodies) {
+    bodies.push_back({{"name", pose.name}, {"x", pose.x}, {"y", pose.y}, {"angle", pose.angle}});
+  }
+  json object = {{"format", kSidecarFormat},
+                 {"scene", sidecar.scene},
+                 {"frame", sidecar.frame},
+                 {"width", sidecar.width},
+                 {"height", sidecar.height},
+                 {"state_hash", to_hex_hash(sidecar.state_hash)},
+                 {"renderer",
+                  {{"gl_renderer", sidecar.renderer.gl_renderer},
+                   {"gl_version", sidecar.renderer.gl_version}}},
+                 {"tolerance", tolerance_to_json(sidecar.tolerance)}};
+  if (!sidecar.bodies.empty()) object["bodies"] = std::move(bodies);
+  return object;
+}
+
+Sidecar read_sidecar(const std::filesystem::path& file, const std::string& display_name) {
+  const std::string origin =
+      "sidecar '" + (display_name.empty() ? file.string() : display_name) + "'";
+  const std::string text = read_text_file(file);
+  json object;
+  try {
+    object = json::parse(text);
+  } catch (const json::parse_error& error) {
+    throw GoldenError(origin + ": not valid JSON: " + error.what());
+  }
+  return sidecar_from_json(object, origin);
+}
+
+void write_sidecar(const std::filesystem::path& file, const Sidecar& sidecar) {
+  write_text_file_atomically(file, sidecar_to_json(sidecar).dump(2) + "\n");
+}
+
+}  // namespace impulse2d::golden
