@@ -110,9 +110,10 @@ std::vector<RuleViolation> check_rules(const DiffMetrics& metrics, const Toleran
   }
   if (metrics.worst_window_pixels > tolerance.max_window_pixels) {
     std::ostringstream text;
-    text << "worst " << metrics.window_width << "x" << metrics.window_height << " window has "
-         << metrics.worst_window_pixels << " differing pixels at (" << metrics.worst_window_x
-         << "," << metrics.worst_window_y << "); limit " << tolerance.max_window_pixels << origin;
+    text << "worst " << metrics.window_width << "x" << metrics.window_height
+         << " window, top-left (" << metrics.worst_window_x << "," << metrics.worst_window_y
+         << "), has " << metrics.worst_window_pixels << " differing pixels; limit "
+         << tolerance.max_window_pixels << origin;
     violations.push_back({ToleranceRule::WindowDensity,
                           static_cast<double>(metrics.worst_window_pixels),
                           static_cast<double>(tolerance.max_window_pixels), text.str()});

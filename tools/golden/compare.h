@@ -61,8 +61,9 @@ struct RuleViolation {
   ToleranceRule rule = ToleranceRule::DifferingPixels;  ///< which rule
   double measured = 0.0;  ///< what the comparison found
   double limit = 0.0;     ///< what the tolerance allows
-  std::string text;       ///< e.g. "worst 8x8 window has 25 differing pixels at (40,32);
-                          ///< limit 4 (override from sidecar 'circles/start.json')"
+  /// e.g. "worst 8x8 window, top-left (37,29), has 25 differing pixels; limit 4
+  /// (override from sidecar 'circles/start.json')"
+  std::string text;
 };
 
 /// The result of `compare_images`.

@@ -1,0 +1,181 @@
+/// @file report.cpp
+#include "tools/golden/report.h"
+
+#include "tools/golden/base64.h"
+#include "tools/golden/error.h"
+#include "tools/golden/file_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace impulse2d::golden {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kStyle = R"(
+body { font-family: sans-serif; margin: 1.5em; background: #fafafa; color: #222; }
+h1 { font-size: 1.4em; }
+section { background: #fff; border: 1px solid #ddd; border-radius: 6px; padding: 1em;
+          margin-bottom: 1.5em; }
+h2 { font-size: 1.15em; margin-top: 0; }
+.class { display: inline-block; padding: 0.1em 0.5em; border-radius: 4px; background: #c62828;
+         color: #fff; font-size: 0.85em; margin-left: 0.5em; }
+.message { font-family: monospace; white-space: pre-wrap; background: #f4f4f4;
+           padding: 0.6em; border-radius: 4px; }
+.images { display: flex; flex-wrap: wrap; gap: 1em; }
+figure { margin: 0; }
+figure img { border: 1px solid #ccc; image-rendering: pixelated; max-width: 420px;
+             background: repeating-conic-gradient(#ddd 0% 25%, #fff 0% 50%) 0 0 / 16px 16px; }
+figcaption { font-size: 0.85em; color: #555; text-align: center; }
+table { border-collapse: collapse; font-size: 0.9em; margin-top: 0.8em; }
+td, th { border: 1px solid #ddd; padding: 0.2em 0.6em; text-align: left; }
+)";
+
+/// One failure as read back from its metrics.json.
+struct Entry {
+  std::filesystem::path directory;  ///< the failure's artifact directory
+  std::string relative;             ///< that directory relative to the root
+  json metrics;                     ///< parsed metrics.json; null when unreadable
+  std::string error;                ///< why it could not be read
+};
+
+std::string value_text(const json& value) {
+  return value.is_string() ? value.get<std::string>() : value.dump();
+}
+
+std::string image_figure(const Entry& entry, const std::string& key, const std::string& caption) {
+  const json& files = entry.metrics["files"];
+  if (!files.is_object() || !files.contains(key) || !files[key].is_string()) return "";
+  const std::filesystem::path file = entry.directory / files[key].get<std::string>();
+  std::string source;
+  try {
+    source = "data:image/png;base64," + base64_encode(read_file_bytes(file));
+  } catch (const GoldenError& error) {
+    return "<figure><figcaption>" + escape_html(caption) + ": " + escape_html(error.what()) +
+           "</figcaption></figure>\n";
+  }
+  return "<figure><img src=\"" + source + "\" alt=\"" + escape_html(caption) +
+         "\"><figcaption>" + escape_html(caption) + "</figcaption></figure>\n";
+}
+
+std::string metrics_table(const json& metrics) {
+  std::ostringstream html;
+  html << "<table>\n";
+  auto row = [&html](const std::string& key, const json& value) {
+    html << "<tr><th>" << escape_html(key) << "</th><td>" << escape_html(value_text(value))
+         << "</td></tr>\n";
+  };
+  for (const char* key : {"expected_state_hash", "actual_state_hash", "second_render_identical",
+                          "expected_renderer", "actual_renderer"}) {
+    if (metrics.contains(key)) row(key, metrics[key]);
+  }
+  const json& comparison = metrics.value("comparison", json(nullptr));
+  if (comparison.is_object()) {
+    for (const char* key : {"outcome", "expected_size", "actual_size"}) {
+      if (comparison.contains(key)) row(key, comparison[key]);
+    }
+    if (comparison.contains("metrics") && comparison["metrics"].is_object()) {
+      for (const auto& item : comparison["metrics"].items()) row(item.key(), item.value());
+    }
+    if (comparison.contains("tolerance")) row("tolerance", comparison["tolerance"]);
+  }
+  html << "</table>\n";
+  return html.str();
+}
+
+std::string entry_section(const Entry& entry) {
+  std::ostringstream html;
+  if (entry.metrics.is_null()) {
+    html << "<section><h2>" << escape_html(entry.relative)
+         << "<span class=\"class\">unreadable</span></h2><p class=\"message\">"
+         << escape_html(entry.error) << "</p></section>\n";
+    return html.str();
+  }
+  const std::string name = value_text(entry.metrics.value("name", json(entry.relative)));
+  html << "<section id=\"" << escape_html(name) << "\"><h2>" << escape_html(name)
+       << "<span class=\"class\">"
+       << escape_html(value_text(entry.metrics.value("class_name", json("failure"))))
+       << "</span></h2>\n<p class=\"message\">"
+       << escape_html(value_text(entry.metrics.value("message", json("")))) << "</p>\n"
+       << "<div class=\"images\">\n"
+       << image_figure(entry, "expected", "expected (golden)")
+       << image_figure(entry, "actual", "actual")
+       << image_figure(entry, "diff", "diff overlay (red: beyond tolerance, yellow: within)")
+       << image_figure(entry, "heatmap", "heatmap (largest delta = white)") << "</div>\n"
+       << metrics_table(entry.metrics) << "<p>Artifacts: <code>"
+       << escape_html(entry.relative) << "</code></p></section>\n";
+  return html.str();
+}
+
+std::vector<Entry> collect_entries(const std::filesystem::path& root) {
+  std::vector<Entry> entries;
+  std::error_code error;
+  if (!std::filesystem::exists(root, error)) return entries;
+  for (std::filesystem::recursive_directory_iterator it(root, error), end; !error && it != end;
+       it.increment(error)) {
+    if (it->path().filename() != "metrics.json" || !it->is_regular_file()) continue;
+    Entry entry;
+    entry.directory = it->path().parent_path();
+    entry.relative = entry.directory.lexically_relative(root).generic_string();
+    try {
+      entry.metrics = json::parse(read_text_file(it->path()));
+    } catch (const std::exception& failure) {
+      entry.metrics = nullptr;
+      entry.error = it->path().string() + ": " + failure.what();
+    }
+    entries.push_back(std::move(entry));
+  }
+  if (error) throw GoldenError("cannot scan '" + root.string() + "': " + error.message());
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return a.relative < b.relative; });
+  return entries;
+}
+
+}  // namespace
+
+std::string escape_html(const std::string& text) {
+  std::string escaped;
+  escaped.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': escaped += "&amp;"; break;
+      case '<': escaped += "&lt;"; break;
+      case '>': escaped += "&gt;"; break;
+      case '"': escaped += "&quot;"; break;
+      case '\'': escaped += "&#39;"; break;
+      default: escaped += c;
+    }
+  }
+  return escaped;
+}
+
+int write_html_report(const std::filesystem::path& root) {
+  const std::vector<Entry> entries = collect_entries(root);
+  std::map<std::string, int> counts;
+  for (const Entry& entry : entries) {
+    ++counts[entry.metrics.is_null()
+                 ? std::string("unreadable")
+                 : value_text(entry.metrics.value("class_name", json("failure")))];
+  }
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+       << "<title>impulse2d golden failures</title>\n<style>" << kStyle << "</style></head>\n"
+       << "<body>\n<h1>impulse2d golden images: " << entries.size() << " failure"
+       << (entries.size() == 1 ? "" : "s") << "</h1>\n<ul>\n";
+  for (const auto& [name, count] : counts) {
+    html << "<li>" << escape_html(name) << ": " << count << "</li>\n";
+  }
+  html << "</ul>\n";
+  for (const Entry& entry : entries) html << entry_section(entry);
+  html << "</body></html>\n";
+  write_text_file_atomically(root / "index.html", html.str());
+  return static_cast<int>(entries.size());
+}
+
+}  // namespace impulse2d::golden
