@@ -1,0 +1,54 @@
+/// @file easy_font.cpp
+/// The only file that includes stb_easy_font.h (its functions are static to this file).
+#include "render/easy_font.h"
+
+#include <stb_easy_font.h>
+
+#include <algorithm>
+
+namespace impulse2d::render {
+
+namespace {
+
+// stb_easy_font emits four vertices per quad: x, y, z (floats) and an RGBA colour.
+struct EasyFontVertex {
+  float x;
+  float y;
+  float z;
+  unsigned char color[4];
+};
+
+}  // namespace
+
+void layout_text(const std::string& text, std::vector<GlyphRect>& rects) {
+  if (text.empty()) return;
+  // stb's estimate is ~270 bytes per character; leave room for the densest glyphs.
+  thread_local std::vector<EasyFontVertex> vertices;
+  vertices.resize(text.size() * 64 + 64);
+  std::string mutable_text = text;  // stb takes a non-const char*
+  const int quads = stb_easy_font_print(0.0f, 0.0f, mutable_text.data(), nullptr, vertices.data(),
+                                        static_cast<int>(vertices.size() * sizeof(EasyFontVertex)));
+  for (int q = 0; q < quads; ++q) {
+    const EasyFontVertex* v = &vertices[static_cast<std::size_t>(q) * 4];
+    GlyphRect rect{v[0].x, v[0].y, v[0].x, v[0].y};
+    for (int i = 1; i < 4; ++i) {
+      rect.left = std::min(rect.left, v[i].x);
+      rect.right = std::max(rect.right, v[i].x);
+      rect.top = std::min(rect.top, v[i].y);
+      rect.bottom = std::max(rect.bottom, v[i].y);
+    }
+    rects.push_back(rect);
+  }
+}
+
+float text_width(const std::string& text) {
+  std::string mutable_text = text;
+  return static_cast<float>(stb_easy_font_width(mutable_text.data()));
+}
+
+float text_height(const std::string& text) {
+  std::string mutable_text = text;
+  return static_cast<float>(stb_easy_font_height(mutable_text.data()));
+}
+
+}  // namespace impulse2d::render

@@ -1,0 +1,87 @@
+/// @file frame_renderer.cpp
+#include "render/frame_renderer.h"
+
+#include "core/world.h"
+#include "render/motion_trails.h"
+#include "render/offscreen_context.h"
+#include "render/render_error.h"
+
+namespace impulse2d::render {
+
+FrameRenderer::FrameRenderer(int width, int height, const PrimitiveStyle& style)
+    : FrameRenderer(create_offscreen_context(width, height), style) {}
+
+FrameRenderer::FrameRenderer(std::unique_ptr<OffscreenContext> context, const PrimitiveStyle& style)
+    : context_(std::move(context)) {
+  if (!context_) throw RenderError("FrameRenderer: no offscreen context given");
+  context_->make_current();
+  primitives_ = std::make_unique<PrimitiveRenderer>(style);
+}
+
+FrameRenderer::~FrameRenderer() {
+  context_->make_current();  // GL objects are deleted under their own context
+  primitives_.reset();
+}
+
+int FrameRenderer::width() const { return context_->width(); }
+
+int FrameRenderer::height() const { return context_->height(); }
+
+std::string FrameRenderer::fingerprint() const { return context_->renderer() + " | " + context_->version(); }
+
+void FrameRenderer::check_camera(const Camera& camera) const {
+  if (camera.width() != width() || camera.height() != height()) {
+    throw RenderError("FrameRenderer: camera is " + std::to_string(camera.width()) + "x" +
+                      std::to_string(camera.height()) + " but the renderer draws " +
+                      std::to_string(width()) + "x" + std::to_string(height()) + " frames");
+  }
+}
+
+void FrameRenderer::render(const World& world, const Camera& camera, const FrameOptions& options,
+                           const HudInfo& hud, Frame& frame) {
+  check_camera(camera);
+  const ThemePalette palette = theme_palette(options.theme);
+  DebugDrawOptions draw_options = options.draw;
+  draw_options.palette = palette.debug;
+
+  context_->make_current();
+  primitives_->begin(camera);
+  world.draw(*primitives_, draw_options);
+  const bool trails_on = options.trails != nullptr && !options.trails->empty();
+  if (trails_on) options.trails->draw(*primitives_, palette.trail);
+  if (options.show_hud || options.show_legend) {
+    std::vector<std::string> lines;
+    if (options.show_hud) {
+      HudCounts counts;
+      counts.simulated_time = world.time();
+      counts.body_count = world.body_count();
+      counts.contact_count = static_cast<int>(world.contacts().size());
+      for (const Contact& contact : world.contacts()) counts.contact_point_count += contact.point_count;
+      lines = hud_lines(hud, counts);
+    }
+    std::vector<LegendEntry> legend;
+    if (options.show_legend) legend = legend_entries(draw_options, camera, trails_on, palette.trail);
+    draw_hud(*primitives_, lines, legend, palette, options.text_scale);
+  }
+  primitives_->finish(palette.background);
+  context_->read_pixels(frame);
+}
+
+Frame FrameRenderer::render(const World& world, const Camera& camera, const FrameOptions& options,
+                            const HudInfo& hud) {
+  Frame frame;
+  render(world, camera, options, hud, frame);
+  return frame;
+}
+
+void FrameRenderer::render_primitives(const Camera& camera, Color background,
+                                      const std::function<void(PrimitiveRenderer&)>& emit, Frame& frame) {
+  check_camera(camera);
+  context_->make_current();
+  primitives_->begin(camera);
+  emit(*primitives_);
+  primitives_->finish(background);
+  context_->read_pixels(frame);
+}
+
+}  // namespace impulse2d::render

@@ -1,0 +1,90 @@
+#pragma once
+/// @file frame_renderer.h
+/// The renderer's front door: a `World` seen through a `Camera` becomes an RGBA `Frame`.
+///
+/// \code
+///   render::FrameRenderer renderer(800, 600);
+///   const render::Camera camera = render::Camera::fit(render::world_bounds(world), 800, 600);
+///   render::FrameOptions options;
+///   options.draw.flags = draw_all;
+///   render::Frame frame;
+///   renderer.render(world, camera, options, render::HudInfo{"pyramid", 0}, frame);
+///   render::write_png("out/pyramid_00000.png", frame);
+/// \endcode
+
+#include "core/debug_draw.h"
+#include "render/camera.h"
+#include "render/frame.h"
+#include "render/hud.h"
+#include "render/palette.h"
+#include "render/primitive_renderer.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace impulse2d {
+class World;
+}
+
+namespace impulse2d::render {
+
+class OffscreenContext;
+class MotionTrails;
+
+/// How a frame looks, besides the camera.
+struct FrameOptions {
+  /// Overlay flags and arrow scales. Its `palette` is replaced by the theme's.
+  DebugDrawOptions draw;
+  Theme theme = Theme::Light;  ///< background, outlines and overlay colours
+  bool show_hud = true;        ///< scene, frame, simulated time and counts, top-left
+  bool show_legend = true;     ///< colour key of the overlays that are on, top-right
+  int text_scale = 1;          ///< integer magnification of HUD and legend text (1 = 7 px caps)
+  /// Motion trails to draw over the overlays (not owned; nullptr for none).
+  const MotionTrails* trails = nullptr;
+};
+
+/// Owns an offscreen GL context and the primitive batch, and renders frames of a fixed size.
+/// Use it from the thread that created it. Frames depend only on their inputs: the same
+/// world, camera and options give bit-identical pixels on every run and any llvmpipe thread
+/// count.
+class FrameRenderer {
+ public:
+  /// A renderer with its own OSMesa context of width x height pixels. Throws `RenderError`
+  /// when the context cannot be created (naming driver and GL version) or the size is bad.
+  FrameRenderer(int width, int height, const PrimitiveStyle& style = PrimitiveStyle{});
+  /// A renderer drawing into `context` (any `OffscreenContext` backend).
+  explicit FrameRenderer(std::unique_ptr<OffscreenContext> context,
+                         const PrimitiveStyle& style = PrimitiveStyle{});
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+  /// Frame width, pixels.
+  int width() const;
+  /// Frame height, pixels.
+  int height() const;
+  /// "GL_RENDERER | GL_VERSION" of the context, for golden-image sidecars.
+  std::string fingerprint() const;
+
+  /// Draws `world` (via `World::draw`), then trails, HUD and legend, into `frame`. The camera
+  /// must have this renderer's size (else `RenderError`).
+  void render(const World& world, const Camera& camera, const FrameOptions& options,
+              const HudInfo& hud, Frame& frame);
+  /// As above, returning a new frame.
+  Frame render(const World& world, const Camera& camera, const FrameOptions& options, const HudInfo& hud);
+
+  /// Draws whatever `emit` sends to the batch (world primitives through its `DebugDraw`
+  /// methods, or screen rectangles and text) on `background`, into `frame`. For tests and
+  /// tools that have no world.
+  void render_primitives(const Camera& camera, Color background,
+                         const std::function<void(PrimitiveRenderer&)>& emit, Frame& frame);
+
+ private:
+  void check_camera(const Camera& camera) const;
+
+  std::unique_ptr<OffscreenContext> context_;
+  std::unique_ptr<PrimitiveRenderer> primitives_;
+};
+
+}  // namespace impulse2d::render

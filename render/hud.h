@@ -1,0 +1,58 @@
+#pragma once
+/// @file hud.h
+/// The heads-up display: a text block (scene, frame, simulated time, counts) and a legend
+/// with one colour key per overlay that is on, drawn in screen space with stb_easy_font.
+
+#include "core/debug_draw.h"
+#include "render/camera.h"
+#include "render/palette.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impulse2d::render {
+
+class PrimitiveRenderer;
+
+/// What the HUD says that the world does not know.
+struct HudInfo {
+  std::string scene_name;  ///< shown first
+  std::int64_t frame = 0;  ///< frame number of the sequence
+  /// Wall-clock milliseconds of the last step. Shown only when set: it differs from run to
+  /// run, so it makes frames non-reproducible.
+  std::optional<double> step_milliseconds;
+  /// Wall-clock frames per second. Shown only when set, for the same reason.
+  std::optional<double> frames_per_second;
+};
+
+/// The simulation figures the HUD reports, read from a world.
+struct HudCounts {
+  double simulated_time = 0.0;  ///< seconds
+  int body_count = 0;           ///< living bodies
+  int contact_count = 0;        ///< touching pairs
+  int contact_point_count = 0;  ///< manifold points over all touching pairs
+};
+
+/// One row of the legend: a colour key and what it means.
+struct LegendEntry {
+  Color color;        ///< the overlay's colour
+  std::string label;  ///< its meaning, with its scale when it has one
+};
+
+/// The HUD's lines of text, top to bottom.
+std::vector<std::string> hud_lines(const HudInfo& info, const HudCounts& counts);
+
+/// One entry per overlay flag that is on in `options` (shapes have none), plus motion trails
+/// when `trails_on`, in flag order. Arrow scales are given as what 50 pixels stand for under
+/// `camera`.
+std::vector<LegendEntry> legend_entries(const DebugDrawOptions& options, const Camera& camera,
+                                        bool trails_on, Color trail_color);
+
+/// Draws the HUD text (top-left) and, when `legend` is not empty, the legend (top-right),
+/// each on a translucent panel, at integer `text_scale`.
+void draw_hud(PrimitiveRenderer& renderer, const std::vector<std::string>& lines,
+              const std::vector<LegendEntry>& legend, const ThemePalette& palette, int text_scale);
+
+}  // namespace impulse2d::render

@@ -1,0 +1,92 @@
+#pragma once
+/// @file primitive_renderer.h
+/// The batched GL implementation of core's `DebugDraw`: every primitive of a frame becomes
+/// one instance of one program, drawn in a single instanced call in the order it was emitted.
+
+#include "core/debug_draw.h"
+#include "render/camera.h"
+#include "render/easy_font.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace impulse2d::render {
+
+class ShaderProgram;
+
+/// Sizes of the drawn marks, in screen pixels so they read the same at any zoom.
+struct PrimitiveStyle {
+  float line_width = 1.5f;         ///< segments, arrow shafts, outlines, orientation marks
+  float arrow_head_length = 7.0f;  ///< at most half the arrow's length
+  float arrow_head_width = 6.0f;   ///< full width of the head at its base
+  int label_scale = 1;             ///< integer magnification of `draw_text` labels (1 = 7 px caps)
+};
+
+/// Draws world primitives (lines and arrows as thin anti-aliased quads, circles as quads
+/// with an analytic anti-aliased edge, polygons as triangles) and screen-space rectangles and
+/// text, batched between `begin` and `finish`. Needs the GL context it was created under to
+/// be current for construction, `finish` and destruction.
+class PrimitiveRenderer final : public DebugDraw {
+ public:
+  /// Compiles the program and creates the buffers. Throws `RenderError` on shader errors.
+  explicit PrimitiveRenderer(const PrimitiveStyle& style = PrimitiveStyle{});
+  ~PrimitiveRenderer() override;
+  PrimitiveRenderer(const PrimitiveRenderer&) = delete;
+  PrimitiveRenderer& operator=(const PrimitiveRenderer&) = delete;
+
+  /// Starts a frame seen through `camera`; drops anything batched before.
+  void begin(const Camera& camera);
+  /// Clears the framebuffer to `background` (drawn opaque) and draws the batch, in order.
+  void finish(Color background);
+  /// Primitives batched since `begin`.
+  std::size_t primitive_count() const { return instances_.size(); }
+  /// Width of the frame being batched, pixels.
+  int viewport_width() const { return camera_.width(); }
+  /// Height of the frame being batched, pixels.
+  int viewport_height() const { return camera_.height(); }
+  /// The style in use.
+  const PrimitiveStyle& style() const { return style_; }
+
+  // DebugDraw, world coordinates (metres, y up).
+  void draw_solid_polygon(const vec2* vertices, int count, Color fill, Color outline) override;
+  void draw_solid_circle(vec2 center, float radius, vec2 axis, Color fill, Color outline) override;
+  void draw_segment(vec2 from, vec2 to, Color color) override;
+  void draw_arrow(vec2 from, vec2 to, Color color) override;
+  void draw_point(vec2 position, float size_pixels, Color color) override;
+  void draw_text(vec2 position, const std::string& text, Color color) override;
+
+  /// A filled rectangle in screen pixels: top-left corner and size (y down).
+  void draw_screen_rect(vec2 top_left, vec2 size, Color color);
+  /// Text in screen pixels with its top-left corner at `top_left` (y down), magnified by
+  /// the integer `scale`.
+  void draw_screen_text(vec2 top_left, const std::string& text, Color color, int scale);
+
+ private:
+  // One primitive, as the shaders read it (see `PrimitiveKind` for the meaning of p0..p2).
+  using PrimitiveKindValue = std::uint32_t;  // a `PrimitiveKind` (primitive_shaders.h)
+  struct Instance {
+    float p0[2];
+    float p1[2];
+    float p2[2];
+    float params[2];
+    std::uint8_t color[4];
+    std::uint32_t kind;
+  };
+  void push(PrimitiveKindValue kind, vec2 p0, vec2 p1, vec2 p2, vec2 params, Color color);
+  void push_segment(vec2 from, vec2 to, float extension_pixels, Color color);
+
+  PrimitiveStyle style_;
+  Camera camera_;
+  std::unique_ptr<ShaderProgram> program_;
+  int world_to_clip_location_ = -1;
+  int viewport_location_ = -1;
+  unsigned int vertex_array_ = 0;
+  unsigned int instance_buffer_ = 0;
+  std::vector<Instance> instances_;
+  std::vector<GlyphRect> glyphs_;  // scratch for text layout
+};
+
+}  // namespace impulse2d::render
