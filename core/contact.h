@@ -24,6 +24,7 @@ struct ContactPoint {
   float tangent_mass = 0.0f;        ///< 1 / effective mass along the tangent, 1/kg
   float velocity_bias = 0.0f;       ///< target separating speed from restitution, m/s
   bool sliding = false;             ///< true once friction switched to the dynamic coefficient
+  bool friction_at_limit = false;   ///< the last friction pass was clamped by the Coulomb limit
   bool matched = false;             ///< true when warm-started from the previous step
 };
 

@@ -50,6 +50,52 @@ bool is_solvable(const Contact& contact, const std::vector<Body>& bodies) {
                              bodies[contact.body_b.index].inverse_mass > 0.0f);
 }
 
+// Solves both normal impulses of a 2-point manifold at once: find x >= 0 with
+// v = K x + b >= 0 and x . v = 0 (a 2x2 linear complementarity problem) by trying the four
+// cases in turn, where K is the 2x2 effective-mass matrix and b the velocities without the
+// accumulated impulses. Returns false (solve point by point instead) when K is ill-conditioned.
+bool solve_normal_block(Body& a, Body& b, const PairMass& mass, Contact& contact) {
+  ContactPoint& p1 = contact.points[0];
+  ContactPoint& p2 = contact.points[1];
+  const vec2 normal = contact.normal;
+  const float arm_a1 = cross(p1.anchor_a, normal), arm_b1 = cross(p1.anchor_b, normal);
+  const float arm_a2 = cross(p2.anchor_a, normal), arm_b2 = cross(p2.anchor_b, normal);
+  const float linear = mass.inverse_mass_a + mass.inverse_mass_b;
+  const float k11 = linear + mass.inverse_inertia_a * arm_a1 * arm_a1 + mass.inverse_inertia_b * arm_b1 * arm_b1;
+  const float k22 = linear + mass.inverse_inertia_a * arm_a2 * arm_a2 + mass.inverse_inertia_b * arm_b2 * arm_b2;
+  const float k12 = linear + mass.inverse_inertia_a * arm_a1 * arm_a2 + mass.inverse_inertia_b * arm_b1 * arm_b2;
+  const float determinant = k11 * k22 - k12 * k12;
+  constexpr float max_condition = 1000.0f;
+  if (!(k11 * k11 < max_condition * determinant)) return false;
+
+  const vec2 old_impulse{p1.normal_impulse, p2.normal_impulse};
+  const float speed1 = glm::dot(relative_velocity(a, b, p1), normal) - p1.velocity_bias;
+  const float speed2 = glm::dot(relative_velocity(a, b, p2), normal) - p2.velocity_bias;
+  const vec2 rhs{speed1 - (k11 * old_impulse.x + k12 * old_impulse.y),
+                 speed2 - (k12 * old_impulse.x + k22 * old_impulse.y)};
+  vec2 impulse;
+  // Case 1: both points push. x = -K^-1 b.
+  impulse = vec2(-(k22 * rhs.x - k12 * rhs.y), -(-k12 * rhs.x + k11 * rhs.y)) / determinant;
+  if (!(impulse.x >= 0.0f && impulse.y >= 0.0f)) {
+    // Case 2: only the first pushes; the second must then be separating.
+    impulse = vec2(-rhs.x / k11, 0.0f);
+    if (!(impulse.x >= 0.0f && k12 * impulse.x + rhs.y >= 0.0f)) {
+      // Case 3: only the second pushes.
+      impulse = vec2(0.0f, -rhs.y / k22);
+      if (!(impulse.y >= 0.0f && k12 * impulse.y + rhs.x >= 0.0f)) {
+        // Case 4: neither pushes; both must be separating already.
+        impulse = vec2(0.0f);
+        if (!(rhs.x >= 0.0f && rhs.y >= 0.0f)) return false;
+      }
+    }
+  }
+  apply_impulse(a, b, mass, p1, normal * (impulse.x - old_impulse.x));
+  apply_impulse(a, b, mass, p2, normal * (impulse.y - old_impulse.y));
+  p1.normal_impulse = impulse.x;
+  p2.normal_impulse = impulse.y;
+  return true;
+}
+
 vec2 tangent_of(vec2 normal) { return right_perpendicular(normal); }
 
 }  // namespace
@@ -120,19 +166,21 @@ void solve_contacts_accumulated(std::vector<Contact>& contacts, std::vector<Body
       for (int i = 0; i < contact.point_count; ++i) {
         ContactPoint& point = contact.points[i];
         const float tangent_speed = glm::dot(relative_velocity(a, b, point), tangent);
-        float accumulated = point.tangent_impulse - tangent_speed * point.tangent_mass;
-        if (!point.sliding && std::fabs(accumulated) > contact.static_friction * point.normal_impulse) {
-          point.sliding = true;  // static friction broke: Coulomb switches to the dynamic coefficient
-        }
+        const float unclamped = point.tangent_impulse - tangent_speed * point.tangent_mass;
         const float limit =
             (point.sliding ? contact.dynamic_friction : contact.static_friction) * point.normal_impulse;
-        accumulated = std::clamp(accumulated, -limit, limit);
+        const float accumulated = std::clamp(unclamped, -limit, limit);
+        point.friction_at_limit = accumulated != unclamped;
         const float change = accumulated - point.tangent_impulse;
         point.tangent_impulse = accumulated;
         apply_impulse(a, b, mass, point, tangent * change);
       }
     }
 
+    if (settings.block_solver && contact.point_count == 2 &&
+        solve_normal_block(a, b, mass, contact)) {
+      continue;
+    }
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
       const float normal_speed = glm::dot(relative_velocity(a, b, point), normal);
@@ -181,6 +229,34 @@ void solve_contacts_per_iteration(std::vector<Contact>& contacts, std::vector<Bo
   }
 }
 
+void break_static_friction(std::vector<Contact>& contacts, std::vector<Body>& bodies,
+                           const WorldSettings& settings) {
+  if (!settings.enable_friction) return;
+  for (Contact& contact : contacts) {
+    if (!is_solvable(contact, bodies)) continue;
+    Body& a = bodies[contact.body_a.index];
+    Body& b = bodies[contact.body_b.index];
+    const PairMass mass = pair_mass(a, b, settings);
+    const vec2 tangent = tangent_of(contact.normal);
+    // The manifold breaks loose only when every point's friction is at its static limit: one
+    // saturated point alone just shifts load to the other (a box on a slope).
+    bool all_at_static_limit = true;
+    for (int i = 0; i < contact.point_count; ++i) {
+      const ContactPoint& point = contact.points[i];
+      all_at_static_limit = all_at_static_limit && !point.sliding && point.friction_at_limit;
+    }
+    if (!all_at_static_limit) continue;
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      point.sliding = true;
+      const float dynamic_limit = contact.dynamic_friction * point.normal_impulse;
+      const float accumulated = point.tangent_impulse < 0.0f ? -dynamic_limit : dynamic_limit;
+      apply_impulse(a, b, mass, point, tangent * (accumulated - point.tangent_impulse));
+      point.tangent_impulse = accumulated;
+    }
+  }
+}
+
 void update_sliding_state(std::vector<Contact>& contacts, const std::vector<Body>& bodies) {
   for (Contact& contact : contacts) {
     if (!contact.enabled) continue;
@@ -189,7 +265,8 @@ void update_sliding_state(std::vector<Contact>& contacts, const std::vector<Body
     const vec2 tangent = tangent_of(contact.normal);
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
-      point.sliding = std::fabs(glm::dot(relative_velocity(a, b, point), tangent)) > sticking_speed;
+      const bool moving = std::fabs(glm::dot(relative_velocity(a, b, point), tangent)) > sticking_speed;
+      point.sliding = moving || (point.sliding && point.friction_at_limit);
     }
   }
 }

@@ -36,7 +36,14 @@ void solve_contacts_accumulated(std::vector<Contact>& contacts, std::vector<Body
 void solve_contacts_per_iteration(std::vector<Contact>& contacts, std::vector<Body>& bodies,
                                   const WorldSettings& settings);
 
-/// Records, for each point, whether it still slides after the velocity solve.
+/// Ends the accumulated-impulse solve with Coulomb's static/dynamic switch: a sticking contact
+/// whose points all ended clamped at mu_s * Pn has broken loose, so each point's friction
+/// impulse drops to mu_d * Pn (the difference is applied) and it starts the next step sliding.
+void break_static_friction(std::vector<Contact>& contacts, std::vector<Body>& bodies,
+                           const WorldSettings& settings);
+
+/// Records, for each point, whether it still slides after the velocity solve: the relative
+/// tangential speed exceeds `sticking_speed`, or static friction just broke.
 void update_sliding_state(std::vector<Contact>& contacts, const std::vector<Body>& bodies);
 
 }  // namespace impulse2d

@@ -50,6 +50,10 @@ struct WorldSettings {
   SolverMethod solver = SolverMethod::AccumulatedImpulses;  ///< impulse scheme
   int velocity_iterations = 8;  ///< passes over all contacts per (sub)step
   bool warm_starting = true;    ///< carry accumulated impulses over (AccumulatedImpulses only)
+  /// Solve the two normal impulses of a 2-point manifold together as a 2x2 linear
+  /// complementarity problem (Box2D's block solver) instead of one after the other, which keeps
+  /// stacks from rocking (AccumulatedImpulses only).
+  bool block_solver = true;
 
   PositionCorrection position_correction = PositionCorrection::NonlinearGaussSeidel;  ///< method
   int position_iterations = 3;      ///< passes for NonlinearGaussSeidel

@@ -10,7 +10,7 @@ namespace impulse2d {
 /// for profiling and benchmarks, never part of the state hash.
 struct StepStats {
   int body_count = 0;          ///< bodies in the world
-  int awake_body_count = 0;    ///< bodies not sleeping
+  int awake_body_count = 0;    ///< non-static bodies not sleeping
   int pairs_tested = 0;        ///< candidate pairs given to the narrow phase
   int contact_count = 0;       ///< touching pairs after the narrow phase
   int contact_point_count = 0; ///< manifold points after the narrow phase

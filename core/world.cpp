@@ -313,7 +313,7 @@ void World::step() {
   ++step_count_;
   stats_.body_count = living_body_count_;
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (alive_[i] && bodies_[i].awake) ++stats_.awake_body_count;
+    if (alive_[i] && bodies_[i].awake && bodies_[i].type != BodyType::Static) ++stats_.awake_body_count;
   }
   stats_.total_ms = elapsed_ms(start);
 }
@@ -341,6 +341,7 @@ void World::solve_velocities() {
     for (int i = 0; i < settings_.velocity_iterations; ++i) {
       solve_contacts_accumulated(contacts_, bodies_, settings_);
     }
+    break_static_friction(contacts_, bodies_, settings_);
   } else {
     for (int i = 0; i < settings_.velocity_iterations; ++i) {
       solve_contacts_per_iteration(contacts_, bodies_, settings_);

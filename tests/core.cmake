@@ -1,0 +1,13 @@
+# Physics core suites: world API, exact-answer physics, determinism, solver methods.
+impulse2d_add_test(test_world
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_world_api.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_determinism.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_queries.cpp
+  LIBS impulse2d_core)
+impulse2d_add_test(test_physics
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_free_fall.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_bounce.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_friction.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_collisions_1d.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_stacking.cpp
+  LIBS impulse2d_core)
