@@ -13,6 +13,7 @@
 #include "tools/golden/file_io.h"
 #include "tools/golden/hex_hash.h"
 #include "tools/golden/image.h"
+#include "tools/golden/inventory.h"
 #include "tools/golden/report.h"
 #include "tools/golden/sidecar.h"
 #include "tools/golden/tolerance.h"
@@ -603,8 +604,41 @@ TEST(Artifacts, RefusesNamesThatEscapeTheRoot) {
   }
 }
 
+TEST(Report, ListsAnUnreadableMetricsFileInsteadOfStopping) {
+  TempDir dir;
+  write_text_file_atomically(dir.path() / "circles" / "broken" / "metrics.json", "[1, 2");
+  write_text_file_atomically(dir.path() / "circles" / "array" / "metrics.json", "[1, 2]");
+  EXPECT_EQ(write_html_report(dir.path()), 2);
+  const std::string html = read_text_file(dir.path() / "index.html");
+  EXPECT_NE(html.find("circles/broken"), std::string::npos);
+  EXPECT_NE(html.find("unreadable: 2"), std::string::npos);
+  EXPECT_EQ(write_html_report(dir.path() / "absent"), 0);
+}
+
 TEST(Report, EscapesHtml) {
   EXPECT_EQ(escape_html("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;");
+}
+
+// ---- inventory -----------------------------------------------------------------------------
+
+TEST(Inventory, FindsGoldensUnusedOnesAndUnpairedFiles) {
+  TempDir dir;
+  const Image image = make_image(2, 2, kBackground);
+  save_png(dir.path() / "circles" / "start.png", image);
+  write_sidecar(dir.path() / "circles" / "start.json", example_sidecar());
+  save_png(dir.path() / "circles" / "mid.png", image);
+  write_sidecar(dir.path() / "stack" / "settled.json", example_sidecar());
+  save_png(dir.path() / "stack" / "top.png", image);
+  write_sidecar(dir.path() / "stack" / "top.json", example_sidecar());
+  write_text_file_atomically(dir.path() / "README.md", "goldens");
+
+  const GoldenInventory inventory = scan_goldens(dir.path());
+  EXPECT_EQ(inventory.goldens, (std::vector<std::string>{"circles/start", "stack/top"}));
+  EXPECT_EQ(inventory.missing_sidecar, std::vector<std::string>{"circles/mid"});
+  EXPECT_EQ(inventory.missing_image, std::vector<std::string>{"stack/settled"});
+  EXPECT_EQ(unused_goldens(inventory.goldens, {"circles/start", "other/thing"}),
+            std::vector<std::string>{"stack/top"});
+  EXPECT_TRUE(scan_goldens(dir.path() / "absent").goldens.empty());
 }
 
 // ---- promote script --------------------------------------------------------------------------

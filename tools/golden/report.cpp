@@ -30,7 +30,7 @@ h2 { font-size: 1.15em; margin-top: 0; }
            padding: 0.6em; border-radius: 4px; }
 .images { display: flex; flex-wrap: wrap; gap: 1em; }
 figure { margin: 0; }
-figure img { border: 1px solid #ccc; image-rendering: pixelated; max-width: 420px;
+figure img { border: 1px solid #ccc; image-rendering: pixelated; width: 360px;
              background: repeating-conic-gradient(#ddd 0% 25%, #fff 0% 50%) 0 0 / 16px 16px; }
 figcaption { font-size: 0.85em; color: #555; text-align: center; }
 table { border-collapse: collapse; font-size: 0.9em; margin-top: 0.8em; }
@@ -49,7 +49,16 @@ std::string value_text(const json& value) {
   return value.is_string() ? value.get<std::string>() : value.dump();
 }
 
+/// The golden's name from its metrics, else its directory relative to the root.
+std::string entry_name(const Entry& entry) {
+  if (entry.metrics.is_object() && entry.metrics.contains("name")) {
+    return value_text(entry.metrics["name"]);
+  }
+  return entry.relative;
+}
+
 std::string image_figure(const Entry& entry, const std::string& key, const std::string& caption) {
+  if (!entry.metrics.contains("files")) return "";
   const json& files = entry.metrics["files"];
   if (!files.is_object() || !files.contains(key) || !files[key].is_string()) return "";
   const std::filesystem::path file = entry.directory / files[key].get<std::string>();
@@ -91,14 +100,14 @@ std::string metrics_table(const json& metrics) {
 
 std::string entry_section(const Entry& entry) {
   std::ostringstream html;
+  const std::string name = escape_html(entry_name(entry));
   if (entry.metrics.is_null()) {
-    html << "<section><h2>" << escape_html(entry.relative)
+    html << "<section id=\"" << name << "\"><h2>" << name
          << "<span class=\"class\">unreadable</span></h2><p class=\"message\">"
          << escape_html(entry.error) << "</p></section>\n";
     return html.str();
   }
-  const std::string name = value_text(entry.metrics.value("name", json(entry.relative)));
-  html << "<section id=\"" << escape_html(name) << "\"><h2>" << escape_html(name)
+  html << "<section id=\"" << name << "\"><h2>" << name
        << "<span class=\"class\">"
        << escape_html(value_text(entry.metrics.value("class_name", json("failure"))))
        << "</span></h2>\n<p class=\"message\">"
@@ -119,12 +128,14 @@ std::vector<Entry> collect_entries(const std::filesystem::path& root) {
   if (!std::filesystem::exists(root, error)) return entries;
   for (std::filesystem::recursive_directory_iterator it(root, error), end; !error && it != end;
        it.increment(error)) {
-    if (it->path().filename() != "metrics.json" || !it->is_regular_file()) continue;
+    std::error_code vanished;  // another test process may be replacing files meanwhile
+    if (it->path().filename() != "metrics.json" || !it->is_regular_file(vanished)) continue;
     Entry entry;
     entry.directory = it->path().parent_path();
     entry.relative = entry.directory.lexically_relative(root).generic_string();
     try {
       entry.metrics = json::parse(read_text_file(it->path()));
+      if (!entry.metrics.is_object()) throw GoldenError("not a JSON object");
     } catch (const std::exception& failure) {
       entry.metrics = nullptr;
       entry.error = it->path().string() + ": " + failure.what();
@@ -171,7 +182,12 @@ int write_html_report(const std::filesystem::path& root) {
   for (const auto& [name, count] : counts) {
     html << "<li>" << escape_html(name) << ": " << count << "</li>\n";
   }
-  html << "</ul>\n";
+  html << "</ul>\n<ol>\n";
+  for (const Entry& entry : entries) {
+    const std::string name = escape_html(entry_name(entry));
+    html << "<li><a href=\"#" << name << "\">" << name << "</a></li>\n";
+  }
+  html << "</ol>\n";
   for (const Entry& entry : entries) html << entry_section(entry);
   html << "</body></html>\n";
   write_text_file_atomically(root / "index.html", html.str());

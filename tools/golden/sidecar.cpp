@@ -85,7 +85,10 @@ class FieldReader {
 
 }  // namespace
 
-std::string RendererFingerprint::describe() const { return gl_renderer + " / " + gl_version; }
+std::string RendererFingerprint::describe() const {
+  if (gl_renderer.empty() && gl_version.empty()) return "not recorded";
+  return gl_renderer + " / " + gl_version;
+}
 
 bool RendererFingerprint::operator==(const RendererFingerprint& other) const {
   return gl_renderer == other.gl_renderer && gl_version == other.gl_version;

@@ -30,7 +30,7 @@ struct RendererFingerprint {
   std::string gl_renderer;  ///< glGetString(GL_RENDERER)
   std::string gl_version;   ///< glGetString(GL_VERSION)
 
-  /// "<gl_renderer> / <gl_version>".
+  /// "<gl_renderer> / <gl_version>", or "not recorded" when both are empty.
   std::string describe() const;
   /// True when both strings are equal.
   bool operator==(const RendererFingerprint& other) const;
