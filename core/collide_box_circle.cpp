@@ -27,7 +27,8 @@ int box_corner(vec2 direction) {
 
 }  // namespace
 
-Manifold collide_box_circle(const Box& a, const Transform& xa, const Circle& b, const Transform& xb) {
+Manifold collide_box_circle(const Box& a, const Transform& xa, const Circle& b,
+                            const Transform& xb) {
   Manifold manifold;
   const vec2 extents = a.half_extents;
   const float radius = b.radius;

@@ -21,7 +21,8 @@ Polygon box_as_polygon(const Box& box) {
   return polygon;
 }
 
-Manifold collide_box_polygon(const Box& a, const Transform& xa, const Polygon& b, const Transform& xb) {
+Manifold collide_box_polygon(const Box& a, const Transform& xa, const Polygon& b,
+                             const Transform& xb) {
   return collide_polygons(box_as_polygon(a), collide_detail::box_transform(xa), b, xb);
 }
 

@@ -8,7 +8,8 @@
 
 namespace impulse2d {
 
-Manifold collide_circles(const Circle& a, const Transform& xa, const Circle& b, const Transform& xb) {
+Manifold collide_circles(const Circle& a, const Transform& xa, const Circle& b,
+                         const Transform& xb) {
   Manifold manifold;
   const vec2 offset = xb.position - xa.position;
   const float distance_squared = length_squared(offset);

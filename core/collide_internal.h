@@ -37,7 +37,9 @@ constexpr std::uint32_t swap_feature_id(std::uint32_t feature_id) {
 
 /// A box placed by `transform` as the narrow phase sees it: boxes never rotate, so only the
 /// position is kept.
-inline Transform box_transform(const Transform& transform) { return {transform.position, Rotation{}}; }
+inline Transform box_transform(const Transform& transform) {
+  return {transform.position, Rotation{}};
+}
 
 /// Index of the vertex after `index` in a closed outline of `count` vertices.
 inline int next_vertex(int index, int count) { return index + 1 < count ? index + 1 : 0; }

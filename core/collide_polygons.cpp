@@ -144,13 +144,15 @@ Manifold clip_incident_face(const PolygonView& reference, int reference_face,
 
 }  // namespace
 
-Manifold collide_polygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb) {
+Manifold collide_polygons(const Polygon& a, const Transform& xa, const Polygon& b,
+                          const Transform& xb) {
   // Work in A's frame. Composing the relative rotation first (rather than going through world
   // space) keeps B's edges exactly parallel to A's when both have the same angle.
   const Rotation relative_rotation{
       xa.rotation.cosine * xb.rotation.cosine + xa.rotation.sine * xb.rotation.sine,
       xa.rotation.cosine * xb.rotation.sine - xa.rotation.sine * xb.rotation.cosine};
-  const Transform relative{xa.rotation.inverse_rotate(xb.position - xa.position), relative_rotation};
+  const Transform relative{xa.rotation.inverse_rotate(xb.position - xa.position),
+                           relative_rotation};
   vec2 b_vertices[max_polygon_vertices];
   vec2 b_normals[max_polygon_vertices];
   for (int i = 0; i < b.count; ++i) {
@@ -166,11 +168,10 @@ Manifold collide_polygons(const Polygon& a, const Transform& xa, const Polygon& 
   const FaceSeparation separation_b = max_face_separation(view_b, view_a);
   if (!(separation_b.separation < 0.0f)) return Manifold{};
 
-  const bool reference_is_b = separation_b.separation >
-                              relative_tolerance * separation_a.separation + absolute_tolerance;
-  Manifold manifold = reference_is_b
-                          ? clip_incident_face(view_b, separation_b.face, view_a, true)
-                          : clip_incident_face(view_a, separation_a.face, view_b, false);
+  const bool reference_is_b =
+      separation_b.separation > relative_tolerance * separation_a.separation + absolute_tolerance;
+  Manifold manifold = reference_is_b ? clip_incident_face(view_b, separation_b.face, view_a, true)
+                                     : clip_incident_face(view_a, separation_a.face, view_b, false);
 
   manifold.normal = xa.rotation.rotate(manifold.normal);
   for (int i = 0; i < manifold.point_count; ++i) {

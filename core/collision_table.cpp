@@ -25,7 +25,8 @@ Manifold flipped(Manifold manifold) {
   return manifold;
 }
 
-Manifold circle_vs_circle(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
+Manifold circle_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
+                          const Transform& xb) {
   return collide_circles(a.circle, xa, b.circle, xb);
 }
 
@@ -33,7 +34,8 @@ Manifold circle_vs_box(const Shape& a, const Transform& xa, const Shape& b, cons
   return flipped(collide_box_circle(b.box, xb, a.circle, xa));
 }
 
-Manifold circle_vs_polygon(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
+Manifold circle_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
+                           const Transform& xb) {
   return flipped(collide_polygon_circle(b.polygon, xb, a.circle, xa));
 }
 
@@ -49,7 +51,8 @@ Manifold box_vs_polygon(const Shape& a, const Transform& xa, const Shape& b, con
   return collide_box_polygon(a.box, xa, b.polygon, xb);
 }
 
-Manifold polygon_vs_circle(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
+Manifold polygon_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
+                           const Transform& xb) {
   return collide_polygon_circle(a.polygon, xa, b.circle, xb);
 }
 
@@ -57,7 +60,8 @@ Manifold polygon_vs_box(const Shape& a, const Transform& xa, const Shape& b, con
   return flipped(collide_box_polygon(b.box, xb, a.polygon, xa));
 }
 
-Manifold polygon_vs_polygon(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
+Manifold polygon_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
+                            const Transform& xb) {
   return collide_polygons(a.polygon, xa, b.polygon, xb);
 }
 

@@ -71,8 +71,8 @@ void validate_polygon(const vec2* vertices, int count) {
   if (vertices == nullptr) fail(function, "vertices is null");
   for (int i = 0; i < count; ++i) {
     if (!is_finite(vertices[i])) {
-      fail(function, "vertex " + std::to_string(i) + " " + format_vertex(vertices[i]) +
-                         " is not finite");
+      fail(function,
+           "vertex " + std::to_string(i) + " " + format_vertex(vertices[i]) + " is not finite");
     }
   }
 
@@ -127,8 +127,7 @@ void validate_polygon(const vec2* vertices, int count) {
       const vec2 offset = vertices[v] - vertices[i];
       if (!(cross(edge, offset) > polygon_tolerance * glm::length(edge) * glm::length(offset))) {
         fail(function, "the outline is self-overlapping: vertex " + std::to_string(v) +
-                           " is not inside edge " + std::to_string(i) + " -> " +
-                           std::to_string(j));
+                           " is not inside edge " + std::to_string(i) + " -> " + std::to_string(j));
       }
     }
   }
@@ -139,8 +138,8 @@ void validate_half_extents(const char* function, vec2 half_extents) {
   for (int axis = 0; axis < 2; ++axis) {
     const float value = half_extents[axis];
     if (!std::isfinite(value) || !(value > 0.0f)) {
-      fail(function, std::string(names[axis]) + " must be finite and > 0, got " +
-                         format_number(value));
+      fail(function,
+           std::string(names[axis]) + " must be finite and > 0, got " + format_number(value));
     }
   }
 }
@@ -310,9 +309,8 @@ MassData compute_polygon_mass(const vec2* vertices, int count, float density) {
     const float twice_triangle_area = cross(p1, p2);
     area += 0.5f * twice_triangle_area;
     centroid_moment += (twice_triangle_area / 6.0f) * (p1 + p2);
-    second_moment += (twice_triangle_area / 12.0f) *
-                     (p1.x * p1.x + p1.x * p2.x + p2.x * p2.x + p1.y * p1.y + p1.y * p2.y +
-                      p2.y * p2.y);
+    second_moment += (twice_triangle_area / 12.0f) * (p1.x * p1.x + p1.x * p2.x + p2.x * p2.x +
+                                                      p1.y * p1.y + p1.y * p2.y + p2.y * p2.y);
   }
   if (!(area > 0.0f)) {
     fail(function, "the outline has area " + format_number(area) +
@@ -379,7 +377,8 @@ Aabb compute_aabb(const Shape& shape, const Transform& transform) {
 bool shape_contains_point(const Shape& shape, const Transform& transform, vec2 point) {
   switch (shape.type) {
     case ShapeType::Circle:
-      return length_squared(point - transform.position) <= shape.circle.radius * shape.circle.radius;
+      return length_squared(point - transform.position) <=
+             shape.circle.radius * shape.circle.radius;
     case ShapeType::Box:
       return box_bounds(shape.box, transform).contains(point);
     case ShapeType::Polygon: {

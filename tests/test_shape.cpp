@@ -63,7 +63,8 @@ TEST(ShapeValidation, BoxHalfExtentsMustBeFinitePositive) {
   expect_error([] { make_box(vec2(1.0f, -1.0f)); }, {"make_box", "half_extents.y"});
   expect_error([] { make_box(vec2(not_a_number, 1.0f)); }, {"make_box", "half_extents.x"});
   expect_error([] { make_box(vec2(1.0f, infinity)); }, {"make_box", "half_extents.y"});
-  expect_error([] { make_oriented_box(vec2(1.0f, 0.0f)); }, {"make_oriented_box", "half_extents.y"});
+  expect_error([] { make_oriented_box(vec2(1.0f, 0.0f)); },
+               {"make_oriented_box", "half_extents.y"});
   const Shape box = make_box(vec2(1.0f, 2.0f));
   EXPECT_EQ(box.type, ShapeType::Box);
   EXPECT_EQ(box.box.half_extents, vec2(1.0f, 2.0f));
@@ -82,34 +83,55 @@ TEST(ShapeValidation, PolygonVertexCount) {
 }
 
 TEST(ShapeValidation, PolygonNonFiniteVertex) {
-  expect_error([] { polygon_from({{0, 0}, {not_a_number, 0}, {0, 1}}); },
-               {"make_polygon", "vertex 1", "not finite"});
-  expect_error([] { polygon_from({{0, 0}, {1, 0}, {0, infinity}}); },
-               {"make_polygon", "vertex 2", "not finite"});
+  expect_error(
+      [] {
+        polygon_from({{0, 0}, {not_a_number, 0}, {0, 1}});
+      },
+      {"make_polygon", "vertex 1", "not finite"});
+  expect_error(
+      [] {
+        polygon_from({{0, 0}, {1, 0}, {0, infinity}});
+      },
+      {"make_polygon", "vertex 2", "not finite"});
 }
 
 TEST(ShapeValidation, PolygonClockwise) {
-  expect_error([] { polygon_from({{0, 0}, {0, 1}, {1, 1}, {1, 0}}); },
-               {"make_polygon", "clockwise"});
+  expect_error(
+      [] {
+        polygon_from({{0, 0}, {0, 1}, {1, 1}, {1, 0}});
+      },
+      {"make_polygon", "clockwise"});
 }
 
 TEST(ShapeValidation, PolygonConcave) {
   // A square with its top pushed in: vertex 3 turns right.
-  expect_error([] { polygon_from({{0, 0}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}); },
-               {"make_polygon", "not convex at vertex 3"});
+  expect_error(
+      [] {
+        polygon_from({{0, 0}, {2, 0}, {2, 2}, {1, 1}, {0, 2}});
+      },
+      {"make_polygon", "not convex at vertex 3"});
 }
 
 TEST(ShapeValidation, PolygonCollinear) {
-  expect_error([] { polygon_from({{0, 0}, {1, 0}, {2, 0}, {1, 1}}); },
-               {"make_polygon", "vertices 0, 1, 2", "collinear"});
+  expect_error(
+      [] {
+        polygon_from({{0, 0}, {1, 0}, {2, 0}, {1, 1}});
+      },
+      {"make_polygon", "vertices 0, 1, 2", "collinear"});
 }
 
 TEST(ShapeValidation, PolygonRepeatedPoint) {
-  expect_error([] { polygon_from({{0, 0}, {1, 0}, {1, 0}, {0, 1}}); },
-               {"make_polygon", "vertices 1 and 2", "repeated"});
+  expect_error(
+      [] {
+        polygon_from({{0, 0}, {1, 0}, {1, 0}, {0, 1}});
+      },
+      {"make_polygon", "vertices 1 and 2", "repeated"});
   // Repeated but not adjacent.
-  expect_error([] { polygon_from({{0, 0}, {1, 0}, {0, 0}, {0, 1}}); },
-               {"make_polygon", "vertices 0 and 2", "repeated"});
+  expect_error(
+      [] {
+        polygon_from({{0, 0}, {1, 0}, {0, 0}, {0, 1}});
+      },
+      {"make_polygon", "vertices 0 and 2", "repeated"});
 }
 
 TEST(ShapeValidation, PolygonSelfOverlapping) {
@@ -125,8 +147,11 @@ TEST(ShapeValidation, PolygonSelfOverlapping) {
 }
 
 TEST(ShapeValidation, PolygonNearZeroArea) {
-  expect_error([] { polygon_from({{0, 0}, {1, 0}, {0.5f, 1e-7f}}); },
-               {"make_polygon", "near zero"});
+  expect_error(
+      [] {
+        polygon_from({{0, 0}, {1, 0}, {0.5f, 1e-7f}});
+      },
+      {"make_polygon", "near zero"});
 }
 
 TEST(ShapeValidation, PolygonIsRecentredWithUnitOutwardNormals) {
@@ -189,7 +214,8 @@ TEST(ShapeMass, OffsetPolygonInertiaIsAboutItsCentroid) {
   // Expected values by composing the two parts with the parallel axis theorem (in double).
   const double offset_x = 5.0, offset_y = -3.0;
   const double square_mass = 4.0, square_inertia = 4.0 * (4.0 + 4.0) / 12.0;
-  const double roof_mass = 1.0, roof_inertia = roof_mass * (4.0 + 2.0 + 2.0) / 36.0;  // m/36 sum of squared sides
+  const double roof_mass = 1.0,
+               roof_inertia = roof_mass * (4.0 + 2.0 + 2.0) / 36.0;  // m/36 sum of squared sides
   const double square_cy = 1.0, roof_cy = 2.0 + 1.0 / 3.0;
   const double total_mass = square_mass + roof_mass;
   const double cy = (square_mass * square_cy + roof_mass * roof_cy) / total_mass;
@@ -200,7 +226,8 @@ TEST(ShapeMass, OffsetPolygonInertiaIsAboutItsCentroid) {
   for (vec2& vertex : house) vertex += vec2(offset_x, offset_y);
   const MassData mass = compute_polygon_mass(house.data(), 5, 1.0f);
   EXPECT_NEAR(mass.mass, total_mass, tolerance(5.0f));
-  expect_vec_near(mass.centroid, vec2(static_cast<float>(offset_x + 1.0), static_cast<float>(offset_y + cy)),
+  expect_vec_near(mass.centroid,
+                  vec2(static_cast<float>(offset_x + 1.0), static_cast<float>(offset_y + cy)),
                   tolerance(5.0f));
   EXPECT_NEAR(mass.inertia, inertia, tolerance(4.0f));
   // The reference code's mistake, inertia about the origin, would be m |c|^2 larger.
@@ -239,7 +266,8 @@ TEST(ShapeBounds, CircleBoxPolygon) {
   EXPECT_EQ(box.upper, vec2(3.0f, 2.0f));
 
   // A polygon turns: a 4 x 2 rectangle a quarter turn round becomes 2 x 4.
-  const Aabb turned = compute_aabb(make_oriented_box(vec2(2.0f, 1.0f)), at(vec2(0.0f, 0.0f), 0.5f * pi));
+  const Aabb turned =
+      compute_aabb(make_oriented_box(vec2(2.0f, 1.0f)), at(vec2(0.0f, 0.0f), 0.5f * pi));
   expect_vec_near(turned.lower, vec2(-1.0f, -2.0f), tolerance(2.0f));
   expect_vec_near(turned.upper, vec2(1.0f, 2.0f), tolerance(2.0f));
 }
@@ -268,18 +296,24 @@ TEST(ShapeContains, InsideOnBoundaryAndOutside) {
 TEST(ShapeRaycast, Circle) {
   const Shape circle = make_circle(1.0f);
   ShapeRayHit hit;
-  ASSERT_TRUE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 0.0f), vec2(4.0f, 0.0f), &hit));
+  ASSERT_TRUE(
+      raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 0.0f), vec2(4.0f, 0.0f), &hit));
   EXPECT_FLOAT_EQ(hit.fraction, 0.5f);
   expect_vec_near(hit.normal, vec2(-1.0f, 0.0f), tolerance());
   // Off-centre: enters at (-0.6, 0.8), 2.4 along a ray of length 4.
-  ASSERT_TRUE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 0.8f), vec2(4.0f, 0.0f), &hit));
+  ASSERT_TRUE(
+      raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 0.8f), vec2(4.0f, 0.0f), &hit));
   EXPECT_NEAR(hit.fraction, 0.6f, tolerance());
   expect_vec_near(hit.normal, vec2(-0.6f, 0.8f), tolerance());
 
-  EXPECT_FALSE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 1.5f), vec2(4.0f, 0.0f), &hit));   // passes above
-  EXPECT_FALSE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 0.0f), vec2(1.5f, 0.0f), &hit));   // too short
-  EXPECT_FALSE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 0.0f), vec2(-4.0f, 0.0f), &hit));  // away
-  EXPECT_FALSE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(0.2f, 0.0f), vec2(4.0f, 0.0f), &hit));    // inside
+  EXPECT_FALSE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 1.5f), vec2(4.0f, 0.0f),
+                             &hit));  // passes above
+  EXPECT_FALSE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 0.0f), vec2(1.5f, 0.0f),
+                             &hit));  // too short
+  EXPECT_FALSE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(-3.0f, 0.0f), vec2(-4.0f, 0.0f),
+                             &hit));  // away
+  EXPECT_FALSE(raycast_shape(circle, at(vec2(0.0f, 0.0f)), vec2(0.2f, 0.0f), vec2(4.0f, 0.0f),
+                             &hit));  // inside
 }
 
 TEST(ShapeRaycast, BoxSlabsIgnoreRotation) {
@@ -297,9 +331,11 @@ TEST(ShapeRaycast, BoxSlabsIgnoreRotation) {
     ASSERT_TRUE(raycast_shape(box, placed, vec2(4.0f, 2.0f), vec2(-2.0f, -2.0f), &hit));
     EXPECT_FLOAT_EQ(hit.fraction, 0.5f);
     EXPECT_EQ(hit.normal, vec2(1.0f, 0.0f));
-    EXPECT_FALSE(raycast_shape(box, placed, vec2(0.0f, 2.0f), vec2(4.0f, 0.0f), &hit));   // parallel, outside
-    EXPECT_FALSE(raycast_shape(box, placed, vec2(0.0f, 0.0f), vec2(2.0f, 4.0f), &hit));   // misses the corner
-    EXPECT_FALSE(raycast_shape(box, placed, vec2(2.0f, 1.0f), vec2(4.0f, 0.0f), &hit));   // inside
+    EXPECT_FALSE(
+        raycast_shape(box, placed, vec2(0.0f, 2.0f), vec2(4.0f, 0.0f), &hit));  // parallel, outside
+    EXPECT_FALSE(
+        raycast_shape(box, placed, vec2(0.0f, 0.0f), vec2(2.0f, 4.0f), &hit));  // misses the corner
+    EXPECT_FALSE(raycast_shape(box, placed, vec2(2.0f, 1.0f), vec2(4.0f, 0.0f), &hit));  // inside
   }
 }
 
@@ -315,8 +351,10 @@ TEST(ShapeRaycast, PolygonClipsAgainstEdgePlanes) {
   ASSERT_TRUE(raycast_shape(triangle, placed, vec2(-1.0f, 0.5f), vec2(2.0f, 0.0f), &hit));
   EXPECT_NEAR(hit.fraction, 0.5f, tolerance());
   expect_vec_near(hit.normal, vec2(-1.0f, 0.0f), tolerance());
-  EXPECT_FALSE(raycast_shape(triangle, placed, vec2(-1.0f, 3.0f), vec2(4.0f, 0.0f), &hit));   // misses
-  EXPECT_FALSE(raycast_shape(triangle, placed, vec2(0.5f, 0.5f), vec2(4.0f, 0.0f), &hit));    // inside
+  EXPECT_FALSE(
+      raycast_shape(triangle, placed, vec2(-1.0f, 3.0f), vec2(4.0f, 0.0f), &hit));  // misses
+  EXPECT_FALSE(
+      raycast_shape(triangle, placed, vec2(0.5f, 0.5f), vec2(4.0f, 0.0f), &hit));  // inside
 
   // A turned polygon: a 2 x 1 rectangle a quarter turn round spans x in [-0.5, 0.5].
   const Shape rectangle = make_oriented_box(vec2(1.0f, 0.5f));
