@@ -43,7 +43,7 @@ struct BodyDef {
   float linear_damping = 0.0f;           ///< 1/s; v *= 1 / (1 + dt * damping) each step
   float angular_damping = 0.0f;          ///< 1/s; w *= 1 / (1 + dt * damping) each step
   bool fixed_rotation = false;           ///< infinite inertia: contacts never spin it
-  bool is_bullet = false;                ///< reserved for continuous collision
+  bool is_bullet = false;                ///< swept against other bodies each step (no tunnelling)
   std::uint32_t collision_layers = 1;    ///< collides with bodies whose layers share a bit
   Material material = materials::wood(); ///< density, restitution, friction
   std::uint64_t user_data = 0;           ///< any value the caller wants back
@@ -76,7 +76,7 @@ struct Body {
   float linear_damping = 0.0f;   ///< 1/s
   float angular_damping = 0.0f;  ///< 1/s
   bool fixed_rotation = false;   ///< inertia treated as infinite
-  bool is_bullet = false;        ///< reserved for continuous collision
+  bool is_bullet = false;        ///< swept against other bodies each step (no tunnelling)
   std::uint32_t collision_layers = 1;  ///< bitmask
   std::uint64_t user_data = 0;   ///< the caller's value
 

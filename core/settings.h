@@ -74,6 +74,9 @@ struct WorldSettings {
   bool enable_restitution = true;  ///< off: every contact is inelastic
   bool enable_rotation = true;     ///< off: no body rotates (angular terms skipped)
   bool enable_sleeping = false;    ///< put bodies at rest to sleep
+  /// Sweep bodies marked `is_bullet` so they cannot tunnel through thin bodies (continuous
+  /// collision); off, bullets move like any other body.
+  bool enable_continuous = true;
   float sleep_linear_speed = 0.05f;  ///< m/s below which a body may sleep
   float sleep_angular_speed = 0.05f; ///< rad/s below which a body may sleep
   float time_to_sleep = 0.5f;        ///< seconds a body must stay slow before it sleeps

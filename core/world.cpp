@@ -272,6 +272,19 @@ void World::set_awake(BodyId id, bool awake) {
   }
 }
 
+bool World::set_contact_enabled(BodyId a, BodyId b, bool enabled) {
+  checked_body(a, "World::set_contact_enabled");
+  checked_body(b, "World::set_contact_enabled");
+  if (b.index < a.index) std::swap(a, b);
+  for (Contact& contact : contacts_) {
+    if (contact.body_a == a && contact.body_b == b) {
+      contact.enabled = enabled;  // the next step's narrow phase carries it over
+      return true;
+    }
+  }
+  return false;
+}
+
 // ---- the step ---------------------------------------------------------------------------
 
 void World::step() {
@@ -286,16 +299,12 @@ void World::step() {
   for (int substep = 0; substep < settings_.substeps; ++substep) {
     find_contacts();  // broad phase, then narrow phase through the jump table
     Clock::time_point stage = Clock::now();
-    if (settings_.integrator == Integrator::ExplicitEuler) {
-      integrate_positions(bodies_, alive_, settings_, h);  // with the old velocity
-    }
+    if (settings_.integrator == Integrator::ExplicitEuler) move_bodies(h);  // with the old velocity
     integrate_velocities(bodies_, alive_, settings_, h);  // forces and gravity
     stats_.integrate_ms += elapsed_ms(stage);
     solve_velocities();  // contact impulses
     stage = Clock::now();
-    if (settings_.integrator == Integrator::SemiImplicitEuler) {
-      integrate_positions(bodies_, alive_, settings_, h);  // with the new velocity
-    }
+    if (settings_.integrator == Integrator::SemiImplicitEuler) move_bodies(h);  // with the new velocity
     stats_.integrate_ms += elapsed_ms(stage);
     correct_positions();  // remove the overlap left
   }
@@ -316,6 +325,13 @@ void World::step() {
     if (alive_[i] && bodies_[i].awake && bodies_[i].type != BodyType::Static) ++stats_.awake_body_count;
   }
   stats_.total_ms = elapsed_ms(start);
+}
+
+void World::move_bodies(float dt) {
+  integrate_positions(bodies_, alive_, settings_, dt);
+  if (settings_.enable_continuous) {
+    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt);  // no tunnelling
+  }
 }
 
 void World::find_contacts() {

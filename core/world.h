@@ -6,6 +6,7 @@
 #include "core/body.h"
 #include "core/broad_phase.h"
 #include "core/contact.h"
+#include "core/continuous.h"
 #include "core/debug_draw.h"
 #include "core/settings.h"
 #include "core/sleep.h"
@@ -111,6 +112,10 @@ class World {
   const std::vector<Contact>& contacts() const { return contacts_; }
   /// Installs a filter consulted when a pair starts touching (pass nullptr to remove it).
   void set_contact_filter(ContactFilter filter) { contact_filter_ = std::move(filter); }
+  /// Overrides the kept decision of the touching pair (a, b), in either order: false lets them
+  /// pass through each other until they separate (e.g. dropping through a one-way platform).
+  /// Returns false when the pair is not touching. Throws `Error` on a stale handle.
+  bool set_contact_enabled(BodyId a, BodyId b, bool enabled);
 
   /// Counts and timings of the last step.
   const StepStats& stats() const { return stats_; }
@@ -134,6 +139,7 @@ class World {
   Body& checked_body(BodyId id, const char* caller);
   const Body& checked_body(BodyId id, const char* caller) const;
   void find_contacts();
+  void move_bodies(float dt);
   void solve_velocities();
   void correct_positions();
   void restore_diverged_bodies();
@@ -149,6 +155,7 @@ class World {
   BroadPhase broad_phase_;
   std::vector<BodyPair> pairs_;            // broad-phase output (reused)
   SleepIslands sleep_islands_;
+  BulletSweeper bullet_sweeper_;
   ContactFilter contact_filter_;
 
   StepStats stats_;

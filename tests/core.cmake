@@ -10,4 +10,5 @@ impulse2d_add_test(test_physics
           ${CMAKE_CURRENT_SOURCE_DIR}/test_friction.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_collisions_1d.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_stacking.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_continuous.cpp
   LIBS impulse2d_core)
