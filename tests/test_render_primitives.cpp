@@ -1,0 +1,162 @@
+// The renderer below the world: camera mapping, context errors, and known colours at known
+// pixels for hand-made primitives.
+#include "render/camera.h"
+#include "render/frame_renderer.h"
+#include "render/offscreen_context.h"
+#include "render/render_error.h"
+#include "tests/test_render_support.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace impulse2d;
+using namespace impulse2d::render;
+using impulse2d::render::testing::to_pixel;
+
+namespace {
+
+constexpr Color kWhite{1.0f, 1.0f, 1.0f, 1.0f};
+constexpr Color kFill{0.2f, 0.6f, 0.4f, 1.0f};
+constexpr Color kOutline{0.0f, 0.0f, 0.0f, 1.0f};
+constexpr Color kArrow{0.8f, 0.3f, 0.1f, 1.0f};
+
+// 200x100 pixels, 10 pixels per metre, world origin at the image centre: the centre of
+// pixel (i, j) is world ((i + 0.5 - 100) / 10, (50 - j - 0.5) / 10).
+Camera test_camera() { return Camera::centered(vec2(0.0f, 0.0f), 10.0f, 200, 100); }
+
+// A circle of radius 2 m at (-5, 0.05) with its orientation mark pointing +x, and an arrow
+// along the centre line of row 49 from x = 1 m to x = 5.05 m (its tip in column 150).
+void draw_known_scene(PrimitiveRenderer& draw) {
+  draw.draw_solid_circle(vec2(-5.0f, 0.05f), 2.0f, vec2(1.0f, 0.0f), kFill, kOutline);
+  draw.draw_arrow(vec2(1.0f, 0.05f), vec2(5.05f, 0.05f), kArrow);
+}
+
+}  // namespace
+
+TEST(RenderCamera, WorldToPixelIsYUpWithTopLeftOrigin) {
+  const Camera camera = test_camera();
+  EXPECT_EQ(camera.world_to_pixel(vec2(0.0f, 0.0f)), vec2(100.0f, 50.0f));
+  EXPECT_EQ(camera.world_to_pixel(vec2(1.0f, 1.0f)), vec2(110.0f, 40.0f));
+  EXPECT_EQ(camera.pixel_to_world(vec2(110.0f, 40.0f)), vec2(1.0f, 1.0f));
+  const Aabb visible = camera.visible_bounds();
+  EXPECT_EQ(visible.lower, vec2(-10.0f, -5.0f));
+  EXPECT_EQ(visible.upper, vec2(10.0f, 5.0f));
+}
+
+TEST(RenderCamera, FitShowsBoundsWithMargin) {
+  const Aabb bounds{vec2(-2.0f, 0.0f), vec2(6.0f, 2.0f)};
+  const Camera camera = Camera::fit(bounds, 400, 300, 20.0f);
+  EXPECT_FLOAT_EQ(camera.pixels_per_metre(), 45.0f);  // (400 - 40) / 8 limits
+  EXPECT_EQ(camera.center(), vec2(2.0f, 1.0f));
+  EXPECT_FLOAT_EQ(camera.world_to_pixel(bounds.lower).x, 20.0f);
+  EXPECT_FLOAT_EQ(camera.world_to_pixel(bounds.upper).x, 380.0f);
+  const Camera moved = camera.with_center(vec2(10.0f, 10.0f));
+  EXPECT_EQ(moved.world_to_pixel(vec2(10.0f, 10.0f)), vec2(200.0f, 150.0f));
+  EXPECT_FLOAT_EQ(moved.pixels_per_metre(), 45.0f);
+}
+
+TEST(RenderCamera, BadArgumentsAreErrors) {
+  EXPECT_THROW(Camera::centered(vec2(0.0f), 0.0f, 10, 10), RenderError);
+  EXPECT_THROW(Camera::centered(vec2(0.0f), 1.0f, 0, 10), RenderError);
+  EXPECT_THROW(Camera::fit(Aabb{vec2(0.0f), vec2(1.0f)}, 30, 30, 20.0f), RenderError);
+}
+
+TEST(RenderContext, ZeroSizeIsAClearError) {
+  try {
+    create_offscreen_context(0, 600);
+    FAIL() << "a 0x600 context was created";
+  } catch (const RenderError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("0x600"), std::string::npos) << message;
+    EXPECT_NE(message.find("OpenGL 3.3 core"), std::string::npos) << message;
+    EXPECT_NE(message.find("llvmpipe"), std::string::npos) << message;
+  }
+}
+
+TEST(RenderContext, ReportsLlvmpipeWithAtLeastGl33) {
+  FrameRenderer renderer(64, 32);
+  EXPECT_EQ(renderer.width(), 64);
+  EXPECT_EQ(renderer.height(), 32);
+  const std::string fingerprint = renderer.fingerprint();
+  EXPECT_NE(fingerprint.find("llvmpipe"), std::string::npos) << fingerprint;
+  EXPECT_NE(fingerprint.find("Core Profile"), std::string::npos) << fingerprint;
+}
+
+TEST(RenderPrimitives, CameraOfAnotherSizeIsRejected) {
+  FrameRenderer renderer(64, 32);
+  Frame frame;
+  EXPECT_THROW(renderer.render_primitives(test_camera(), kWhite, [](PrimitiveRenderer&) {}, frame),
+               RenderError);
+}
+
+TEST(RenderPrimitives, EmptyBatchIsTheOpaqueBackground) {
+  FrameRenderer renderer(200, 100);
+  Frame frame;
+  const Color background{0.2f, 0.4f, 0.6f, 0.0f};  // alpha is ignored: frames are opaque
+  renderer.render_primitives(test_camera(), background, [](PrimitiveRenderer&) {}, frame);
+  ASSERT_EQ(frame.width, 200);
+  ASSERT_EQ(frame.height, 100);
+  for (int y = 0; y < frame.height; ++y) {
+    for (int x = 0; x < frame.width; ++x) ASSERT_EQ(frame.pixel(x, y), to_pixel(background));
+  }
+}
+
+TEST(RenderPrimitives, KnownColoursAtKnownPixels) {
+  FrameRenderer renderer(200, 100);
+  Frame frame;
+  renderer.render_primitives(test_camera(), kWhite, draw_known_scene, frame);
+  EXPECT_TRUE(frame.is_opaque());
+  // Circle centre (-5, 0.05) is the centre of pixel (50, 49); the orientation mark runs
+  // right from it, so sample the fill 5 pixels above and to the left of the centre.
+  EXPECT_EQ(frame.pixel(50, 44), to_pixel(kFill));
+  EXPECT_EQ(frame.pixel(45, 49), to_pixel(kFill));
+  // The orientation mark and the outline are drawn in the outline colour.
+  EXPECT_EQ(frame.pixel(60, 49), to_pixel(kOutline));
+  EXPECT_EQ(frame.pixel(50, 29), to_pixel(kOutline));  // top of the rim: 2 m = 20 px above
+  // Outside the circle, background.
+  EXPECT_EQ(frame.pixel(50, 26), to_pixel(kWhite));
+  EXPECT_EQ(frame.pixel(25, 49), to_pixel(kWhite));
+  // The arrow: shaft, the head just behind the tip (column 150), nothing beyond it.
+  EXPECT_EQ(frame.pixel(120, 49), to_pixel(kArrow));
+  EXPECT_EQ(frame.pixel(148, 49), to_pixel(kArrow));
+  EXPECT_EQ(frame.pixel(153, 49), to_pixel(kWhite));
+  EXPECT_EQ(frame.pixel(120, 45), to_pixel(kWhite));
+}
+
+TEST(RenderPrimitives, EveryPrimitiveKindDraws) {
+  FrameRenderer renderer(200, 100);
+  Frame empty;
+  renderer.render_primitives(test_camera(), kWhite, [](PrimitiveRenderer&) {}, empty);
+  const auto differs = [&](const std::function<void(PrimitiveRenderer&)>& emit) {
+    Frame frame;
+    renderer.render_primitives(test_camera(), kWhite, emit, frame);
+    return frame.hash() != empty.hash();
+  };
+  const vec2 box[4] = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  const vec2 pentagon[5] = {{0, 0}, {2, 0}, {2.5f, 1}, {1, 2}, {-0.5f, 1}};
+  EXPECT_TRUE(differs([&](PrimitiveRenderer& d) { d.draw_solid_polygon(box, 4, kFill, kOutline); }));
+  EXPECT_TRUE(differs([&](PrimitiveRenderer& d) { d.draw_solid_polygon(pentagon, 5, kFill, kOutline); }));
+  EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_segment({-3, 0}, {3, 1}, kArrow); }));
+  EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_point({0, 0}, 6.0f, kArrow); }));
+  EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_text({0, 0}, "42", kOutline); }));
+  EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_screen_rect({5, 5}, {10, 10}, kFill); }));
+  EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_screen_text({5, 5}, "HUD", kOutline, 1); }));
+  // A zero-length arrow has no direction and draws nothing.
+  EXPECT_FALSE(differs([](PrimitiveRenderer& d) { d.draw_arrow({1, 1}, {1, 1}, kArrow); }));
+}
+
+TEST(RenderPrimitives, SameInputTwiceIsBitIdentical) {
+  FrameRenderer renderer(200, 100);
+  Frame first;
+  Frame second;
+  renderer.render_primitives(test_camera(), kWhite, draw_known_scene, first);
+  renderer.render_primitives(test_camera(), kWhite, [](PrimitiveRenderer&) {}, second);
+  renderer.render_primitives(test_camera(), kWhite, draw_known_scene, second);
+  EXPECT_EQ(first.rgba, second.rgba);
+  // A second renderer (a new context) gives the same pixels too.
+  FrameRenderer other(200, 100);
+  Frame third;
+  other.render_primitives(test_camera(), kWhite, draw_known_scene, third);
+  EXPECT_EQ(first.rgba, third.rgba);
+}
