@@ -97,7 +97,7 @@ Sidecar example_sidecar() {
 
 // ---- image -------------------------------------------------------------------------------
 
-TEST(Image, HashCoversSizeAndPixels) {
+TEST(GoldenImage, HashCoversSizeAndPixels) {
   const Image a = make_image(8, 2, kBackground);
   const Image b = make_image(2, 8, kBackground);
   EXPECT_EQ(a.pixels, b.pixels);
@@ -108,7 +108,7 @@ TEST(Image, HashCoversSizeAndPixels) {
   EXPECT_EQ(rgba_hash(a), rgba_hash(make_image(8, 2, kBackground)));
 }
 
-TEST(Image, PngRoundTripKeepsEveryByteAndLeavesNoTemporaryFile) {
+TEST(GoldenImage, PngRoundTripKeepsEveryByteAndLeavesNoTemporaryFile) {
   TempDir dir;
   Image image = make_image(17, 9, kBackground);
   set_pixel(image, 3, 4, Rgba{255, 0, 128, 0});
@@ -124,7 +124,7 @@ TEST(Image, PngRoundTripKeepsEveryByteAndLeavesNoTemporaryFile) {
   EXPECT_EQ(files, 1);
 }
 
-TEST(Image, LoadErrorsNameTheFile) {
+TEST(GoldenImage, LoadErrorsNameTheFile) {
   TempDir dir;
   const fs::path missing = dir.path() / "missing.png";
   EXPECT_NE(error_of([&] { load_png(missing); }).find("missing.png"), std::string::npos);
@@ -135,7 +135,7 @@ TEST(Image, LoadErrorsNameTheFile) {
   EXPECT_NE(message.find("garbage.png"), std::string::npos) << message;
 }
 
-TEST(HexHash, RoundTripsAndRejectsMalformedText) {
+TEST(GoldenHexHash, RoundTripsAndRejectsMalformedText) {
   EXPECT_EQ(to_hex_hash(0x00000000000000ffull), "00000000000000ff");
   EXPECT_EQ(parse_hex_hash("0123456789ABCDEF"), 0x0123456789abcdefull);
   EXPECT_EQ(parse_hex_hash(to_hex_hash(0xfedcba9876543210ull)), 0xfedcba9876543210ull);
@@ -144,7 +144,7 @@ TEST(HexHash, RoundTripsAndRejectsMalformedText) {
   EXPECT_FALSE(parse_hex_hash("0123456789abcdeg"));
 }
 
-TEST(Base64, MatchesRfc4648Vectors) {
+TEST(GoldenBase64, MatchesRfc4648Vectors) {
   auto encode = [](const std::string& text) {
     return base64_encode(std::vector<std::uint8_t>(text.begin(), text.end()));
   };
@@ -160,7 +160,7 @@ TEST(Base64, MatchesRfc4648Vectors) {
 
 // ---- comparison ----------------------------------------------------------------------------
 
-TEST(Compare, IdenticalImagesAreAnExactMatchWithoutMetrics) {
+TEST(GoldenCompare, IdenticalImagesAreAnExactMatchWithoutMetrics) {
   const Image golden = make_image(32, 32, kBackground);
   const CompareResult result = compare_images(golden, make_image(32, 32, kBackground));
   EXPECT_EQ(result.outcome, CompareOutcome::ExactMatch);
@@ -170,7 +170,7 @@ TEST(Compare, IdenticalImagesAreAnExactMatchWithoutMetrics) {
   EXPECT_NE(result.message().find("exact match"), std::string::npos);
 }
 
-TEST(Compare, OnePixelOffByOnePassesWithinChannelTolerance) {
+TEST(GoldenCompare, OnePixelOffByOnePassesWithinChannelTolerance) {
   const Image golden = make_image(32, 32, kBackground);
   Image actual = golden;
   shift_red(actual, 5, 7, 1, 1);
@@ -186,7 +186,7 @@ TEST(Compare, OnePixelOffByOnePassesWithinChannelTolerance) {
   EXPECT_TRUE(result.violations.empty());
 }
 
-TEST(Compare, OnePixelBeyondToleranceFailsWhenStrict) {
+TEST(GoldenCompare, OnePixelBeyondToleranceFailsWhenStrict) {
   const Image golden = make_image(32, 32, kBackground);
   Image actual = golden;
   shift_red(actual, 5, 7, 1, 1);
@@ -218,7 +218,7 @@ Tolerance cluster_sensitive_tolerance() {
                              "sidecar 'circles/start.json'");
 }
 
-TEST(Compare, FiveByFiveClusterFailsWindowRuleThoughTotalsAreWithinLimits) {
+TEST(GoldenCompare, FiveByFiveClusterFailsWindowRuleThoughTotalsAreWithinLimits) {
   for (int side : {256, 1024}) {  // the rule does not loosen as the image grows
     const Image golden = make_image(side, side, kBackground);
     Image actual = golden;
@@ -247,7 +247,7 @@ TEST(Compare, FiveByFiveClusterFailsWindowRuleThoughTotalsAreWithinLimits) {
   }
 }
 
-TEST(Compare, SameCountScatteredPassesWindowRule) {
+TEST(GoldenCompare, SameCountScatteredPassesWindowRule) {
   const Image golden = make_image(256, 256, kBackground);
   Image actual = golden;
   for (int i = 0; i < 25; ++i) shift_red(actual, (i % 5) * 16, (i / 5) * 16, 1, 50);
@@ -259,7 +259,7 @@ TEST(Compare, SameCountScatteredPassesWindowRule) {
             std::string::npos);
 }
 
-TEST(Compare, WindowIsClampedToSmallImages) {
+TEST(GoldenCompare, WindowIsClampedToSmallImages) {
   const Image golden = make_image(4, 3, kBackground);
   Image actual = golden;
   shift_red(actual, 0, 0, 3, 9);
@@ -269,7 +269,7 @@ TEST(Compare, WindowIsClampedToSmallImages) {
   EXPECT_EQ(result.metrics.worst_window_pixels, 9);
 }
 
-TEST(Compare, SizeMismatchIsItsOwnOutcome) {
+TEST(GoldenCompare, SizeMismatchIsItsOwnOutcome) {
   const CompareResult result =
       compare_images(make_image(64, 48, kBackground), make_image(48, 64, kBackground));
   EXPECT_EQ(result.outcome, CompareOutcome::SizeMismatch);
@@ -277,7 +277,7 @@ TEST(Compare, SizeMismatchIsItsOwnOutcome) {
   EXPECT_NE(result.message().find("golden is 64x48, actual is 48x64"), std::string::npos);
 }
 
-TEST(Compare, AlphaOnlyDifferenceIsDetectedAndNamed) {
+TEST(GoldenCompare, AlphaOnlyDifferenceIsDetectedAndNamed) {
   const Image golden = make_image(16, 16, kBackground);
   Image actual = golden;
   set_pixel(actual, 3, 3, Rgba{30, 60, 90, 200});
@@ -294,7 +294,7 @@ TEST(Compare, AlphaOnlyDifferenceIsDetectedAndNamed) {
 
 // ---- tolerance -----------------------------------------------------------------------------
 
-TEST(Tolerance, DefaultIsStrictAndOverridesAreValidated) {
+TEST(GoldenTolerance, DefaultIsStrictAndOverridesAreValidated) {
   EXPECT_TRUE(Tolerance{}.is_strict());
   EXPECT_EQ(Tolerance{}.describe_origin(), "strict default");
   const Tolerance partial = tolerance_from_json(json{{"max_channel_delta", 2}}, "sidecar 'x'");
@@ -312,6 +312,8 @@ TEST(Tolerance, DefaultIsStrictAndOverridesAreValidated) {
   EXPECT_NE(message.find("outside 0..255"), std::string::npos) << message;
   message = error_of([] { tolerance_from_json(json{{"window_size", "8"}}, "o"); });
   EXPECT_NE(message.find("expected an integer"), std::string::npos) << message;
+  message = error_of([] { tolerance_from_json(json{{"max_differing_pixels", 10}}, "o"); });
+  EXPECT_NE(message.find("must be loosened together"), std::string::npos) << message;
 }
 
 // ---- failure classes -----------------------------------------------------------------------
@@ -328,7 +330,7 @@ GoldenCheck check_of(const Image& golden, const Image& actual) {
   return check;
 }
 
-TEST(Failure, EachClassIsRecognisedWithItsOwnMessage) {
+TEST(GoldenFailure, EachClassIsRecognisedWithItsOwnMessage) {
   const Image golden = make_image(16, 16, kBackground);
   Image changed = golden;
   shift_red(changed, 2, 2, 2, 20);
@@ -377,7 +379,7 @@ TEST(Failure, EachClassIsRecognisedWithItsOwnMessage) {
   EXPECT_EQ(classify_failure(flaky), FailureClass::Nondeterminism);
 }
 
-TEST(Failure, NondeterminismIsNotAbsorbedByTolerance) {
+TEST(GoldenFailure, NondeterminismIsNotAbsorbedByTolerance) {
   const Image golden = make_image(16, 16, kBackground);
   Image nearly = golden;
   shift_red(nearly, 1, 1, 1, 1);
@@ -390,7 +392,7 @@ TEST(Failure, NondeterminismIsNotAbsorbedByTolerance) {
   EXPECT_EQ(classify_failure(check), FailureClass::Nondeterminism);
 }
 
-TEST(BodyDrift, RanksUnmatchedFirstThenByDistance) {
+TEST(GoldenBodyDrift, RanksUnmatchedFirstThenByDistance) {
   const std::vector<BodyPose> golden = {
       {"a", 0, 0, 0}, {"b", 0, 0, 0}, {"c", 0, 0, 0}, {"gone", 0, 0, 0}};
   const std::vector<BodyPose> actual = {
@@ -410,10 +412,12 @@ TEST(BodyDrift, RanksUnmatchedFirstThenByDistance) {
 
 // ---- sidecar -------------------------------------------------------------------------------
 
-TEST(Sidecar, RoundTripsThroughAFile) {
+TEST(GoldenSidecar, RoundTripsThroughAFile) {
   TempDir dir;
   Sidecar sidecar = example_sidecar();
   sidecar.tolerance.max_channel_delta = 2;
+  sidecar.tolerance.max_differing_pixels = 40;
+  sidecar.tolerance.max_differing_ratio = 0.002;
   sidecar.tolerance.max_window_pixels = 3;
   const fs::path file = dir.path() / "circles" / "start.json";
   EXPECT_EQ(sidecar_path_for(dir.path() / "circles" / "start.png"), file);
@@ -432,9 +436,15 @@ TEST(Sidecar, RoundTripsThroughAFile) {
   EXPECT_EQ(loaded.bodies[1].name, "ball 1");
   EXPECT_EQ(loaded.bodies[1].angle, 0.125);
   EXPECT_NE(read_text_file(file).find("\"state_hash\": \"0123456789abcdef\""), std::string::npos);
+
+  Sidecar unreadable = sidecar;
+  unreadable.scene.clear();
+  const std::string message = error_of([&] { write_sidecar(file, unreadable); });
+  EXPECT_NE(message.find("field 'scene'"), std::string::npos) << message;
+  EXPECT_EQ(read_sidecar(file).scene, "circles");  // the old file is untouched
 }
 
-TEST(Sidecar, MissingToleranceMeansStrict) {
+TEST(GoldenSidecar, MissingToleranceMeansStrict) {
   json object = sidecar_to_json(example_sidecar());
   object.erase("tolerance");
   object.erase("bodies");
@@ -443,7 +453,7 @@ TEST(Sidecar, MissingToleranceMeansStrict) {
   EXPECT_TRUE(sidecar.bodies.empty());
 }
 
-TEST(Sidecar, BadSidecarsNameTheFileAndField) {
+TEST(GoldenSidecar, BadSidecarsNameTheFileAndField) {
   const json good = sidecar_to_json(example_sidecar());
   struct Case {
     std::function<void(json&)> corrupt;
@@ -474,7 +484,7 @@ TEST(Sidecar, BadSidecarsNameTheFileAndField) {
   }
 }
 
-TEST(Sidecar, UnreadableFilesAreClearErrors) {
+TEST(GoldenSidecar, UnreadableFilesAreClearErrors) {
   TempDir dir;
   std::string message = error_of([&] { read_sidecar(dir.path() / "none.json"); });
   EXPECT_NE(message.find("none.json"), std::string::npos) << message;
@@ -487,7 +497,7 @@ TEST(Sidecar, UnreadableFilesAreClearErrors) {
 
 // ---- update modes --------------------------------------------------------------------------
 
-TEST(UpdateMode, ParsesEveryModeAndRejectsOthers) {
+TEST(GoldenUpdateMode, ParsesEveryModeAndRejectsOthers) {
   EXPECT_EQ(resolve_update_mode(nullptr, nullptr).mode, UpdateMode::None);
   EXPECT_EQ(resolve_update_mode("", nullptr).mode, UpdateMode::None);
   EXPECT_EQ(resolve_update_mode("none", nullptr).mode, UpdateMode::None);
@@ -501,7 +511,7 @@ TEST(UpdateMode, ParsesEveryModeAndRejectsOthers) {
   EXPECT_THROW(resolve_update_mode("ALL", "true"), GoldenError);  // invalid even under CI
 }
 
-TEST(UpdateMode, CiForcesNoneAndSaysWhy) {
+TEST(GoldenUpdateMode, CiForcesNoneAndSaysWhy) {
   for (const char* ci : {"true", "TRUE", "1"}) {
     const UpdateModeChoice choice = resolve_update_mode("all", ci);
     EXPECT_EQ(choice.mode, UpdateMode::None) << ci;
@@ -511,7 +521,7 @@ TEST(UpdateMode, CiForcesNoneAndSaysWhy) {
   EXPECT_TRUE(resolve_update_mode("none", "true").note.empty());
 }
 
-TEST(UpdateMode, DecidesWhichGoldensToWrite) {
+TEST(GoldenUpdateMode, DecidesWhichGoldensToWrite) {
   using F = FailureClass;
   EXPECT_FALSE(should_write_golden(UpdateMode::None, F::MissingGolden));
   EXPECT_TRUE(should_write_golden(UpdateMode::Missing, F::MissingGolden));
@@ -528,7 +538,7 @@ TEST(UpdateMode, DecidesWhichGoldensToWrite) {
 
 // ---- pictures, artifacts and the report ------------------------------------------------------
 
-TEST(DiffImages, OverlayMarksDifferencesAndHeatmapScalesToTheLargest) {
+TEST(GoldenDiffImages, OverlayMarksDifferencesAndHeatmapScalesToTheLargest) {
   const Image golden = make_image(8, 8, kBackground);
   Image actual = golden;
   shift_red(actual, 1, 1, 1, 40);
@@ -551,7 +561,7 @@ TEST(DiffImages, OverlayMarksDifferencesAndHeatmapScalesToTheLargest) {
   EXPECT_EQ(get_pixel(heatmap, 5, 5).r, 0);
 }
 
-TEST(Artifacts, WritesEveryFileAndOneSelfContainedReport) {
+TEST(GoldenArtifacts, WritesEveryFileAndOneSelfContainedReport) {
   TempDir dir;
   const Image golden = make_image(24, 16, kBackground);
   Image actual = golden;
@@ -592,7 +602,7 @@ TEST(Artifacts, WritesEveryFileAndOneSelfContainedReport) {
   EXPECT_FALSE(fs::exists(second / "actual.json"));
 }
 
-TEST(Artifacts, RefusesNamesThatEscapeTheRoot) {
+TEST(GoldenArtifacts, RefusesNamesThatEscapeTheRoot) {
   TempDir dir;
   GoldenCheck check;
   const Image image = make_image(2, 2, kBackground);
@@ -604,7 +614,7 @@ TEST(Artifacts, RefusesNamesThatEscapeTheRoot) {
   }
 }
 
-TEST(Report, ListsAnUnreadableMetricsFileInsteadOfStopping) {
+TEST(GoldenReport, ListsAnUnreadableMetricsFileInsteadOfStopping) {
   TempDir dir;
   write_text_file_atomically(dir.path() / "circles" / "broken" / "metrics.json", "[1, 2");
   write_text_file_atomically(dir.path() / "circles" / "array" / "metrics.json", "[1, 2]");
@@ -615,13 +625,13 @@ TEST(Report, ListsAnUnreadableMetricsFileInsteadOfStopping) {
   EXPECT_EQ(write_html_report(dir.path() / "absent"), 0);
 }
 
-TEST(Report, EscapesHtml) {
+TEST(GoldenReport, EscapesHtml) {
   EXPECT_EQ(escape_html("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;");
 }
 
 // ---- inventory -----------------------------------------------------------------------------
 
-TEST(Inventory, FindsGoldensUnusedOnesAndUnpairedFiles) {
+TEST(GoldenInventory, FindsGoldensUnusedOnesAndUnpairedFiles) {
   TempDir dir;
   const Image image = make_image(2, 2, kBackground);
   save_png(dir.path() / "circles" / "start.png", image);
@@ -653,7 +663,7 @@ int run_promote(const fs::path& golden_dir, const std::string& arguments) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-TEST(Promote, CopiesReviewedActualsAndRefusesWhenNothingToPromote) {
+TEST(GoldenPromote, CopiesReviewedActualsAndRefusesWhenNothingToPromote) {
   if (std::getenv("IMPULSE2D_SOURCE_DIR") == nullptr) GTEST_SKIP() << "run through ctest";
   TempDir dir;
   const fs::path artifacts = dir.path() / "artifacts";

@@ -173,7 +173,9 @@ Sidecar read_sidecar(const std::filesystem::path& file, const std::string& displ
 }
 
 void write_sidecar(const std::filesystem::path& file, const Sidecar& sidecar) {
-  write_text_file_atomically(file, sidecar_to_json(sidecar).dump(2) + "\n");
+  const json object = sidecar_to_json(sidecar);
+  sidecar_from_json(object, "sidecar '" + file.string() + "' (not written)");  // readable back
+  write_text_file_atomically(file, object.dump(2) + "\n");
 }
 
 }  // namespace impulse2d::golden

@@ -69,7 +69,8 @@ nlohmann::json sidecar_to_json(const Sidecar& sidecar);
 Sidecar read_sidecar(const std::filesystem::path& file, const std::string& display_name = "");
 
 /// Writes a sidecar file atomically (pretty-printed, trailing newline). Throws
-/// `GoldenError` on failure.
+/// `GoldenError`, writing nothing, when `read_sidecar` would reject the result (e.g. an
+/// empty scene name) or the write fails.
 void write_sidecar(const std::filesystem::path& file, const Sidecar& sidecar);
 
 }  // namespace impulse2d::golden

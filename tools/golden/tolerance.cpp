@@ -68,6 +68,21 @@ Tolerance tolerance_from_json(const nlohmann::json& object, const std::string& o
            "max_differing_ratio, window_size, max_window_pixels)");
     }
   }
+  // The three pixel-count layers must all hold, so loosening one while another stays 0
+  // changes nothing: any differing pixel would still fail. Say so instead of ignoring it.
+  const bool pixels_loose = tolerance.max_differing_pixels > 0;
+  const bool ratio_loose = tolerance.max_differing_ratio > 0.0;
+  const bool window_loose = tolerance.max_window_pixels > 0;
+  if ((pixels_loose || ratio_loose || window_loose) &&
+      !(pixels_loose && ratio_loose && window_loose)) {
+    throw GoldenError(origin +
+                      ": tolerance: max_differing_pixels, max_differing_ratio and "
+                      "max_window_pixels must be loosened together (each must hold, so one "
+                      "left at 0 still fails any differing pixel); got " +
+                      std::to_string(tolerance.max_differing_pixels) + ", " +
+                      nlohmann::json(tolerance.max_differing_ratio).dump() + ", " +
+                      std::to_string(tolerance.max_window_pixels));
+  }
   return tolerance;
 }
 

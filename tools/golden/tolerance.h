@@ -38,7 +38,8 @@ struct Tolerance {
 /// Reads limits from a JSON object whose keys are the field names above (all optional;
 /// missing keys keep the strict default). `origin` is stored and used in error messages.
 /// Throws `GoldenError` naming `origin` and the field for unknown keys, wrong types and
-/// out-of-range values.
+/// out-of-range values, and when max_differing_pixels, max_differing_ratio and
+/// max_window_pixels are not either all 0 or all above 0 (a lone loosened layer is a no-op).
 Tolerance tolerance_from_json(const nlohmann::json& object, const std::string& origin);
 
 /// The limits as a JSON object with every field (origin excluded).
