@@ -8,7 +8,13 @@
 //   moved  - boxes out of place: moved sideways more than the slop, or sunk more than the
 //            slop each contact below them may keep (row + 1) * slop
 //   depth  - deepest overlap left at the end (metres)
-// Usage: bench_solver [--steps N] [--rows R] [--csv FILE]
+//   error  - the worst box's distance out of place (sideways, or sunk beyond the slop its
+//            contacts may keep), metres: the accuracy axis of the speed/accuracy chart
+// With --sweep it instead runs the three solver families over iteration (and substep)
+// budgets and writes one CSV row per run (family,iterations,substeps,ms_per_step,error_m;
+// family is tutorial, cold, warm or substeps)
+// for bench/chart_solver.sh to plot.
+// Usage: bench_solver [--steps N] [--rows R] [--csv FILE] [--sweep]
 #include "core/world.h"
 
 #include <algorithm>
@@ -72,7 +78,7 @@ std::vector<Method> methods() {
 
 struct Result {
   double median_ms = 0;
-  double sink = 0, drift = 0, depth = 0;
+  double sink = 0, drift = 0, depth = 0, error = 0;
   int moved = 0;
 };
 
@@ -118,6 +124,7 @@ Result run(const WorldSettings& settings, int rows, int steps) {
     const vec2 offset = world.body(boxes[i]).transform.position - exact[i];
     const float allowed_sink = static_cast<float>(row_of[i] + 1) * settings.slop;
     if (std::fabs(offset.x) > settings.slop || -offset.y > allowed_sink + settings.slop) ++result.moved;
+    result.error = std::max({result.error, double(std::fabs(offset.x)), double(-offset.y - allowed_sink)});
   }
   for (const Contact& contact : world.contacts()) {
     for (int i = 0; i < contact.point_count; ++i) result.depth = std::max(result.depth, double(contact.points[i].depth));
@@ -125,14 +132,44 @@ Result run(const WorldSettings& settings, int rows, int steps) {
   return result;
 }
 
+// Solver families over iteration budgets: the data of the speed/accuracy chart.
+void sweep(int rows, int steps, const std::string& csv_path) {
+  std::ofstream csv(csv_path);
+  csv << "family,iterations,substeps,ms_per_step,error_m\n";
+  const std::vector<Method> all = methods();
+  const std::pair<const char*, Method> families[] = {{"tutorial", all[0]}, {"cold", all[1]}, {"warm", all[4]}};
+  for (const auto& [key, family] : families) {
+    for (int iterations : {1, 2, 4, 8, 16, 32}) {
+      WorldSettings settings = family.settings;
+      settings.velocity_iterations = iterations;
+      const Result r = run(settings, rows, steps);
+      csv << key << ',' << iterations << ",1," << r.median_ms << ',' << r.error << '\n';
+      std::printf("%-44s iterations %2d: %7.3f ms/step, error %.4f m\n", family.name.c_str(), iterations,
+                  r.median_ms, r.error);
+    }
+  }
+  for (int substeps : {1, 2, 4, 8}) {
+    WorldSettings settings = all[4].settings;
+    settings.velocity_iterations = 1;
+    settings.substeps = substeps;
+    const Result r = run(settings, rows, steps);
+    csv << "substeps,1," << substeps << ',' << r.median_ms << ',' << r.error << '\n';
+    std::printf("%-44s substeps %2d: %7.3f ms/step, error %.4f m\n", "default, substeps x 1 iteration", substeps,
+                r.median_ms, r.error);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int steps = 600, rows = 20;
   std::string csv_path;
+  bool sweep_budgets = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if ((arg == "--steps" || arg == "--rows" || arg == "--csv") && i + 1 < argc) {
+    if (arg == "--sweep") {
+      sweep_budgets = true;
+    } else if ((arg == "--steps" || arg == "--rows" || arg == "--csv") && i + 1 < argc) {
       const std::string value = argv[++i];
       if (arg == "--csv") {
         csv_path = value;
@@ -146,28 +183,36 @@ int main(int argc, char** argv) {
         (arg == "--steps" ? steps : rows) = number;
       }
     } else {
-      std::fprintf(stderr, "usage: bench_solver [--steps N>=300] [--rows R] [--csv FILE]\n");
+      std::fprintf(stderr, "usage: bench_solver [--steps N>=300] [--rows R] [--csv FILE] [--sweep]\n");
       return 2;
     }
   }
+  if (sweep_budgets) {
+    if (csv_path.empty()) {
+      std::fprintf(stderr, "bench_solver: --sweep needs --csv FILE\n");
+      return 2;
+    }
+    sweep(rows, steps, csv_path);
+    return 0;
+  }
   std::printf("pyramid of %d rows (%d boxes), %d steps of 1/60 s, 8 velocity iterations\n", rows,
               rows * (rows + 1) / 2, steps);
-  std::printf("%-44s %9s %7s %8s %8s %6s %8s\n", "method", "ms/step", "ratio", "sink m", "drift m", "moved",
-              "depth m");
+  std::printf("%-44s %9s %7s %8s %8s %6s %8s %8s\n", "method", "ms/step", "ratio", "sink m", "drift m", "moved",
+              "depth m", "error m");
   std::ofstream csv;
   if (!csv_path.empty()) {
     csv.open(csv_path);
-    csv << "method,ms_per_step,ratio,sink_m,drift_m,moved,depth_m\n";
+    csv << "method,ms_per_step,ratio,sink_m,drift_m,moved,depth_m,error_m\n";
   }
   double baseline = 0;
   for (const Method& method : methods()) {
     const Result r = run(method.settings, rows, steps);
     if (baseline == 0) baseline = r.median_ms;
-    std::printf("%-44s %9.3f %7.2f %8.4f %8.4f %6d %8.4f\n", method.name.c_str(), r.median_ms,
-                r.median_ms / baseline, r.sink, r.drift, r.moved, r.depth);
+    std::printf("%-44s %9.3f %7.2f %8.4f %8.4f %6d %8.4f %8.4f\n", method.name.c_str(), r.median_ms,
+                r.median_ms / baseline, r.sink, r.drift, r.moved, r.depth, r.error);
     if (csv) {
       csv << '"' << method.name << "\"," << r.median_ms << ',' << r.median_ms / baseline << ',' << r.sink << ','
-          << r.drift << ',' << r.moved << ',' << r.depth << '\n';
+          << r.drift << ',' << r.moved << ',' << r.depth << ',' << r.error << '\n';
     }
   }
   return 0;
