@@ -269,6 +269,14 @@ TEST(GoldenCompare, WindowIsClampedToSmallImages) {
   EXPECT_EQ(result.metrics.worst_window_pixels, 9);
 }
 
+TEST(GoldenCompare, RejectsMalformedPixelBuffers) {
+  Image broken = make_image(4, 4, kBackground);
+  broken.pixels.pop_back();
+  const std::string message =
+      error_of([&] { compare_images(make_image(4, 4, kBackground), broken); });
+  EXPECT_NE(message.find("actual image 4x4 holds 63 bytes"), std::string::npos) << message;
+}
+
 TEST(GoldenCompare, SizeMismatchIsItsOwnOutcome) {
   const CompareResult result =
       compare_images(make_image(64, 48, kBackground), make_image(48, 64, kBackground));
@@ -519,6 +527,22 @@ TEST(GoldenUpdateMode, CiForcesNoneAndSaysWhy) {
     EXPECT_NE(choice.note.find("forces none"), std::string::npos) << choice.note;
   }
   EXPECT_TRUE(resolve_update_mode("none", "true").note.empty());
+}
+
+TEST(GoldenUpdateMode, ReadsTheEnvironment) {
+  ::setenv("GOLDEN_UPDATE", "missing", 1);
+  ::setenv("CI", "false", 1);
+  EXPECT_EQ(update_mode_from_environment().mode, UpdateMode::Missing);
+  ::setenv("CI", "true", 1);
+  EXPECT_EQ(update_mode_from_environment().mode, UpdateMode::None);
+  ::unsetenv("GOLDEN_UPDATE");
+  ::unsetenv("CI");
+  EXPECT_EQ(update_mode_from_environment().mode, UpdateMode::None);
+
+  ::setenv("GOLDEN_ARTIFACT_DIR", "/tmp/chosen", 1);
+  EXPECT_EQ(artifact_root_from_environment("build/golden"), fs::path("/tmp/chosen"));
+  ::unsetenv("GOLDEN_ARTIFACT_DIR");
+  EXPECT_EQ(artifact_root_from_environment("build/golden"), fs::path("build/golden"));
 }
 
 TEST(GoldenUpdateMode, DecidesWhichGoldensToWrite) {

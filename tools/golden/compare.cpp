@@ -1,6 +1,7 @@
 /// @file compare.cpp
 #include "tools/golden/compare.h"
 
+#include "tools/golden/error.h"
 #include "tools/golden/hex_hash.h"
 
 #include <algorithm>
@@ -135,6 +136,15 @@ int max_channel_delta_at(const Image& expected, const Image& actual, int x, int 
 
 CompareResult compare_images(const Image& expected, const Image& actual,
                              const Tolerance& tolerance) {
+  for (const Image* image : {&expected, &actual}) {
+    if (image->width < 0 || image->height < 0 ||
+        image->pixels.size() != image->pixel_count() * kChannels) {
+      throw GoldenError("compare_images: " + std::string(image == &expected ? "golden" : "actual") +
+                        " image " + std::to_string(image->width) + "x" +
+                        std::to_string(image->height) + " holds " +
+                        std::to_string(image->pixels.size()) + " bytes, not width*height*4");
+    }
+  }
   CompareResult result;
   result.expected_width = expected.width;
   result.expected_height = expected.height;

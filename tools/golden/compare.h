@@ -89,7 +89,8 @@ struct CompareResult {
 /// Largest of the four channel deltas of pixel (x, y); both images must hold that pixel.
 int max_channel_delta_at(const Image& expected, const Image& actual, int x, int y);
 
-/// Compares an actual image with its golden under `tolerance`.
+/// Compares an actual image with its golden under `tolerance`. Throws `GoldenError` when
+/// either image's pixel buffer does not hold width * height * 4 bytes.
 CompareResult compare_images(const Image& expected, const Image& actual,
                              const Tolerance& tolerance = Tolerance{});
 
