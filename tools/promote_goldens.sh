@@ -52,6 +52,10 @@ for name in "${selected[@]}"; do
     echo "promote: skipping '$name': no actual.json sidecar beside actual.png" >&2
     continue
   fi
+  if ! grep -q '"state_hash"' "$source_dir/actual.json"; then
+    echo "promote: skipping '$name': actual.json is not a golden sidecar (no state_hash)" >&2
+    continue
+  fi
   if [ -f "$source_dir/metrics.json" ] &&
      grep -q '"class": *"nondeterminism"' "$source_dir/metrics.json"; then
     echo "promote: skipping '$name': its frame renders nondeterministically; fix that first" >&2
