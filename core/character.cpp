@@ -1,0 +1,351 @@
+#include "core/character.h"
+
+#include "core/error.h"
+#include "core/one_way_platform.h"
+
+#include <algorithm>
+#include <climits>
+#include <optional>
+#include <cmath>
+#include <string>
+
+namespace impulse2d {
+
+namespace {
+
+constexpr float half_pi = 1.5707963f;
+
+float move_toward(float value, float target, float max_change) {
+  if (value < target) return std::min(value + max_change, target);
+  return std::max(value - max_change, target);
+}
+
+float sign_of(float value) { return value > 0.0f ? 1.0f : (value < 0.0f ? -1.0f : 0.0f); }
+
+// Up is against gravity; without gravity the character keeps +y as up.
+vec2 up_from_gravity(vec2 gravity) {
+  const float strength = glm::length(gravity);
+  return strength > 0.0f ? -gravity / strength : vec2(0.0f, 1.0f);
+}
+
+// Velocity of `body`'s material at the world point `point`.
+vec2 material_velocity(const Body& body, vec2 point) {
+  return body.linear_velocity + cross(body.angular_velocity, point - body.transform.position);
+}
+
+// The horizontal (perpendicular to up) unit part of a surface normal, or zero.
+vec2 horizontal_part(vec2 normal, vec2 up) {
+  const vec2 across = normal - up * glm::dot(normal, up);
+  const float length = glm::length(across);
+  return length > 0.0f ? across / length : vec2(0.0f);
+}
+
+void require(bool condition, const char* field, const char* rule) {
+  if (!condition) throw Error(std::string("CharacterSettings: ") + field + " " + rule);
+}
+
+}  // namespace
+
+int window_steps(float seconds, float time_step) {
+  if (!(std::isfinite(seconds) && seconds >= 0.0f)) {
+    throw Error("window_steps: seconds must be finite and >= 0");
+  }
+  if (!(std::isfinite(time_step) && time_step > 0.0f)) {
+    throw Error("window_steps: time_step must be finite and > 0");
+  }
+  return static_cast<int>(std::floor(static_cast<double>(seconds) / time_step + 1.0e-3));
+}
+
+void validate_character_settings(const CharacterSettings& s) {
+  require(std::isfinite(s.max_slope) && s.max_slope > 0.0f && s.max_slope < half_pi, "max_slope",
+          "must be in (0, pi/2)");
+  require(std::isfinite(s.wall_angle) && s.wall_angle >= 0.0f &&
+              s.wall_angle < half_pi - s.max_slope,
+          "wall_angle", "must be in [0, pi/2 - max_slope) so walls and ground do not overlap");
+  require(std::isfinite(s.max_speed) && s.max_speed >= 0.0f, "max_speed", "must be >= 0");
+  require(std::isfinite(s.ground_acceleration) && s.ground_acceleration >= 0.0f,
+          "ground_acceleration", "must be >= 0");
+  require(std::isfinite(s.ground_deceleration) && s.ground_deceleration >= 0.0f,
+          "ground_deceleration", "must be >= 0");
+  require(std::isfinite(s.air_acceleration) && s.air_acceleration >= 0.0f, "air_acceleration",
+          "must be >= 0");
+  require(std::isfinite(s.full_traction_friction) && s.full_traction_friction >= 0.0f,
+          "full_traction_friction", "must be >= 0");
+  require(std::isfinite(s.jump_height) && s.jump_height >= 0.0f, "jump_height", "must be >= 0");
+  require(std::isfinite(s.held_gravity_scale) && s.held_gravity_scale > 0.0f &&
+              s.held_gravity_scale <= 1.0f,
+          "held_gravity_scale", "must be in (0, 1]");
+  require(std::isfinite(s.coyote_time) && s.coyote_time >= 0.0f, "coyote_time", "must be >= 0");
+  require(std::isfinite(s.jump_buffer_time) && s.jump_buffer_time >= 0.0f, "jump_buffer_time",
+          "must be >= 0");
+  require(s.extra_jumps >= 0, "extra_jumps", "must be >= 0");
+  require(std::isfinite(s.wall_slide_speed) && s.wall_slide_speed >= 0.0f, "wall_slide_speed",
+          "must be >= 0");
+  require(is_finite(s.wall_jump_velocity), "wall_jump_velocity", "must be finite");
+  require(std::isfinite(s.wall_jump_lock_time) && s.wall_jump_lock_time >= 0.0f,
+          "wall_jump_lock_time", "must be >= 0");
+  require(std::isfinite(s.snap_distance) && s.snap_distance >= 0.0f, "snap_distance",
+          "must be >= 0");
+}
+
+Character::Character(World& world, const CharacterDef& def) : settings_(def.settings) {
+  validate_character_settings(settings_);
+  BodyDef body_def;
+  body_def.type = BodyType::Dynamic;
+  body_def.position = def.position;
+  body_def.fixed_rotation = true;
+  body_def.material = def.material;
+  body_def.collision_layers = def.collision_layers;
+  body_def.user_data = def.user_data;
+  body_ = world.create_body(body_def, make_box(def.half_extents));
+  half_extents_ = def.half_extents;
+  jumps_left_ = settings_.extra_jumps;
+  steps_since_grounded_ = INT_MAX;
+  jumped_since_grounded_ = true;  // no ground used yet: no coyote jump from the spawn point
+}
+
+void Character::set_settings(const CharacterSettings& settings) {
+  validate_character_settings(settings);
+  settings_ = settings;
+  jumps_left_ = std::min(jumps_left_, settings_.extra_jumps);
+}
+
+float Character::jump_speed(const World& world) const {
+  return std::sqrt(2.0f * glm::length(world.settings().gravity) * settings_.jump_height);
+}
+
+void Character::sense_contacts(const World& world, vec2 up, float move_x) {
+  ground_ = wall_ = steep_ = ceiling_ = CharacterSurface{};
+  const Body& self = world.body(body_);
+  const vec2 self_moved = self.transform.position - self.previous_position;
+  const float ground_min_dot = std::cos(settings_.max_slope);
+  const float wall_max_dot = std::sin(settings_.wall_angle);
+  const float move_sign = sign_of(move_x);
+  const vec2 side = right_perpendicular(up);
+  float best_ground_score = -2.0f;
+
+  for (const Contact& contact : world.contacts()) {
+    const bool self_is_a = contact.body_a == body_;
+    if (!contact.enabled || (!self_is_a && contact.body_b != body_)) continue;
+    const BodyId other_id = self_is_a ? contact.body_b : contact.body_a;
+    const Body& other = world.body(other_id);
+    int deepest = 0;
+    for (int i = 1; i < contact.point_count; ++i) {
+      if (contact.points[i].depth > contact.points[deepest].depth) deepest = i;
+    }
+    CharacterSurface surface;
+    surface.body = other_id;
+    surface.normal = self_is_a ? -contact.normal : contact.normal;
+    surface.point = contact.points[deepest].point;
+    surface.velocity = material_velocity(other, surface.point);
+    surface.friction = contact.static_friction;
+
+    // Contacts are found at the start of a step; carry the depth over the step since taken.
+    const vec2 other_moved = other.transform.position - other.previous_position;
+    const float depth_now =
+        contact.points[deepest].depth - glm::dot(self_moved - other_moved, surface.normal);
+    if (depth_now <= 0.0f) continue;
+
+    const float normal_up = glm::dot(surface.normal, up);
+    if (normal_up >= ground_min_dot) {
+      // Among several grounds walk along the one that climbs most in the input direction
+      // (so a foot on a flat does not push into the slope ahead); idle, the flattest.
+      const vec2 tangent = right_perpendicular(surface.normal);
+      const float score = move_sign == 0.0f ? normal_up : glm::dot(tangent * move_sign, up);
+      if (score > best_ground_score) {
+        best_ground_score = score;
+        ground_ = surface;
+      }
+    } else if (std::abs(normal_up) <= wall_max_dot) {
+      // With a wall on each side, the one pressed into.
+      if (!wall_.found() || glm::dot(surface.normal, side) * move_sign < 0.0f) wall_ = surface;
+    } else if (normal_up < 0.0f) {
+      ceiling_ = surface;
+    } else {
+      steep_ = surface;
+    }
+  }
+}
+
+bool Character::snap_to_ground(const World& world, vec2 up, float* push_distance) {
+  const Body& self = world.body(body_);
+  const vec2 side = right_perpendicular(up);
+  const float probe_start = 0.5f * half_extents_.y;  // rays start inside the own box
+  const float probe_length = probe_start + settings_.snap_distance;
+  const float ground_min_dot = std::cos(settings_.max_slope);
+  bool found = false;
+  float nearest_gap = 0.0f;
+  for (const float corner : {-1.0f, 1.0f}) {
+    const vec2 origin = self.transform.position + side * (corner * 0.9f * half_extents_.x) -
+                        up * (half_extents_.y - probe_start);
+    const std::optional<RayHit> hit =
+        world.raycast_closest(origin, -up * probe_length, self.collision_layers);
+    if (!hit || hit->body == body_ || glm::dot(hit->normal, up) < ground_min_dot) continue;
+    const float gap = hit->fraction * probe_length - probe_start;
+    if (found && gap >= nearest_gap) continue;
+    found = true;
+    nearest_gap = gap;
+    const Body& other = world.body(hit->body);
+    ground_.body = hit->body;
+    ground_.normal = hit->normal;
+    ground_.point = hit->point;
+    ground_.velocity = material_velocity(other, hit->point);
+    ground_.friction = mix_friction(self.material.static_friction, other.material.static_friction,
+                                    world.settings().friction_mixing);
+  }
+  // Close the gap in one step and sink to half the allowed overlap, so the next step's
+  // narrow phase finds the contact the solver keeps.
+  if (found) *push_distance = std::max(0.0f, nearest_gap + 0.5f * world.settings().slop);
+  return found;
+}
+
+void Character::update(World& world, const CharacterInput& input) {
+  if (!std::isfinite(input.move_x)) throw Error("Character::update: input.move_x is not finite");
+  const float move_x = std::clamp(input.move_x, -1.0f, 1.0f);
+  const WorldSettings& world_settings = world.settings();
+  const float dt = world_settings.time_step;
+  const float gravity = glm::length(world_settings.gravity);
+  const vec2 up = up_from_gravity(world_settings.gravity);
+  const vec2 side = right_perpendicular(up);
+  const Body& self = world.body(body_);
+  vec2 velocity = self.linear_velocity;
+  const float mass = self.mass;
+
+  const bool pressed = input.jump && !jump_was_held_;
+  jump_was_held_ = input.jump;
+  last_action_ = CharacterAction::None;
+
+  // 1. Where are we: surfaces from the contacts, or ground to snap to.
+  sense_contacts(world, up, move_x);
+  const bool ground_contact = ground_.found();
+  float snap_push = 0.0f;
+  bool on_ground = ground_contact || (may_snap_ && snap_to_ground(world, up, &snap_push));
+
+  // 2. Timers, in steps at this world's time step.
+  const int coyote_steps = window_steps(settings_.coyote_time, dt);
+  const int buffer_steps = window_steps(settings_.jump_buffer_time, dt);
+  if (on_ground) {
+    steps_since_grounded_ = 0;
+    jumps_left_ = settings_.extra_jumps;
+    jumped_since_grounded_ = false;
+    rising_hold_ = false;
+  } else if (steps_since_grounded_ < INT_MAX) {
+    ++steps_since_grounded_;
+  }
+  if (pressed) {
+    press_buffered_ = true;
+    buffer_age_ = 0;
+  } else if (press_buffered_ && ++buffer_age_ > buffer_steps) {
+    press_buffered_ = false;
+  }
+  bool input_locked = lock_steps_left_ > 0;
+  if (input_locked) --lock_steps_left_;
+
+  // 3. Jumps, in order of preference: drop through, from the ground (or coyote), off a wall,
+  // in the air.
+  if (press_buffered_) {
+    const float take_off_speed = jump_speed(world);
+    const bool coyote = !jumped_since_grounded_ && steps_since_grounded_ <= coyote_steps;
+    if (ground_contact && input.down && one_way_platforms_ != nullptr &&
+        one_way_platforms_->contains(ground_.body)) {
+      world.set_contact_enabled(body_, ground_.body, false);
+      last_action_ = CharacterAction::DropThrough;
+    } else if (on_ground || coyote) {
+      const float ground_rise = on_ground ? glm::dot(ground_.velocity, up) : 0.0f;
+      velocity += up * (ground_rise + take_off_speed - glm::dot(velocity, up));
+      last_action_ = on_ground ? CharacterAction::GroundJump : CharacterAction::CoyoteJump;
+    } else if (wall_.found()) {
+      const vec2 away = horizontal_part(wall_.normal, up);
+      velocity = wall_.velocity + away * settings_.wall_jump_velocity.x +
+                 up * settings_.wall_jump_velocity.y;
+      lock_steps_left_ = window_steps(settings_.wall_jump_lock_time, dt);
+      input_locked = true;
+      last_action_ = CharacterAction::WallJump;
+    } else if (jumps_left_ > 0) {
+      --jumps_left_;
+      velocity += up * (take_off_speed - glm::dot(velocity, up));
+      last_action_ = CharacterAction::AirJump;
+    }
+    if (last_action_ != CharacterAction::None) {
+      press_buffered_ = false;
+      jumped_since_grounded_ = true;
+      rising_hold_ = last_action_ != CharacterAction::DropThrough;
+      on_ground = false;
+    }
+  }
+
+  // 4. Motion.
+  const float target_speed = move_x * settings_.max_speed;
+  if (on_ground) {
+    support_ = CharacterSupport::Ground;
+    // Walk along the ground relative to it (so platforms carry us); gravity off, so the
+    // solver needs no normal impulse and friction does not fight the walk.
+    const vec2 tangent = right_perpendicular(ground_.normal);
+    float along = glm::dot(velocity - ground_.velocity, tangent);
+    if (!input_locked) {
+      const bool speeding_up = target_speed != 0.0f && along * target_speed >= 0.0f &&
+                               std::abs(target_speed) > std::abs(along);
+      float rate = speeding_up ? settings_.ground_acceleration : settings_.ground_deceleration;
+      if (settings_.full_traction_friction > 0.0f) {
+        rate *= std::min(1.0f, ground_.friction / settings_.full_traction_friction);
+      }
+      along = move_toward(along, target_speed, rate * dt);
+    }
+    for (const CharacterSurface* blocker : {&wall_, &steep_}) {
+      if (blocker->found() && glm::dot(tangent * along, horizontal_part(blocker->normal, up)) < 0.0f) {
+        along = 0.0f;  // do not walk into a wall or up a slope too steep to stand on
+      }
+    }
+    velocity = ground_.velocity + tangent * along - up * (snap_push / dt);
+    gravity_scale_ = 0.0f;
+    const Body& ground_body = world.body(ground_.body);
+    if (ground_body.type == BodyType::Dynamic) {
+      world.apply_force(ground_.body, -up * (mass * gravity), ground_.point);  // our weight
+    }
+  } else {
+    support_ = CharacterSupport::Air;
+    if (steep_.found() && last_action_ == CharacterAction::None) {
+      support_ = CharacterSupport::SteepSlope;  // slides: gravity and the contact's friction act
+    } else if (!input_locked) {
+      const float horizontal = glm::dot(velocity, side);
+      velocity += side * (move_toward(horizontal, target_speed, settings_.air_acceleration * dt) -
+                          horizontal);
+    }
+    if (!input.jump || glm::dot(velocity, up) <= 0.0f || ceiling_.found()) rising_hold_ = false;
+    gravity_scale_ = rising_hold_ ? settings_.held_gravity_scale : 1.0f;
+
+    // Neither walls nor steep slopes are pushed into (no friction holding us to them)...
+    for (const CharacterSurface* blocker : {&wall_, &steep_}) {
+      if (!blocker->found()) continue;
+      const vec2 across = horizontal_part(blocker->normal, up);
+      const float into = glm::dot(velocity - blocker->velocity, across);
+      if (into < 0.0f) velocity -= across * into;
+    }
+    // ...and a ceiling stops the rise.
+    if (ceiling_.found()) {
+      const float into = glm::dot(velocity - ceiling_.velocity, ceiling_.normal);
+      if (into < 0.0f) velocity -= ceiling_.normal * into;
+    }
+    // Pressing into a wall while falling: slide down it no faster than wall_slide_speed.
+    const bool pressing_wall =
+        wall_.found() && move_x * glm::dot(wall_.normal, side) < 0.0f && !input_locked;
+    if (pressing_wall && last_action_ == CharacterAction::None) {
+      support_ = CharacterSupport::WallSlide;
+      const float rise = glm::dot(velocity, up);
+      if (rise - gravity * gravity_scale_ * dt < -settings_.wall_slide_speed) {
+        velocity += up * (-settings_.wall_slide_speed - rise);
+        gravity_scale_ = 0.0f;
+      }
+    }
+  }
+
+  world.set_linear_velocity(body_, velocity);
+  world.set_gravity_scale(body_, gravity_scale_);
+  may_snap_ = on_ground;
+  coyote_steps_left_ = (!on_ground && !jumped_since_grounded_)
+                           ? std::max(0, coyote_steps - steps_since_grounded_)
+                           : 0;
+  buffer_steps_left_ = press_buffered_ ? buffer_steps - buffer_age_ : 0;
+}
+
+}  // namespace impulse2d

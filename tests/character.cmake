@@ -1,0 +1,5 @@
+# Platformer character: jumps (apex, coyote, buffer, extra and wall jumps) and ground (slopes,
+# one-way and moving platforms, traction, input scripts, determinism).
+impulse2d_add_test(test_character
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_character_jump.cpp
+  LIBS impulse2d_core)
