@@ -84,6 +84,8 @@ void validate_character_settings(const CharacterSettings& s) {
   require(is_finite(s.wall_jump_velocity), "wall_jump_velocity", "must be finite");
   require(std::isfinite(s.wall_jump_lock_time) && s.wall_jump_lock_time >= 0.0f,
           "wall_jump_lock_time", "must be >= 0");
+  require(std::isfinite(s.max_step_height) && s.max_step_height >= 0.0f, "max_step_height",
+          "must be >= 0");
   require(std::isfinite(s.snap_distance) && s.snap_distance >= 0.0f, "snap_distance",
           "must be >= 0");
 }
@@ -115,9 +117,10 @@ float Character::jump_speed(const World& world) const {
 }
 
 void Character::sense_contacts(const World& world, vec2 up, float move_x) {
-  ground_ = wall_ = steep_ = ceiling_ = CharacterSurface{};
+  ground_ = wall_ = steep_ = ceiling_ = step_ = CharacterSurface{};
   const Body& self = world.body(body_);
   const vec2 self_moved = self.transform.position - self.previous_position;
+  const vec2 feet = self.transform.position - up * half_extents_.y;
   const float ground_min_dot = std::cos(settings_.max_slope);
   const float wall_max_dot = std::sin(settings_.wall_angle);
   const float move_sign = sign_of(move_x);
@@ -145,6 +148,11 @@ void Character::sense_contacts(const World& world, vec2 up, float move_x) {
     const float depth_now =
         contact.points[deepest].depth - glm::dot(self_moved - other_moved, surface.normal);
     if (depth_now <= 0.0f) continue;
+    float top_above_feet = -1.0e30f;  // highest contact point above the feet, now
+    for (int i = 0; i < contact.point_count; ++i) {
+      top_above_feet = std::max(top_above_feet, glm::dot(contact.points[i].point - feet, up));
+    }
+    top_above_feet += glm::dot(self_moved - other_moved, up);
 
     const float normal_up = glm::dot(surface.normal, up);
     if (normal_up >= ground_min_dot) {
@@ -157,8 +165,13 @@ void Character::sense_contacts(const World& world, vec2 up, float move_x) {
         ground_ = surface;
       }
     } else if (std::abs(normal_up) <= wall_max_dot) {
-      // With a wall on each side, the one pressed into.
-      if (!wall_.found() || glm::dot(surface.normal, side) * move_sign < 0.0f) wall_ = surface;
+      if (top_above_feet <= settings_.max_step_height &&
+          (!step_.found() || top_above_feet > step_height_)) {
+        step_ = surface;
+        step_height_ = top_above_feet;
+      } else if (!wall_.found() || glm::dot(surface.normal, side) * move_sign < 0.0f) {
+        wall_ = surface;  // with a wall on each side, the one pressed into
+      }
     } else if (normal_up < 0.0f) {
       ceiling_ = surface;
     } else {
@@ -220,6 +233,7 @@ void Character::update(World& world, const CharacterInput& input) {
   const bool ground_contact = ground_.found();
   float snap_push = 0.0f;
   bool on_ground = ground_contact || (may_snap_ && snap_to_ground(world, up, &snap_push));
+  if (!on_ground && !wall_.found()) wall_ = step_;  // off the ground a low wall is still a wall
 
   // 2. Timers, in steps at this world's time step.
   const int coyote_steps = window_steps(settings_.coyote_time, dt);
@@ -281,7 +295,11 @@ void Character::update(World& world, const CharacterInput& input) {
     // Walk along the ground relative to it (so platforms carry us); gravity off, so the
     // solver needs no normal impulse and friction does not fight the walk.
     const vec2 tangent = right_perpendicular(ground_.normal);
-    float along = glm::dot(velocity - ground_.velocity, tangent);
+    // On the same ground as last update, keep the speed relative to what it did then, so a
+    // platform that changes velocity takes us with it.
+    const vec2 ground_before =
+        ground_.body == previous_ground_body_ ? previous_ground_velocity_ : ground_.velocity;
+    float along = glm::dot(velocity - ground_before, tangent);
     if (!input_locked) {
       const bool speeding_up = target_speed != 0.0f && along * target_speed >= 0.0f &&
                                std::abs(target_speed) > std::abs(along);
@@ -297,6 +315,14 @@ void Character::update(World& world, const CharacterInput& input) {
       }
     }
     velocity = ground_.velocity + tangent * along - up * (snap_push / dt);
+    if (step_.found() && glm::dot(tangent * along, horizontal_part(step_.normal, up)) < 0.0f) {
+      // Walking into a step: the solver would stop us at its face, so that contact is let
+      // through until we part, and we rise onto the top within this step (half a slop above
+      // it; snapping brings us down onto it).
+      world.set_contact_enabled(body_, step_.body, false);
+      const float lift = step_height_ + 0.5f * world_settings.slop;
+      velocity = ground_.velocity + side * glm::dot(tangent * along, side) + up * (lift / dt);
+    }
     gravity_scale_ = 0.0f;
     const Body& ground_body = world.body(ground_.body);
     if (ground_body.type == BodyType::Dynamic) {
@@ -342,6 +368,8 @@ void Character::update(World& world, const CharacterInput& input) {
   world.set_linear_velocity(body_, velocity);
   world.set_gravity_scale(body_, gravity_scale_);
   may_snap_ = on_ground;
+  previous_ground_body_ = on_ground ? ground_.body : BodyId{};
+  previous_ground_velocity_ = ground_.velocity;
   coyote_steps_left_ = (!on_ground && !jumped_since_grounded_)
                            ? std::max(0, coyote_steps - steps_since_grounded_)
                            : 0;

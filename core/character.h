@@ -61,6 +61,9 @@ struct CharacterSettings {
   /// Seconds after a wall jump during which the horizontal input is ignored.
   float wall_jump_lock_time = 0.15f;
 
+  /// Metres: a wall contact whose top is at most this far above the feet is a step (or the
+  /// seam between two grounds): a grounded character walking into it is lifted onto it.
+  float max_step_height = 0.05f;
   /// Metres below its feet that a character which was on the ground looks for walkable ground
   /// to stay on (crests, the top of a downhill slope, small steps) instead of flying off.
   float snap_distance = 0.2f;
@@ -176,6 +179,10 @@ class Character {
   CharacterSurface wall_;
   CharacterSurface steep_;
   CharacterSurface ceiling_;
+  CharacterSurface step_;
+  float step_height_ = 0.0f;  // metres from the feet to the top of `step_`
+  BodyId previous_ground_body_;        // ground of the previous update (null in the air)
+  vec2 previous_ground_velocity_{0.0f, 0.0f};  // its velocity then, m/s
 
   // Controller state carried between updates.
   CharacterSupport support_ = CharacterSupport::Air;

@@ -2,4 +2,5 @@
 # one-way and moving platforms, traction, input scripts, determinism).
 impulse2d_add_test(test_character
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_character_jump.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_character_ground.cpp
   LIBS impulse2d_core)
