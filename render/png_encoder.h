@@ -14,7 +14,7 @@ namespace impulse2d::render {
 
 /// How PNG data is compressed.
 enum class PngEncoding {
-  Fast,        ///< libdeflate level 1 behind stb (STBIW_ZLIB_COMPRESS), fixed "up" row filter
+  Fast,        ///< libdeflate level 1 behind stb (STBIW_ZLIB_COMPRESS), no row filter
   StbDefault,  ///< stb's own deflate with its per-row best-filter search (the baseline)
 };
 

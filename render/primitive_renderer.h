@@ -1,7 +1,7 @@
 #pragma once
 /// @file primitive_renderer.h
 /// The batched GL implementation of core's `DebugDraw`: every primitive of a frame becomes
-/// one instance of one program, drawn in a single instanced call in the order it was emitted.
+/// a quad of one vertex buffer, drawn by one program in one call, in the order emitted.
 
 #include "core/debug_draw.h"
 #include "render/camera.h"
@@ -25,10 +25,10 @@ struct PrimitiveStyle {
   int label_scale = 1;             ///< integer magnification of `draw_text` labels (1 = 7 px caps)
 };
 
-/// Draws world primitives (lines and arrows as thin anti-aliased quads, circles as quads
-/// with an analytic anti-aliased edge, polygons as triangles) and screen-space rectangles and
-/// text, batched between `begin` and `finish`. Needs the GL context it was created under to
-/// be current for construction, `finish` and destruction.
+/// Draws world primitives (lines and arrows as thin quads with analytic coverage, circles
+/// as quads with an analytic anti-aliased edge, polygons as triangles) and screen-space
+/// rectangles and text, batched between `begin` and `finish`. Needs the GL context it was
+/// created under to be current for construction, `finish` and destruction.
 class PrimitiveRenderer final : public DebugDraw {
  public:
   /// Compiles the program and creates the buffers. Throws `RenderError` on shader errors.
@@ -40,9 +40,10 @@ class PrimitiveRenderer final : public DebugDraw {
   /// Starts a frame seen through `camera`; drops anything batched before.
   void begin(const Camera& camera);
   /// Clears the framebuffer to `background` (drawn opaque) and draws the batch, in order.
+  /// Throws `RenderError` when GL reports an error.
   void finish(Color background);
-  /// Primitives batched since `begin`.
-  std::size_t primitive_count() const { return instances_.size(); }
+  /// Primitives (quads) batched since `begin`.
+  std::size_t primitive_count() const { return vertices_.size() / 4; }
   /// Width of the frame being batched, pixels.
   int viewport_width() const { return camera_.width(); }
   /// Height of the frame being batched, pixels.
@@ -65,27 +66,29 @@ class PrimitiveRenderer final : public DebugDraw {
   void draw_screen_text(vec2 top_left, const std::string& text, Color color, int scale);
 
  private:
-  // One primitive, as the shaders read it (see `PrimitiveKind` for the meaning of p0..p2).
-  using PrimitiveKindValue = std::uint32_t;  // a `PrimitiveKind` (primitive_shaders.h)
-  struct Instance {
-    float p0[2];
-    float p1[2];
-    float p2[2];
-    float params[2];
+  // One corner of a quad, as the shaders read it (see primitive_shaders.h).
+  struct Vertex {
+    float position[2];
+    float local[2];
+    float extent[2];
     std::uint8_t color[4];
-    std::uint32_t kind;
   };
-  void push(PrimitiveKindValue kind, vec2 p0, vec2 p1, vec2 p2, vec2 params, Color color);
+  vec2 to_window(vec2 world) const;
+  void push_solid(vec2 a, vec2 b, vec2 c, vec2 d, Color color);
   void push_segment(vec2 from, vec2 to, float extension_pixels, Color color);
+  void push_disc(vec2 center, float radius_pixels, float ring_width_pixels, Color color);
+  void push_text(vec2 window_top_left, const std::string& text, Color color, float scale);
 
   PrimitiveStyle style_;
   Camera camera_;
+  float world_to_window_[4] = {1.0f, 0.0f, 1.0f, 0.0f};  // x scale, x offset, y scale, y offset
   std::unique_ptr<ShaderProgram> program_;
-  int world_to_clip_location_ = -1;
   int viewport_location_ = -1;
   unsigned int vertex_array_ = 0;
-  unsigned int instance_buffer_ = 0;
-  std::vector<Instance> instances_;
+  unsigned int vertex_buffer_ = 0;
+  unsigned int index_buffer_ = 0;
+  std::size_t capacity_quads_ = 0;  // quads the vertex and index buffers hold
+  std::vector<Vertex> vertices_;
   std::vector<GlyphRect> glyphs_;  // scratch for text layout
 };
 

@@ -1,23 +1,18 @@
 #pragma once
 /// @file primitive_shaders.h
-/// GLSL 3.30 sources of the one program that draws every primitive of a frame: each
-/// instance is six vertices (two triangles) whose meaning depends on its kind.
+/// GLSL 3.30 sources of the one program that draws every primitive of a frame. The CPU
+/// expands each primitive into a quad in window pixels; each vertex carries its position,
+/// its offset from the primitive's centre, the primitive's extent and its colour, and the
+/// fragment stage turns those into analytic coverage:
+///   extent.x >= 0: a rectangle of half sizes `extent` (segments; solid shapes use a huge
+///                  extent, so coverage is 1),
+///   extent.x < 0:  a disc of radius -extent.x, or a ring of width extent.y when > 0.
 
 namespace impulse2d::render {
 
-/// What one primitive instance is; the numbers are shared with the shaders.
-enum class PrimitiveKind : unsigned int {
-  Triangle = 0,       ///< p0, p1, p2: world corners; no anti-aliasing (an outline covers edges)
-  Parallelogram = 1,  ///< p0, p1, p2: consecutive world corners, the fourth is p0 + p2 - p1
-  Segment = 2,        ///< p0 -> p1 world; params: half width, end extension (pixels)
-  Disc = 3,           ///< p0 world centre; params: radius, ring width (0 = solid) (pixels)
-  AnchoredRect = 4,   ///< p0 world anchor snapped to a pixel; p1, p2: rectangle offsets (pixels, y up)
-  ScreenRect = 5,     ///< p1, p2: rectangle corners in GL window pixels (y up)
-};
-
-/// Vertex stage: expands an instance to screen pixels, then to clip space.
+/// Vertex stage: window pixels to clip space; passes offset, extent and colour on.
 extern const char* const primitive_vertex_shader;
-/// Fragment stage: analytic coverage of segments and discs multiplied into alpha.
+/// Fragment stage: coverage of the rectangle or disc multiplied into alpha.
 extern const char* const primitive_fragment_shader;
 
 }  // namespace impulse2d::render

@@ -1,0 +1,269 @@
+// bench_render: how fast frames come out of the renderer, for 1000 bodies at 800x600 with
+// the HUD and legend, once with every overlay on and once with shapes only.
+//
+//   bench_render [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba]
+//
+// Prints a Markdown table: render ms/frame; PNG encode ms/frame and size with stb's default
+// deflate (the baseline) and with the fast path (libdeflate level 1, no row filter); and
+// end-to-end frames/s of simulate+render+encode+write, first all on one thread with stb's
+// default encoder (the baseline), then with the fast encoder, on this thread and on writer
+// threads. Ratios are against the baselines measured in the same run. Frames go to DIR
+// (default: a temporary directory that is removed afterwards); --dump-frame saves the last
+// all-overlay frame as raw RGBA.
+#include "core/world.h"
+#include "render/camera.h"
+#include "render/frame_renderer.h"
+#include "render/frame_writer.h"
+#include "render/png_encoder.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace impulse2d;
+using namespace impulse2d::render;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kWidth = 800;
+constexpr int kHeight = 600;
+constexpr int kBodies = 1000;
+
+double milliseconds_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// A 40 m wide bin with 1000 bodies (circles, oriented boxes, triangles and hexagons, in
+// turn) dropped in a grid above its floor.
+World make_bin() {
+  World world;
+  BodyDef wall;
+  wall.type = BodyType::Static;
+  wall.material = materials::static_ground();
+  wall.position = {0.0f, -0.5f};
+  world.create_body(wall, make_box({21.0f, 0.5f}));
+  wall.position = {-20.5f, 14.5f};
+  world.create_body(wall, make_box({0.5f, 15.0f}));
+  wall.position = {20.5f, 14.5f};
+  world.create_body(wall, make_box({0.5f, 15.0f}));
+
+  const vec2 triangle[3] = {{-0.35f, -0.3f}, {0.35f, -0.3f}, {0.0f, 0.35f}};
+  vec2 hexagon[6];
+  for (int i = 0; i < 6; ++i) {
+    const float angle = 1.0471976f * static_cast<float>(i);
+    hexagon[i] = vec2(0.35f * std::cos(angle), 0.35f * std::sin(angle));
+  }
+  const Shape shapes[4] = {make_circle(0.35f), make_oriented_box({0.3f, 0.3f}), make_polygon(triangle, 3),
+                           make_polygon(hexagon, 6)};
+  const int columns = 40;
+  for (int i = 0; i < kBodies - 3; ++i) {
+    BodyDef body;
+    const int row = i / columns;
+    const int column = i % columns;
+    body.position = {-19.5f + static_cast<float>(column) + 0.2f * static_cast<float>(row % 2),
+                     0.5f + 0.9f * static_cast<float>(row)};
+    body.angle = 0.1f * static_cast<float>(i % 7);
+    world.create_body(body, shapes[i % 4]);
+  }
+  return world;
+}
+
+FrameOptions overlay_options(std::uint32_t flags) {
+  FrameOptions options;
+  options.draw.flags = flags;
+  options.draw.impulse_scale = 0.2f;
+  return options;
+}
+
+HudInfo hud_for(std::int64_t frame) {
+  HudInfo info;
+  info.scene_name = "bin1000";
+  info.frame = frame;
+  return info;
+}
+
+struct Arguments {
+  int frames = 60;
+  int warmup = 120;
+  std::string out;
+  std::string dump_frame;
+};
+
+Arguments parse_arguments(int argc, char** argv) {
+  Arguments args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (flag == "--frames" && has_value) {
+      args.frames = std::atoi(argv[++i]);
+    } else if (flag == "--warmup" && has_value) {
+      args.warmup = std::atoi(argv[++i]);
+    } else if (flag == "--out" && has_value) {
+      args.out = argv[++i];
+    } else if (flag == "--dump-frame" && has_value) {
+      args.dump_frame = argv[++i];
+    } else {
+      std::fprintf(stderr, "usage: %s [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba]\n",
+                   argv[0]);
+      std::exit(2);
+    }
+  }
+  if (args.frames < 1 || args.warmup < 0) {
+    std::fprintf(stderr, "bench_render: --frames must be >= 1 and --warmup >= 0\n");
+    std::exit(2);
+  }
+  return args;
+}
+
+struct EncodeResult {
+  double milliseconds = 0.0;  // per frame
+  double kilobytes = 0.0;     // per frame
+};
+
+EncodeResult measure_encode(const std::vector<Frame>& frames, PngEncoding encoding) {
+  EncodeResult result;
+  const Clock::time_point start = Clock::now();
+  for (const Frame& frame : frames) result.kilobytes += static_cast<double>(encode_png(frame, encoding).size()) / 1024.0;
+  result.milliseconds = milliseconds_since(start) / static_cast<double>(frames.size());
+  result.kilobytes /= static_cast<double>(frames.size());
+  return result;
+}
+
+// Simulate, render, encode and write `frames` frames on this thread; frames/s.
+double end_to_end_synchronous(World world, FrameRenderer& renderer, const Camera& camera,
+                              const FrameOptions& options, int frames, const fs::path& directory,
+                              PngEncoding encoding) {
+  Frame frame;
+  const Clock::time_point start = Clock::now();
+  for (int i = 0; i < frames; ++i) {
+    world.step();
+    renderer.render(world, camera, options, hud_for(i), frame);
+    write_png(frame_file_path(directory, "bin1000", i), frame, encoding);
+  }
+  return 1000.0 * frames / milliseconds_since(start);
+}
+
+// The same with the writer's worker threads encoding while the next frame is made.
+double end_to_end_async(World world, FrameRenderer& renderer, const Camera& camera, const FrameOptions& options,
+                        int frames, const fs::path& directory, int workers) {
+  FrameWriterOptions writer_options;
+  writer_options.directory = directory;
+  writer_options.scene_name = "bin1000";
+  writer_options.worker_threads = workers;
+  writer_options.queue_capacity = 4;
+  const Clock::time_point start = Clock::now();
+  AsyncFrameWriter writer(writer_options);
+  for (int i = 0; i < frames; ++i) {
+    world.step();
+    Frame frame = writer.take_spare_frame();
+    renderer.render(world, camera, options, hud_for(i), frame);
+    writer.submit(i, std::move(frame));
+  }
+  writer.finish();
+  return 1000.0 * frames / milliseconds_since(start);
+}
+
+// Everything measured for one set of overlay flags.
+struct Measured {
+  double render_ms = 0.0;
+  EncodeResult stb;
+  EncodeResult fast;
+  double baseline_fps = 0.0;
+  double fast_sync_fps = 0.0;
+  double async1_fps = 0.0;
+  double async2_fps = 0.0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Arguments args = parse_arguments(argc, argv);
+  const bool temporary_output = args.out.empty();
+  const fs::path out = temporary_output
+                           ? fs::temp_directory_path() / ("impulse2d-bench-render-" + std::to_string(::getpid()))
+                           : fs::path(args.out);
+  fs::create_directories(out);
+
+  World world = make_bin();
+  for (int i = 0; i < args.warmup; ++i) world.step();
+  FrameRenderer renderer(kWidth, kHeight);
+  const Camera camera = Camera::fit(world_bounds(world), kWidth, kHeight, 10.0f);
+
+  // Simulation alone.
+  World timed = world;
+  Clock::time_point start = Clock::now();
+  for (int i = 0; i < args.frames; ++i) timed.step();
+  const double step_ms = milliseconds_since(start) / args.frames;
+
+  std::vector<Measured> results;
+  std::size_t contacts = 0;
+  for (const std::uint32_t flags : {static_cast<std::uint32_t>(draw_all), static_cast<std::uint32_t>(draw_shapes)}) {
+    const FrameOptions options = overlay_options(flags);
+    Measured m;
+    // Rendering alone (a step between frames, not timed); keeps 20 frames for encoding.
+    std::vector<Frame> frames;
+    World rendered = world;
+    Frame frame;
+    contacts = 0;
+    for (int i = 0; i < args.frames; ++i) {
+      rendered.step();
+      contacts += rendered.contacts().size();
+      start = Clock::now();
+      renderer.render(rendered, camera, options, hud_for(i), frame);
+      m.render_ms += milliseconds_since(start);
+      if (i < 20) frames.push_back(frame);
+    }
+    m.render_ms /= args.frames;
+    if (!args.dump_frame.empty() && flags == draw_all) {
+      std::ofstream(args.dump_frame, std::ios::binary)
+          .write(reinterpret_cast<const char*>(frames.back().rgba.data()),
+                 static_cast<std::streamsize>(frames.back().rgba.size()));
+    }
+    m.stb = measure_encode(frames, PngEncoding::StbDefault);
+    m.fast = measure_encode(frames, PngEncoding::Fast);
+    m.baseline_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, PngEncoding::StbDefault);
+    m.fast_sync_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, PngEncoding::Fast);
+    m.async1_fps = end_to_end_async(world, renderer, camera, options, args.frames, out, 1);
+    m.async2_fps = end_to_end_async(world, renderer, camera, options, args.frames, out, 2);
+    results.push_back(m);
+  }
+
+  std::printf("bench_render: %d bodies, %dx%d, HUD + legend, %d frames after %d warm-up steps\n", world.body_count(),
+              kWidth, kHeight, args.frames, args.warmup);
+  std::printf("renderer: %s; %u hardware threads; %.0f contacts per frame; World::step %.2f ms\n\n",
+              renderer.fingerprint().c_str(), std::thread::hardware_concurrency(),
+              static_cast<double>(contacts) / args.frames, step_ms);
+  const Measured& all = results[0];
+  const Measured& shapes = results[1];
+  std::printf("| measure | all overlays | shapes only |\n|---|---|---|\n");
+  std::printf("| render (draw + rasterise + read back), ms/frame | %.2f | %.2f |\n", all.render_ms, shapes.render_ms);
+  std::printf("| PNG encode, stb default (baseline), ms/frame | %.2f (%.0f KB) | %.2f (%.0f KB) |\n",
+              all.stb.milliseconds, all.stb.kilobytes, shapes.stb.milliseconds, shapes.stb.kilobytes);
+  std::printf("| PNG encode, fast (libdeflate 1, no filter), ms/frame | %.2f (%.0f KB) | %.2f (%.0f KB) |\n",
+              all.fast.milliseconds, all.fast.kilobytes, shapes.fast.milliseconds, shapes.fast.kilobytes);
+  std::printf("| fast vs stb: speed-up, size ratio | %.2fx, %.2f | %.2fx, %.2f |\n",
+              all.stb.milliseconds / all.fast.milliseconds, all.fast.kilobytes / all.stb.kilobytes,
+              shapes.stb.milliseconds / shapes.fast.milliseconds, shapes.fast.kilobytes / shapes.stb.kilobytes);
+  const auto row = [](const char* name, double value_all, double base_all, double value_shapes, double base_shapes) {
+    std::printf("| %s, frames/s | %.1f (%.2fx) | %.1f (%.2fx) |\n", name, value_all, value_all / base_all, value_shapes,
+                value_shapes / base_shapes);
+  };
+  row("end to end, 1 thread, stb default (baseline)", all.baseline_fps, all.baseline_fps, shapes.baseline_fps,
+      shapes.baseline_fps);
+  row("end to end, 1 thread, fast PNG", all.fast_sync_fps, all.baseline_fps, shapes.fast_sync_fps, shapes.baseline_fps);
+  row("end to end, fast PNG on 1 writer thread", all.async1_fps, all.baseline_fps, shapes.async1_fps, shapes.baseline_fps);
+  row("end to end, fast PNG on 2 writer threads", all.async2_fps, all.baseline_fps, shapes.async2_fps, shapes.baseline_fps);
+
+  if (temporary_output) fs::remove_all(out);
+  return 0;
+}
