@@ -1,0 +1,138 @@
+/// @file commands.cpp
+#include "demos/commands.h"
+
+#include "demos/contact_sheet.h"
+#include "demos/frame_sequence.h"
+#include "demos/overlays.h"
+#include "demos/progress.h"
+#include "demos/scene_registry.h"
+#include "demos/scene_run.h"
+#include "demos/trace_writer.h"
+#include "demos/usage_error.h"
+#include "demos/video_encoder.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace impulse2d::demos {
+namespace {
+
+/// A scene resolved from the arguments together with its parameters.
+struct ResolvedScene {
+  Scene scene;
+  Params params;
+  std::int64_t steps = 0;
+};
+
+ResolvedScene resolve(const SceneArguments& arguments) {
+  ResolvedScene resolved{resolve_scene(arguments.scene), Params{}, 0};
+  resolved.params = Params(resolved.scene.params);
+  for (const std::string& assignment : arguments.params) resolved.params.set_assignment(assignment);
+  resolved.steps = arguments.steps ? *arguments.steps : resolved.scene.view.steps;
+  if (resolved.steps < 0) throw UsageError("--steps must be >= 0");
+  return resolved;
+}
+
+render::Theme theme_of(const std::string& name) {
+  const std::optional<render::Theme> theme = render::parse_theme(name);
+  if (!theme) throw UsageError("--theme '" + name + "': expected light or dark");
+  return *theme;
+}
+
+}  // namespace
+
+std::pair<int, int> parse_size(const std::string& text, const std::string& option) {
+  const std::size_t x = text.find('x');
+  const auto parse = [&](const std::string& part) {
+    char* end = nullptr;
+    const long value = std::strtol(part.c_str(), &end, 10);
+    if (part.empty() || *end != '\0' || value < 16 || value > 8192) {
+      throw UsageError(option + " '" + text + "': expected WxH with each side 16..8192 pixels, e.g. 800x600");
+    }
+    return static_cast<int>(value);
+  };
+  if (x == std::string::npos) parse("");
+  return {parse(text.substr(0, x)), parse(text.substr(x + 1))};
+}
+
+void list_scenes(std::ostream& out) {
+  for (const Scene& scene : builtin_scenes()) {
+    out << scene.name << "\n  " << scene.description << "\n  model: " << describe_model(scene.model)
+        << "\n  run: " << scene.view.steps << " steps, frames " << scene.view.frames << "\n";
+    for (const ParamSpec& param : scene.params) {
+      out << "  --param " << param.name << "=" << format_param_value(param.default_value) << "  ("
+          << format_param_value(param.minimum) << ".." << format_param_value(param.maximum) << ") "
+          << param.description << "\n";
+    }
+  }
+  out << "\nA scene file (.json) can be given wherever a scene name is accepted.\n";
+}
+
+void render_scene(const RenderArguments& arguments, std::ostream& out) {
+  const ResolvedScene resolved = resolve(arguments.scene);
+  const FramePlan plan = plan_frames(arguments.frames ? *arguments.frames : resolved.scene.view.frames,
+                                     resolved.steps);
+  FrameSequenceOptions options;
+  std::tie(options.width, options.height) = parse_size(arguments.size, "--size");
+  options.draw = resolved.scene.view.draw;
+  if (arguments.overlays) options.draw.flags = parse_overlays(*arguments.overlays);
+  options.theme = theme_of(arguments.theme);
+  options.directory = arguments.out;
+  if (arguments.threads < 1 || arguments.threads > 64) throw UsageError("--threads must be 1..64");
+  options.writer_threads = arguments.threads;
+  if (arguments.video) {
+    check_video_output(*arguments.video);
+    options.video = std::filesystem::path(*arguments.video);
+  }
+
+  SceneRun run(resolved.scene, resolved.params);
+  Progress progress(resolved.scene.name, static_cast<std::int64_t>(plan.frames.size()), stderr,
+                    is_terminal(stderr));
+  const FrameSequenceResult result =
+      render_frame_sequence(run, plan, options, [&](std::int64_t done) { progress.update(done); });
+  progress.finish();
+  out << "wrote " << result.frame_count << " frames of " << resolved.scene.name << " to "
+      << options.directory.string() << "/ (" << result.first_file.string() << " .. "
+      << result.last_file.string() << ")";
+  if (options.video) out << " and " << options.video->string();
+  out << "\n";
+}
+
+void trace_scene(const TraceArguments& arguments, std::ostream& out) {
+  if (!arguments.scene.steps) throw UsageError("trace: --steps N is required");
+  const ResolvedScene resolved = resolve(arguments.scene);
+  TraceFormat format = TraceFormat::Csv;
+  if (arguments.format == "json") {
+    format = TraceFormat::Json;
+  } else if (arguments.format != "csv") {
+    throw UsageError("--format '" + arguments.format + "': expected csv or json");
+  }
+  SceneRun run(resolved.scene, resolved.params);
+  out << trace_run(run, resolved.steps, arguments.every, format);
+}
+
+void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
+  SceneArguments scene_arguments = arguments.scene;
+  if (scene_arguments.scene.empty()) scene_arguments.scene = default_scene().name;
+  const ResolvedScene resolved = resolve(scene_arguments);
+  if (arguments.count < 1 || arguments.count > 256) throw UsageError("--count must be 1..256");
+  const FramePlan plan = arguments.frames ? plan_frames(*arguments.frames, resolved.steps)
+                                          : spread_frames(arguments.count, resolved.steps);
+  ContactSheetOptions options;
+  std::tie(options.tile_width, options.tile_height) = parse_size(arguments.tile, "--tile");
+  options.columns = arguments.columns;
+  options.draw = resolved.scene.view.draw;
+  if (arguments.overlays) options.draw.flags = parse_overlays(*arguments.overlays);
+  options.theme = theme_of(arguments.theme);
+  const std::filesystem::path output =
+      arguments.out ? std::filesystem::path(*arguments.out)
+                    : std::filesystem::path("out") / ("contact_sheet_" + resolved.scene.name + ".png");
+  if (output.extension() != ".png") throw UsageError("--out " + output.string() + ": must end in .png");
+
+  SceneRun run(resolved.scene, resolved.params);
+  const auto [width, height] = write_contact_sheet(run, plan, options, output);
+  out << "wrote a " << width << "x" << height << " contact sheet of " << plan.frames.size()
+      << " frames of " << resolved.scene.name << " to " << output.string() << "\n";
+}
+
+}  // namespace impulse2d::demos

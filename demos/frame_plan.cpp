@@ -1,0 +1,40 @@
+/// @file frame_plan.cpp
+#include "demos/frame_plan.h"
+
+#include "demos/usage_error.h"
+#include "render/render_error.h"
+
+namespace impulse2d::demos {
+
+FramePlan plan_frames(const std::string& spec, std::int64_t run_steps) {
+  render::FrameSelection selection;
+  try {
+    selection = render::FrameSelection::parse(spec);
+  } catch (const render::RenderError& error) {
+    throw UsageError(std::string("--frames: ") + error.what());
+  }
+  const std::string run = "the run (steps 0.." + std::to_string(run_steps) + "; change it with --steps)";
+  if (selection.last() && *selection.last() > run_steps) {
+    throw UsageError("--frames '" + spec + "' ends at step " + std::to_string(*selection.last()) +
+                     ", after the end of " + run);
+  }
+  FramePlan plan;
+  for (std::int64_t step = 0; step <= run_steps; ++step) {
+    if (selection.contains(step)) plan.frames.push_back(step);
+  }
+  if (plan.frames.empty()) throw UsageError("--frames '" + spec + "' selects no step of " + run);
+  plan.steps = plan.frames.back();
+  return plan;
+}
+
+FramePlan spread_frames(int count, std::int64_t run_steps) {
+  FramePlan plan;
+  for (int i = 0; i < count; ++i) {
+    const std::int64_t step = count == 1 ? run_steps : run_steps * i / (count - 1);
+    if (plan.frames.empty() || plan.frames.back() != step) plan.frames.push_back(step);
+  }
+  plan.steps = plan.frames.back();
+  return plan;
+}
+
+}  // namespace impulse2d::demos

@@ -1,0 +1,28 @@
+#pragma once
+/// @file frame_plan.h
+/// Which steps of a run become frames, checked against the run's length.
+
+#include "render/frame_selection.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace impulse2d::demos {
+
+/// The frames of one run: frame n is the world after n steps.
+struct FramePlan {
+  std::int64_t steps = 0;             ///< steps to simulate (the last frame's step)
+  std::vector<std::int64_t> frames;   ///< selected steps, ascending, at least one
+};
+
+/// Parses `spec` (`A:B:k` ranges, see `render::FrameSelection`) and keeps the steps in
+/// 0..`run_steps`; the run is then cut short after the last selected step. Throws
+/// `UsageError` for a malformed spec, a range that ends after the run (naming both), or a
+/// selection with no step inside the run.
+FramePlan plan_frames(const std::string& spec, std::int64_t run_steps);
+
+/// `count` steps spread evenly over 0..`run_steps` (both ends included when count >= 2).
+FramePlan spread_frames(int count, std::int64_t run_steps);
+
+}  // namespace impulse2d::demos

@@ -1,0 +1,81 @@
+/// @file frame_sequence.cpp
+#include "demos/frame_sequence.h"
+
+#include "demos/output_guard.h"
+#include "demos/scene_camera.h"
+#include "demos/video_encoder.h"
+#include "render/frame_renderer.h"
+#include "render/frame_writer.h"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+namespace impulse2d::demos {
+namespace {
+
+/// Playback rate that shows the run in real time: one frame per `stride` steps of `dt`
+/// seconds, where the stride is the distance between the first two frames.
+double real_time_rate(const FramePlan& plan, float dt) {
+  const std::int64_t stride = plan.frames.size() > 1 ? plan.frames[1] - plan.frames[0] : 1;
+  const double rate = 1.0 / (static_cast<double>(stride) * static_cast<double>(dt));
+  return std::min(120.0, std::max(1.0, std::round(rate)));
+}
+
+}  // namespace
+
+std::string scene_title(const Scene& scene) {
+  return scene.view.caption.empty() ? scene.name : scene.name + " - " + scene.view.caption;
+}
+
+FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
+                                          const FrameSequenceOptions& options,
+                                          const FrameProgress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  OutputGuard guard;
+  guard.will_create_directory(options.directory);
+  render::FrameWriterOptions writer_options;
+  writer_options.directory = options.directory;
+  writer_options.scene_name = run.scene().name;
+  writer_options.worker_threads = options.writer_threads;
+  render::AsyncFrameWriter writer(writer_options);
+
+  std::unique_ptr<VideoEncoder> video;
+  if (options.video) {
+    guard.will_write_file(*options.video);
+    video = std::make_unique<VideoEncoder>(*options.video, options.width, options.height,
+                                           real_time_rate(plan, run.world().settings().time_step));
+  }
+
+  render::FrameRenderer renderer(options.width, options.height);
+  const render::Camera camera = scene_camera(run.scene().view.camera, run.world(), options.width,
+                                             options.height);
+  render::FrameOptions frame_options;
+  frame_options.draw = options.draw;
+  frame_options.theme = options.theme;
+  render::HudInfo hud;
+  hud.scene_name = scene_title(run.scene());
+
+  FrameSequenceResult result;
+  for (const std::int64_t frame_step : plan.frames) {
+    while (run.step_count() < frame_step) run.step();
+    hud.frame = frame_step;
+    render::Frame frame = writer.take_spare_frame();
+    renderer.render(run.world(), camera, frame_options, hud, frame);
+    if (video) video->add(frame);
+    const std::filesystem::path file = writer.path_for(frame_step);
+    guard.will_write_file(file);
+    if (result.frame_count == 0) result.first_file = file;
+    result.last_file = file;
+    writer.submit(frame_step, std::move(frame));
+    ++result.frame_count;
+    if (progress) progress(result.frame_count);
+  }
+  writer.finish();
+  if (video) video->finish();
+  guard.commit();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace impulse2d::demos

@@ -1,0 +1,50 @@
+#pragma once
+/// @file frame_sequence.h
+/// Renders a scene run into a PNG frame sequence (`dir/<scene>_<step:05>.png`), optionally
+/// also a video, with all-or-nothing output.
+
+#include "core/debug_draw.h"
+#include "demos/frame_plan.h"
+#include "demos/scene_run.h"
+#include "render/palette.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+namespace impulse2d::demos {
+
+/// How frames look and where they go.
+struct FrameSequenceOptions {
+  int width = 800;                     ///< pixels
+  int height = 600;                    ///< pixels
+  DebugDrawOptions draw;               ///< overlay flags and arrow scales
+  render::Theme theme = render::Theme::Light;  ///< colours
+  std::filesystem::path directory = "out";     ///< created if missing
+  std::optional<std::filesystem::path> video;  ///< also encode an .mp4 / .gif here
+  int writer_threads = 2;              ///< PNG encoding threads
+};
+
+/// What was written.
+struct FrameSequenceResult {
+  std::filesystem::path first_file;  ///< the first frame
+  std::filesystem::path last_file;   ///< the last frame
+  std::int64_t frame_count = 0;      ///< frames written
+  double seconds = 0.0;              ///< wall-clock time of the whole job
+};
+
+/// Called after each frame with the number of frames finished.
+using FrameProgress = std::function<void(std::int64_t frames_done)>;
+
+/// Steps `run` to `plan.steps`, rendering each planned step. On any failure (unwritable
+/// directory, renderer, a scene event) every file and directory this call created is removed
+/// and the exception is rethrown; files that existed before are never removed.
+FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
+                                          const FrameSequenceOptions& options,
+                                          const FrameProgress& progress);
+
+/// "tutorial - left: no friction | right: friction": the scene's name and caption for HUDs.
+std::string scene_title(const Scene& scene);
+
+}  // namespace impulse2d::demos

@@ -1,0 +1,38 @@
+#pragma once
+/// @file progress.h
+/// Progress of a long job on stderr: a bar redrawn in place on a terminal (frames done,
+/// frames/s, ETA), plain lines every tenth of the job otherwise (logs, pipes, CI).
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace impulse2d::demos {
+
+/// Reports `done` out of `total` units of work.
+class Progress {
+ public:
+  /// A report of `total` units labelled `label`, written to `stream`; `terminal` picks the
+  /// bar (true) or plain lines (false).
+  Progress(std::string label, std::int64_t total, std::FILE* stream, bool terminal);
+  /// Reports that `done` units are finished.
+  void update(std::int64_t done);
+  /// Ends the report (the bar gets its final newline).
+  void finish();
+
+ private:
+  std::string label_;
+  std::int64_t total_;
+  std::FILE* stream_;
+  bool terminal_;
+  std::int64_t last_tenth_ = -1;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_draw_;
+  bool drawn_ = false;
+};
+
+/// True when `stream` is a terminal (isatty).
+bool is_terminal(std::FILE* stream);
+
+}  // namespace impulse2d::demos

@@ -1,0 +1,68 @@
+#pragma once
+/// @file scene.h
+/// A scene: how to build a world, what physics it needs, how to look at it, and what happens
+/// while it runs. Built-in scenes are C++ (demos/scenes/*.cpp); scene files are JSON.
+
+#include "core/debug_draw.h"
+#include "core/settings.h"
+#include "core/shape.h"
+#include "demos/params.h"
+#include "demos/scene_event.h"
+#include "demos/scene_model.h"
+#include "demos/step_script.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace impulse2d {
+class World;
+}
+
+namespace impulse2d::demos {
+
+/// Where the camera looks. It stays fixed for the whole run.
+struct CameraSpec {
+  /// How the view is chosen.
+  enum class Mode {
+    FitWorld,   ///< fit the bounds of every body as built (before the first step)
+    FitBounds,  ///< fit `bounds`
+    Centered,   ///< `center` at the image centre, `pixels_per_metre` zoom
+  };
+  Mode mode = Mode::FitWorld;      ///< which of the fields below apply
+  Aabb bounds;                     ///< FitBounds: world rectangle shown whole, metres
+  vec2 center{0.0f, 0.0f};         ///< Centered: world point at the image centre, metres
+  float pixels_per_metre = 40.0f;  ///< Centered: zoom
+};
+
+/// The defaults of a rendered run; the command line overrides each.
+struct SceneView {
+  CameraSpec camera;             ///< where the camera looks
+  std::int64_t steps = 600;      ///< length of a run, steps
+  std::string frames = "::2";    ///< which steps become frames (`FrameSelection` syntax)
+  /// Overlays on by default (`flags`) and their arrow scales; the theme sets the palette.
+  DebugDrawOptions draw;
+  std::string caption;           ///< shown in the HUD after the scene name (may be empty)
+};
+
+/// Makes the per-step script of one run from the run's parameters.
+using ScriptFactory = std::function<std::unique_ptr<StepScript>(const Params&)>;
+
+/// Everything about one scene.
+struct Scene {
+  std::string name;         ///< registry key and file-name prefix, e.g. "pyramid"
+  std::string description;  ///< one line for `impulse2d list`
+  std::vector<ParamSpec> params;  ///< named parameters with defaults and ranges
+  SceneModel model;         ///< the physics it needs (applied to `settings` when run)
+  WorldSettings settings;   ///< method choices: gravity, time step, solver, mixing rules, ...
+  SceneView view;           ///< camera, run length, frames, overlays
+  /// Creates the scene's bodies in a world that already has `settings` and the model applied.
+  std::function<void(World&, const Params&)> build;
+  ScriptFactory script;              ///< optional per-step behaviour (empty: none)
+  std::vector<SceneEvent> events;    ///< scripted events, any order (sorted by the run)
+  std::string source = "built-in";   ///< "built-in" or the scene file's path
+};
+
+}  // namespace impulse2d::demos

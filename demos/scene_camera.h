@@ -1,0 +1,14 @@
+#pragma once
+/// @file scene_camera.h
+/// The camera of a scene's view for a given image size.
+
+#include "demos/scene.h"
+#include "render/camera.h"
+
+namespace impulse2d::demos {
+
+/// The camera `spec` describes for a width x height image; `FitWorld` fits `world` as it is
+/// now (call it before the first step).
+render::Camera scene_camera(const CameraSpec& spec, const World& world, int width, int height);
+
+}  // namespace impulse2d::demos

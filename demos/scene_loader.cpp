@@ -1,0 +1,425 @@
+/// @file scene_loader.cpp
+#include "demos/scene_loader.h"
+
+#include "core/error.h"
+#include "core/material.h"
+#include "core/world.h"
+#include "demos/json_cursor.h"
+#include "demos/overlays.h"
+#include "demos/usage_error.h"
+#include "render/frame_selection.h"
+#include "render/render_error.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace impulse2d::demos {
+namespace {
+
+/// The core's message without the function name it starts with ("make_polygon: ...").
+std::string core_reason(const Error& error) {
+  const std::string message = error.what();
+  const std::size_t colon = message.find(": ");
+  return colon == std::string::npos ? message : message.substr(colon + 2);
+}
+
+WorldSettings read_settings(const JsonCursor& node) {
+  node.allow_only({"gravity", "time_step", "substeps", "solver", "warm_starting", "block_solver",
+                   "position_correction", "correction_percent", "slop", "max_correction",
+                   "restitution_threshold", "friction_mixing", "restitution_mixing", "integrator",
+                   "broad_phase", "sleep_linear_speed", "sleep_angular_speed", "time_to_sleep",
+                   "max_linear_speed"});
+  WorldSettings settings;
+  if (auto field = node.optional_field("gravity")) settings.gravity = field->vector();
+  if (auto field = node.optional_field("time_step")) settings.time_step = field->positive();
+  if (auto field = node.optional_field("substeps")) settings.substeps = static_cast<int>(field->integer(1, 64));
+  if (auto field = node.optional_field("solver")) {
+    settings.solver = field->choice<SolverMethod>({{"accumulated", SolverMethod::AccumulatedImpulses},
+                                                   {"per_iteration", SolverMethod::PerIteration}});
+  }
+  if (auto field = node.optional_field("warm_starting")) settings.warm_starting = field->boolean();
+  if (auto field = node.optional_field("block_solver")) settings.block_solver = field->boolean();
+  if (auto field = node.optional_field("position_correction")) {
+    settings.position_correction = field->choice<PositionCorrection>(
+        {{"none", PositionCorrection::None},
+         {"linear", PositionCorrection::LinearProjection},
+         {"nonlinear_gauss_seidel", PositionCorrection::NonlinearGaussSeidel}});
+  }
+  if (auto field = node.optional_field("correction_percent")) settings.correction_percent = field->non_negative();
+  if (auto field = node.optional_field("slop")) settings.slop = field->non_negative();
+  if (auto field = node.optional_field("max_correction")) settings.max_correction = field->positive();
+  if (auto field = node.optional_field("restitution_threshold")) {
+    settings.restitution_threshold = field->non_negative();
+  }
+  if (auto field = node.optional_field("friction_mixing")) {
+    settings.friction_mixing = field->choice<FrictionMixing>({{"root_sum_squares", FrictionMixing::RootSumSquares},
+                                                              {"geometric_mean", FrictionMixing::GeometricMean},
+                                                              {"product", FrictionMixing::Product},
+                                                              {"average", FrictionMixing::Average},
+                                                              {"min", FrictionMixing::Minimum},
+                                                              {"max", FrictionMixing::Maximum}});
+  }
+  if (auto field = node.optional_field("restitution_mixing")) {
+    settings.restitution_mixing = field->choice<RestitutionMixing>({{"min", RestitutionMixing::Minimum},
+                                                                    {"max", RestitutionMixing::Maximum},
+                                                                    {"average", RestitutionMixing::Average}});
+  }
+  if (auto field = node.optional_field("integrator")) {
+    settings.integrator = field->choice<Integrator>({{"semi_implicit_euler", Integrator::SemiImplicitEuler},
+                                                     {"explicit_euler", Integrator::ExplicitEuler}});
+  }
+  if (auto field = node.optional_field("broad_phase")) {
+    settings.broad_phase = field->choice<BroadPhaseMethod>({{"sort_and_sweep", BroadPhaseMethod::SortAndSweep},
+                                                            {"brute_force", BroadPhaseMethod::BruteForce}});
+  }
+  if (auto field = node.optional_field("sleep_linear_speed")) settings.sleep_linear_speed = field->non_negative();
+  if (auto field = node.optional_field("sleep_angular_speed")) settings.sleep_angular_speed = field->non_negative();
+  if (auto field = node.optional_field("time_to_sleep")) settings.time_to_sleep = field->non_negative();
+  if (auto field = node.optional_field("max_linear_speed")) settings.max_linear_speed = field->positive();
+  try {
+    validate_settings(settings);
+  } catch (const Error& error) {
+    node.fail(core_reason(error));
+  }
+  return settings;
+}
+
+SceneModel read_model(const JsonCursor& node) {
+  node.allow_only({"shapes", "rotation", "friction", "restitution", "ccd", "sleeping",
+                   "velocity_iterations", "position_iterations"});
+  SceneModel model;
+  const JsonCursor shapes = node.field("shapes");
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    const JsonCursor kind = shapes.element(i);
+    switch (kind.choice<ShapeType>(
+        {{"circle", ShapeType::Circle}, {"box", ShapeType::Box}, {"polygon", ShapeType::Polygon}})) {
+      case ShapeType::Circle: model.circles = true; break;
+      case ShapeType::Box: model.boxes = true; break;
+      case ShapeType::Polygon: model.polygons = true; break;
+    }
+  }
+  if (auto field = node.optional_field("rotation")) model.rotation = field->boolean();
+  if (auto field = node.optional_field("friction")) model.friction = field->boolean();
+  if (auto field = node.optional_field("restitution")) model.restitution = field->boolean();
+  if (auto field = node.optional_field("ccd")) {
+    model.ccd = field->boolean();
+    if (model.ccd) field->fail("CCD is not implemented in the core yet; use false");
+  }
+  if (auto field = node.optional_field("sleeping")) model.sleeping = field->boolean();
+  if (auto field = node.optional_field("velocity_iterations")) {
+    model.velocity_iterations = static_cast<int>(field->integer(0, 1000));
+  }
+  if (auto field = node.optional_field("position_iterations")) {
+    model.position_iterations = static_cast<int>(field->integer(0, 1000));
+  }
+  return model;
+}
+
+Material read_material_object(const JsonCursor& node, const std::string& name) {
+  node.allow_only({"density", "restitution", "static_friction", "dynamic_friction"});
+  Material material;
+  material.name = name;
+  material.density = node.field("density").non_negative();
+  material.restitution = node.field("restitution").non_negative();
+  material.static_friction = node.field("static_friction").non_negative();
+  material.dynamic_friction = node.field("dynamic_friction").non_negative();
+  if (material.static_friction < material.dynamic_friction) {
+    node.field("static_friction").fail("must be >= dynamic_friction (" +
+                                       node.field("dynamic_friction").value().dump() + ")");
+  }
+  return material;
+}
+
+using MaterialTable = std::map<std::string, Material>;
+
+Material read_body_material(const JsonCursor& node, const MaterialTable& table) {
+  if (node.value().is_object()) return read_material_object(node, "custom");
+  const std::string name = node.string();
+  const auto found = table.find(name);
+  if (found == table.end()) {
+    std::string known;
+    for (const auto& [each, material] : table) known += (known.empty() ? "" : ", ") + each;
+    node.fail("unknown material \"" + name + "\" (known: " + known + ")");
+  }
+  return found->second;
+}
+
+/// The shape, and the offset from the body's given position to its centre of mass (non-zero
+/// only for polygons whose vertices are not centred on the origin), body-local.
+struct ReadShape {
+  Shape shape;
+  vec2 centroid{0.0f, 0.0f};
+};
+
+ReadShape read_shape(const JsonCursor& node) {
+  const JsonCursor type = node.field("type");
+  const std::string name = type.string();
+  ReadShape result;
+  if (name == "circle") {
+    node.allow_only({"type", "radius"});
+    result.shape = make_circle(node.field("radius").positive());
+  } else if (name == "box" || name == "oriented_box") {
+    node.allow_only({"type", "half_extents"});
+    const JsonCursor extents = node.field("half_extents");
+    const vec2 half = extents.vector();
+    if (!(half.x > 0.0f && half.y > 0.0f)) extents.fail("both half extents must be > 0");
+    result.shape = name == "box" ? make_box(half) : make_oriented_box(half);
+  } else if (name == "polygon") {
+    node.allow_only({"type", "vertices"});
+    const JsonCursor list = node.field("vertices");
+    const std::size_t count = list.size();
+    if (count < 3 || count > static_cast<std::size_t>(max_polygon_vertices)) {
+      list.fail("a polygon needs 3.." + std::to_string(max_polygon_vertices) + " vertices, got " +
+                std::to_string(count));
+    }
+    std::vector<vec2> vertices;
+    for (std::size_t i = 0; i < count; ++i) vertices.push_back(list.element(i).vector());
+    try {
+      result.shape = make_polygon(vertices.data(), static_cast<int>(count), &result.centroid);
+    } catch (const Error& error) {
+      list.fail(core_reason(error));
+    }
+  } else {
+    type.fail("unknown shape type \"" + name + "\" (expected one of: circle, box, oriented_box, polygon)");
+  }
+  return result;
+}
+
+BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
+  node.allow_only({"name", "type", "shape", "position", "angle", "velocity", "angular_velocity",
+                   "gravity_scale", "linear_damping", "angular_damping", "fixed_rotation", "bullet",
+                   "layers", "material"});
+  BodySpawn body;
+  BodyDef& def = body.def;
+  if (auto field = node.optional_field("type")) {
+    def.type = field->choice<BodyType>(
+        {{"dynamic", BodyType::Dynamic}, {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}});
+  }
+  const ReadShape shape = read_shape(node.field("shape"));
+  body.shape = shape.shape;
+  const vec2 origin = node.field("position").vector();
+  if (auto field = node.optional_field("angle")) def.angle = field->real();
+  def.position = origin + Rotation::from_angle(def.angle).rotate(shape.centroid);
+  if (auto field = node.optional_field("velocity")) def.linear_velocity = field->vector();
+  if (auto field = node.optional_field("angular_velocity")) def.angular_velocity = field->real();
+  if (auto field = node.optional_field("gravity_scale")) def.gravity_scale = field->real();
+  if (auto field = node.optional_field("linear_damping")) def.linear_damping = field->non_negative();
+  if (auto field = node.optional_field("angular_damping")) def.angular_damping = field->non_negative();
+  if (auto field = node.optional_field("fixed_rotation")) def.fixed_rotation = field->boolean();
+  if (auto field = node.optional_field("bullet")) def.is_bullet = field->boolean();
+  if (auto field = node.optional_field("layers")) {
+    def.collision_layers = static_cast<std::uint32_t>(field->integer(0, 0xFFFFFFFFll));
+  }
+  def.material = table.at("Wood");
+  if (auto field = node.optional_field("material")) def.material = read_body_material(*field, table);
+  if (def.type == BodyType::Dynamic && !(def.material.density > 0.0f)) {
+    node.field("material").fail("a dynamic body needs density > 0 (material " + def.material.name +
+                                " has density 0); make the body \"static\" or pick another material");
+  }
+  return body;
+}
+
+/// Body name -> creation index: the file's bodies, then spawned ones in step order.
+using BodyNames = std::map<std::string, int>;
+
+int read_body_reference(const JsonCursor& node, const BodyNames& names) {
+  if (node.value().is_string()) {
+    const std::string name = node.string();
+    const auto found = names.find(name);
+    if (found == names.end()) node.fail("no body is named \"" + name + "\" (at this point)");
+    return found->second;
+  }
+  return static_cast<int>(node.integer(0, 1000000));
+}
+
+CameraSpec read_camera(const JsonCursor& node) {
+  node.allow_only({"bounds", "center", "pixels_per_metre"});
+  CameraSpec camera;
+  if (auto bounds = node.optional_field("bounds")) {
+    if (node.has("center")) node.fail("give either \"bounds\" or \"center\" with \"pixels_per_metre\", not both");
+    if (bounds->size() != 2) bounds->fail("expected [[min x, min y], [max x, max y]]");
+    camera.mode = CameraSpec::Mode::FitBounds;
+    camera.bounds.lower = bounds->element(0).vector();
+    camera.bounds.upper = bounds->element(1).vector();
+    if (!(camera.bounds.upper.x > camera.bounds.lower.x && camera.bounds.upper.y > camera.bounds.lower.y)) {
+      bounds->fail("the second corner must be above and right of the first");
+    }
+  } else if (auto center = node.optional_field("center")) {
+    camera.mode = CameraSpec::Mode::Centered;
+    camera.center = center->vector();
+    camera.pixels_per_metre = node.field("pixels_per_metre").positive();
+  }
+  return camera;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& file) {
+  const nlohmann::json document = parse_json_document(text, file);
+  const JsonCursor root(document, file);
+  root.allow_only({"name", "description", "caption", "settings", "model", "materials", "bodies",
+                   "events", "camera", "run", "overlays"});
+
+  Scene scene;
+  scene.source = file;
+  scene.name = std::filesystem::path(file).stem().string();
+  if (auto field = root.optional_field("name")) {
+    scene.name = field->string();
+    if (scene.name.empty() || scene.name.find_first_of("/\\") != std::string::npos) {
+      field->fail("must be a non-empty file-name prefix (no '/')");
+    }
+  }
+  scene.description = "scene file " + file;
+  if (auto field = root.optional_field("description")) scene.description = field->string();
+  if (auto field = root.optional_field("caption")) scene.view.caption = field->string();
+  if (auto field = root.optional_field("settings")) scene.settings = read_settings(*field);
+
+  MaterialTable table;
+  for (const Material& material : materials::all()) table[material.name] = material;
+  if (auto field = root.optional_field("materials")) {
+    field->expect_object();
+    for (const auto& member : field->value().items()) {
+      const std::string& name = member.key();
+      if (table.count(name) != 0) field->field(name).fail("redefines the built-in material " + name);
+      table[name] = read_material_object(field->field(name), name);
+    }
+  }
+
+  std::vector<BodySpawn> bodies;
+  BodyNames names;
+  const JsonCursor body_list = root.field("bodies");
+  for (std::size_t i = 0; i < body_list.size(); ++i) {
+    const JsonCursor node = body_list.element(i);
+    bodies.push_back(read_body(node, table));
+    if (auto name = node.optional_field("name")) {
+      if (!names.emplace(name->string(), static_cast<int>(i)).second) {
+        name->fail("the name \"" + name->string() + "\" is used twice");
+      }
+    }
+  }
+
+  std::vector<BodySpawn> spawned;  // for model inference
+  if (auto events = root.optional_field("events")) {
+    // Spawned bodies get creation indices in step order (stable for equal steps), as the
+    // run creates them.
+    std::vector<std::pair<std::int64_t, std::size_t>> spawn_order;
+    for (std::size_t i = 0; i < events->size(); ++i) {
+      const JsonCursor node = events->element(i);
+      const std::int64_t step = node.field("step").integer(0, 100000000);
+      const std::string kind = node.field("type").string();
+      if (kind == "spawn") spawn_order.emplace_back(step, i);
+    }
+    std::stable_sort(spawn_order.begin(), spawn_order.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::map<std::size_t, int> spawn_index;  // event index -> creation index
+    for (std::size_t rank = 0; rank < spawn_order.size(); ++rank) {
+      spawn_index[spawn_order[rank].second] = static_cast<int>(bodies.size() + rank);
+    }
+    for (const auto& [event_index, creation_index] : spawn_index) {
+      const JsonCursor body = events->element(event_index).field("body");
+      if (auto name = body.optional_field("name")) {
+        if (!names.emplace(name->string(), creation_index).second) {
+          name->fail("the name \"" + name->string() + "\" is used twice");
+        }
+      }
+    }
+
+    for (std::size_t i = 0; i < events->size(); ++i) {
+      const JsonCursor node = events->element(i);
+      SceneEvent event;
+      event.origin = node.path();
+      event.step = node.field("step").integer(0, 100000000);
+      const JsonCursor type = node.field("type");
+      event.kind = type.choice<SceneEventKind>({{"impulse", SceneEventKind::Impulse},
+                                                {"spawn", SceneEventKind::Spawn},
+                                                {"remove", SceneEventKind::Remove},
+                                                {"button", SceneEventKind::Button}});
+      switch (event.kind) {
+        case SceneEventKind::Impulse:
+          node.allow_only({"step", "type", "body", "impulse", "point", "angular_impulse"});
+          event.body = read_body_reference(node.field("body"), names);
+          event.impulse = node.field("impulse").vector();
+          if (auto point = node.optional_field("point")) event.point = point->vector();
+          if (auto angular = node.optional_field("angular_impulse")) event.angular_impulse = angular->real();
+          break;
+        case SceneEventKind::Spawn:
+          node.allow_only({"step", "type", "body"});
+          event.spawn = read_body(node.field("body"), table);
+          spawned.push_back(event.spawn);
+          break;
+        case SceneEventKind::Remove:
+          node.allow_only({"step", "type", "body"});
+          event.body = read_body_reference(node.field("body"), names);
+          break;
+        case SceneEventKind::Button:
+          node.allow_only({"step", "type", "button", "pressed"});
+          event.button = node.field("button").string();
+          if (auto pressed = node.optional_field("pressed")) event.pressed = pressed->boolean();
+          break;
+      }
+      scene.events.push_back(std::move(event));
+    }
+  }
+
+  if (auto field = root.optional_field("model")) {
+    scene.model = read_model(*field);
+  } else {
+    // No declared model: the least one that covers the file's bodies.
+    scene.model.velocity_iterations = scene.settings.velocity_iterations;
+    scene.model.position_iterations = scene.settings.position_iterations;
+    scene.model.rotation = false;
+    auto cover = [&scene](const BodySpawn& body) {
+      scene.model.circles = scene.model.circles || body.shape.type == ShapeType::Circle;
+      scene.model.boxes = scene.model.boxes || body.shape.type == ShapeType::Box;
+      scene.model.polygons = scene.model.polygons || body.shape.type == ShapeType::Polygon;
+      const bool spins = body.def.type == BodyType::Dynamic && body.shape.type != ShapeType::Box &&
+                         !body.def.fixed_rotation;
+      scene.model.rotation = scene.model.rotation || spins;
+    };
+    for (const BodySpawn& body : bodies) cover(body);
+    for (const BodySpawn& body : spawned) cover(body);
+  }
+
+  if (auto field = root.optional_field("camera")) scene.view.camera = read_camera(*field);
+  if (auto run = root.optional_field("run")) {
+    run->allow_only({"steps", "frames"});
+    if (auto steps = run->optional_field("steps")) scene.view.steps = steps->integer(1, 10000000);
+    if (auto frames = run->optional_field("frames")) {
+      scene.view.frames = frames->string();
+      try {
+        render::FrameSelection::parse(scene.view.frames);
+      } catch (const render::RenderError& error) {
+        frames->fail(error.what());
+      }
+    }
+  }
+  if (auto overlays = root.optional_field("overlays")) {
+    for (std::size_t i = 0; i < overlays->size(); ++i) {
+      const JsonCursor entry = overlays->element(i);
+      try {
+        scene.view.draw.flags |= overlay_flags(entry.string());
+      } catch (const UsageError& error) {
+        entry.fail(error.what());
+      }
+    }
+  }
+
+  scene.build = [bodies](World& world, const Params&) {
+    for (const BodySpawn& body : bodies) world.create_body(body.def, body.shape);
+  };
+  return scene;
+}
+
+Scene load_scene_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw UsageError(path + ": cannot open the scene file (does it exist?)");
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw UsageError(path + ": cannot read the scene file");
+  return parse_scene(text.str(), path);
+}
+
+}  // namespace impulse2d::demos

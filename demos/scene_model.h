@@ -1,0 +1,54 @@
+#pragma once
+/// @file scene_model.h
+/// What a scene needs from the physics: "model no more than a scene needs". A scene declares
+/// its model; running it turns off everything else in `WorldSettings` and checks that the
+/// built world keeps to the declared shape kinds.
+
+#include "core/settings.h"
+#include "core/shape.h"
+
+#include <cstdint>
+#include <string>
+
+namespace impulse2d {
+class World;
+}
+
+namespace impulse2d::demos {
+
+/// The physics a scene uses.
+struct SceneModel {
+  bool circles = false;   ///< uses circle shapes
+  bool boxes = false;     ///< uses axis-aligned (never rotating) boxes
+  bool polygons = false;  ///< uses convex polygons (including oriented boxes)
+  bool rotation = true;     ///< bodies spin (angular terms solved and integrated)
+  bool friction = true;     ///< tangent impulses solved
+  bool restitution = true;  ///< contacts may bounce
+  /// Continuous collision for fast bodies. Not implemented in the core yet: a scene that
+  /// declares it cannot run.
+  bool ccd = false;
+  bool sleeping = false;        ///< bodies at rest are put to sleep
+  int velocity_iterations = 8;  ///< solver passes per step
+  int position_iterations = 3;  ///< position-correction passes per step (NGS only)
+
+  /// True when the model declares shapes of kind `type`.
+  bool allows(ShapeType type) const;
+};
+
+/// Sets the model switches of `settings`: rotation, friction, restitution, sleeping and the
+/// iteration counts. Throws `UsageError` when the model asks for CCD (not implemented) or has
+/// negative iteration counts.
+void apply_model(const SceneModel& model, WorldSettings& settings);
+
+/// Throws `UsageError` naming the scene, the first offending body slot and its shape kind when
+/// a living body of `world` has a shape kind the model does not declare.
+void verify_shape_kinds(const SceneModel& model, const World& world, const std::string& scene_name);
+
+/// "circle" / "box" / "polygon".
+const char* shape_kind_name(ShapeType type);
+
+/// One line: "shapes circle+box, rotation off, friction on, restitution on, ccd off,
+/// sleeping off, iterations 8/3".
+std::string describe_model(const SceneModel& model);
+
+}  // namespace impulse2d::demos

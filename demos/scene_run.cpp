@@ -1,0 +1,97 @@
+/// @file scene_run.cpp
+#include "demos/scene_run.h"
+
+#include "demos/usage_error.h"
+
+#include <algorithm>
+
+namespace impulse2d::demos {
+namespace {
+
+WorldSettings settings_with_model(const Scene& scene) {
+  WorldSettings settings = scene.settings;
+  apply_model(scene.model, settings);
+  return settings;
+}
+
+}  // namespace
+
+SceneRun::SceneRun(const Scene& scene, const Params& params)
+    : scene_(scene), params_(params), world_(settings_with_model(scene)) {
+  if (scene.build) scene.build(world_, params_);
+  verify_shape_kinds(scene.model, world_, scene.name);
+  if (scene.script) script_ = scene.script(params_);
+
+  for (const SceneEvent& event : scene.events) events_.push_back(&event);
+  std::stable_sort(events_.begin(), events_.end(),
+                   [](const SceneEvent* a, const SceneEvent* b) { return a->step < b->step; });
+
+  created_ = world_.body_ids();
+  const std::vector<std::string> buttons = script_ ? script_->buttons() : std::vector<std::string>{};
+  int bodies_so_far = static_cast<int>(created_.size());
+  for (const SceneEvent* event : events_) {
+    const bool names_body = event->kind == SceneEventKind::Impulse || event->kind == SceneEventKind::Remove;
+    if (names_body && (event->body < 0 || event->body >= bodies_so_far)) {
+      throw UsageError(scene.source + ": " + event->origin + ": body " + std::to_string(event->body) +
+                       " does not exist at step " + std::to_string(event->step) + " (" +
+                       std::to_string(bodies_so_far) + " bodies created by then)");
+    }
+    if (event->kind == SceneEventKind::Spawn) ++bodies_so_far;
+    if (event->kind == SceneEventKind::Button &&
+        std::find(buttons.begin(), buttons.end(), event->button) == buttons.end()) {
+      std::string known;
+      for (const std::string& name : buttons) known += (known.empty() ? "" : ", ") + name;
+      throw UsageError(scene.source + ": " + event->origin + ": scene " + scene.name +
+                       " has no button '" + event->button + "' (its buttons: " +
+                       (known.empty() ? std::string("none") : known) + ")");
+    }
+  }
+}
+
+BodyId SceneRun::event_body(const SceneEvent& event) const {
+  const BodyId id = created_[static_cast<std::size_t>(event.body)];
+  if (!world_.is_valid(id)) {
+    throw UsageError(scene_.source + ": " + event.origin + ": body " + std::to_string(event.body) +
+                     " was already removed before step " + std::to_string(event.step));
+  }
+  return id;
+}
+
+void SceneRun::apply_event(const SceneEvent& event) {
+  switch (event.kind) {
+    case SceneEventKind::Impulse: {
+      const BodyId id = event_body(event);
+      const vec2 point = event.point ? *event.point : world_.body(id).transform.position;
+      world_.apply_linear_impulse(id, event.impulse, point);
+      if (event.angular_impulse != 0.0f) world_.apply_angular_impulse(id, event.angular_impulse);
+      break;
+    }
+    case SceneEventKind::Spawn:
+      created_.push_back(world_.create_body(event.spawn.def, event.spawn.shape));
+      break;
+    case SceneEventKind::Remove:
+      world_.remove_body(event_body(event));
+      break;
+    case SceneEventKind::Button:
+      script_->button(world_, event.button, event.pressed);
+      break;
+  }
+}
+
+void SceneRun::step() {
+  const std::int64_t step = world_.step_count();
+  bool changed = false;
+  while (next_event_ < events_.size() && events_[next_event_]->step == step) {
+    apply_event(*events_[next_event_++]);
+    changed = true;
+  }
+  if (script_) {
+    script_->before_step(world_, step);
+    changed = true;
+  }
+  if (changed) verify_shape_kinds(scene_.model, world_, scene_.name);
+  world_.step();
+}
+
+}  // namespace impulse2d::demos
+

@@ -1,0 +1,51 @@
+#pragma once
+/// @file video_encoder.h
+/// Optional video output through an ffmpeg process (found on PATH at run time, never
+/// required to build). Frames are piped in as raw RGBA; the file appears only when ffmpeg
+/// finished successfully (temporary name + rename).
+
+#include "render/frame.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+namespace impulse2d::demos {
+
+/// The executable `name` on PATH, or nothing.
+std::optional<std::filesystem::path> find_on_path(const char* name);
+
+/// Encodes frames into an .mp4 (H.264) or .gif file.
+class VideoEncoder {
+ public:
+  /// Starts ffmpeg writing `output` from width x height frames at `frames_per_second`.
+  /// Throws `UsageError` for an extension other than .mp4 / .gif, and `std::runtime_error`
+  /// saying how to install ffmpeg when it is not on PATH, or when it cannot be started.
+  VideoEncoder(std::filesystem::path output, int width, int height, double frames_per_second);
+  /// Stops ffmpeg and removes the unfinished file unless `finish` succeeded.
+  ~VideoEncoder();
+  VideoEncoder(const VideoEncoder&) = delete;
+  VideoEncoder& operator=(const VideoEncoder&) = delete;
+
+  /// Sends one frame (must have the size given to the constructor).
+  void add(const render::Frame& frame);
+  /// Waits for ffmpeg and moves the file into place. Throws `std::runtime_error` when ffmpeg
+  /// failed (nothing is left behind).
+  void finish();
+
+ private:
+  void abandon();
+
+  std::filesystem::path output_;
+  std::filesystem::path temporary_;
+  int width_;
+  int height_;
+  std::FILE* pipe_ = nullptr;
+};
+
+/// Checks that `output` ends in .mp4 or .gif (throws `UsageError` otherwise) and that ffmpeg
+/// is on PATH (throws `std::runtime_error` with install instructions otherwise), before any
+/// work starts.
+void check_video_output(const std::filesystem::path& output);
+
+}  // namespace impulse2d::demos
