@@ -19,7 +19,11 @@ FrameRenderer::FrameRenderer(std::unique_ptr<OffscreenContext> context, const Pr
 }
 
 FrameRenderer::~FrameRenderer() {
-  context_->make_current();  // GL objects are deleted under their own context
+  try {
+    context_->make_current();  // GL objects are deleted under their own context
+  } catch (const RenderError&) {
+    return;  // no context to delete under; GL calls without one do nothing
+  }
   primitives_.reset();
 }
 
