@@ -41,7 +41,11 @@ void Progress::update(std::int64_t done) {
   std::fflush(stream_);
 }
 
+Progress::~Progress() { finish(); }
+
 void Progress::finish() {
+  if (finished_) return;
+  finished_ = true;
   if (terminal_ && drawn_) std::fputc('\n', stream_);
   std::fflush(stream_);
 }

@@ -16,9 +16,13 @@ class Progress {
   /// A report of `total` units labelled `label`, written to `stream`; `terminal` picks the
   /// bar (true) or plain lines (false).
   Progress(std::string label, std::int64_t total, std::FILE* stream, bool terminal);
+  /// Finishes the report if `finish` was not called (a job that failed half-way).
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
   /// Reports that `done` units are finished.
   void update(std::int64_t done);
-  /// Ends the report (the bar gets its final newline).
+  /// Ends the report (the bar gets its final newline). Later calls do nothing.
   void finish();
 
  private:
@@ -30,6 +34,7 @@ class Progress {
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_draw_;
   bool drawn_ = false;
+  bool finished_ = false;
 };
 
 /// True when `stream` is a terminal (isatty).

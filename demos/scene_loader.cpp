@@ -104,10 +104,7 @@ SceneModel read_model(const JsonCursor& node) {
   if (auto field = node.optional_field("rotation")) model.rotation = field->boolean();
   if (auto field = node.optional_field("friction")) model.friction = field->boolean();
   if (auto field = node.optional_field("restitution")) model.restitution = field->boolean();
-  if (auto field = node.optional_field("ccd")) {
-    model.ccd = field->boolean();
-    if (model.ccd) field->fail("CCD is not implemented in the core yet; use false");
-  }
+  if (auto field = node.optional_field("ccd")) model.ccd = field->boolean();
   if (auto field = node.optional_field("sleeping")) model.sleeping = field->boolean();
   if (auto field = node.optional_field("velocity_iterations")) {
     model.velocity_iterations = static_cast<int>(field->integer(0, 1000));
@@ -371,6 +368,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     scene.model.velocity_iterations = scene.settings.velocity_iterations;
     scene.model.position_iterations = scene.settings.position_iterations;
     scene.model.rotation = false;
+    scene.model.ccd = false;
     auto cover = [&scene](const BodySpawn& body) {
       scene.model.circles = scene.model.circles || body.shape.type == ShapeType::Circle;
       scene.model.boxes = scene.model.boxes || body.shape.type == ShapeType::Box;
@@ -378,6 +376,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
       const bool spins = body.def.type == BodyType::Dynamic && body.shape.type != ShapeType::Box &&
                          !body.def.fixed_rotation;
       scene.model.rotation = scene.model.rotation || spins;
+      scene.model.ccd = scene.model.ccd || body.def.is_bullet;
     };
     for (const BodySpawn& body : bodies) cover(body);
     for (const BodySpawn& body : spawned) cover(body);

@@ -28,15 +28,13 @@ bool SceneModel::allows(ShapeType type) const {
 }
 
 void apply_model(const SceneModel& model, WorldSettings& settings) {
-  if (model.ccd) {
-    throw UsageError("model: ccd is not implemented in the core yet; declare \"ccd\": false");
-  }
   if (model.velocity_iterations < 0 || model.position_iterations < 0) {
     throw UsageError("model: iteration counts must be >= 0");
   }
   settings.enable_rotation = model.rotation;
   settings.enable_friction = model.friction;
   settings.enable_restitution = model.restitution;
+  settings.enable_continuous = model.ccd;
   settings.enable_sleeping = model.sleeping;
   settings.velocity_iterations = model.velocity_iterations;
   settings.position_iterations = model.position_iterations;

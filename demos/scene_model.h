@@ -24,9 +24,8 @@ struct SceneModel {
   bool rotation = true;     ///< bodies spin (angular terms solved and integrated)
   bool friction = true;     ///< tangent impulses solved
   bool restitution = true;  ///< contacts may bounce
-  /// Continuous collision for fast bodies. Not implemented in the core yet: a scene that
-  /// declares it cannot run.
-  bool ccd = false;
+  bool ccd = false;  ///< bodies marked `is_bullet` are swept so they cannot tunnel
+
   bool sleeping = false;        ///< bodies at rest are put to sleep
   int velocity_iterations = 8;  ///< solver passes per step
   int position_iterations = 3;  ///< position-correction passes per step (NGS only)
@@ -35,9 +34,9 @@ struct SceneModel {
   bool allows(ShapeType type) const;
 };
 
-/// Sets the model switches of `settings`: rotation, friction, restitution, sleeping and the
-/// iteration counts. Throws `UsageError` when the model asks for CCD (not implemented) or has
-/// negative iteration counts.
+/// Sets the model switches of `settings`: rotation, friction, restitution, continuous
+/// collision, sleeping and the iteration counts. Throws `UsageError` for negative iteration
+/// counts.
 void apply_model(const SceneModel& model, WorldSettings& settings);
 
 /// Throws `UsageError` naming the scene, the first offending body slot and its shape kind when

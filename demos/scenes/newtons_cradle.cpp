@@ -48,6 +48,7 @@ Scene newtons_cradle() {
   scene.view.camera.bounds = make_bounds({-5.0f, -2.5f}, {12.0f, 2.5f});
   scene.view.steps = 180;
   scene.view.draw.flags = draw_shapes | draw_velocities;
+  scene.view.draw.velocity_scale = 0.4f;
   scene.build = build;
   return scene;
 }

@@ -1,0 +1,11 @@
+# Demos: scene registry, built-in scenes, JSON scene files, frames, trace (in-process), and the
+# impulse2d command line run as a subprocess (bad input, exit codes, no partial files).
+impulse2d_add_test(test_demos
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_scenes.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_scene_files.cpp
+  LIBS impulse2d_demos)
+impulse2d_add_test(test_cli
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cli.cpp
+  LIBS impulse2d_demos)
+target_compile_definitions(test_cli PRIVATE IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>")
+add_dependencies(test_cli impulse2d)

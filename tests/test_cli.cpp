@@ -1,0 +1,253 @@
+// The impulse2d program run as a subprocess: commands, exit codes (0 / 1 runtime / 2 usage),
+// messages for bad input, and no partial files left behind. `trace` of a JSON projectile
+// matches the exact answer up to semi-implicit Euler's known error g t dt / 2.
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+void write_file(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+/// A fresh, empty directory for one test.
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("impulse2d_test_cli_" + std::string(info->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// Runs `impulse2d <arguments>` in the test directory; `environment` is prefixed (VAR=x).
+  Result run(const std::string& arguments, const std::string& environment = "") const {
+    const std::string command = "cd '" + dir_.string() + "' && " + environment + " '" IMPULSE2D_CLI "' " +
+                                arguments + " > stdout.txt 2> stderr.txt";
+    Result result;
+    const int status = std::system(command.c_str());
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_file(dir_ / "stdout.txt");
+    result.err = read_file(dir_ / "stderr.txt");
+    fs::remove(dir_ / "stdout.txt");
+    fs::remove(dir_ / "stderr.txt");
+    return result;
+  }
+
+  /// Every file under the test directory.
+  std::vector<std::string> files() const {
+    std::vector<std::string> found;
+    for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
+      if (entry.is_regular_file()) found.push_back(fs::relative(entry.path(), dir_).string());
+    }
+    return found;
+  }
+
+  fs::path dir_;
+};
+
+const char* const projectile = R"({
+  "settings": {"gravity": [0, -9.81], "time_step": 0.01},
+  "model": {"shapes": ["circle"], "rotation": false, "friction": false, "restitution": false},
+  "bodies": [{"name": "ball", "shape": {"type": "circle", "radius": 0.25},
+              "position": [0, 100], "velocity": [3, 12], "material": "Rock"}]
+})";
+
+}  // namespace
+
+TEST_F(CliTest, ListShowsEveryBuiltInSceneWithItsModel) {
+  const Result result = run("list");
+  EXPECT_EQ(result.status, 0) << result.err;
+  for (const char* name : {"tutorial", "materials", "friction_ramp", "shape_pairs", "pyramid", "stack",
+                           "newtons_cradle", "bullet", "ball_pit", "random_polygons"}) {
+    EXPECT_NE(result.out.find(std::string(name) + "\n"), std::string::npos) << name;
+  }
+  EXPECT_NE(result.out.find("model: shapes box, rotation off"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("--param rows=20"), std::string::npos);
+}
+
+TEST_F(CliTest, HelpWorksOnEveryCommand) {
+  for (const char* command : {"", "list ", "render ", "trace ", "sheet "}) {
+    const Result result = run(std::string(command) + "--help");
+    EXPECT_EQ(result.status, 0) << command << result.err;
+    EXPECT_NE(result.out.find("Usage"), std::string::npos) << command;
+  }
+}
+
+TEST_F(CliTest, RendersAFrameSequenceAndPrintsWhereItWent) {
+  const Result result =
+      run("render pyramid --param rows=4 --frames 0:20:10 --size 160x120 --overlays normals,penetration --out frames");
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_NE(result.out.find("wrote 3 frames of pyramid to frames/"), std::string::npos) << result.out;
+  for (const char* name : {"frames/pyramid_00000.png", "frames/pyramid_00010.png", "frames/pyramid_00020.png"}) {
+    const std::string png = read_file(dir_ / name);
+    ASSERT_GT(png.size(), 8u) << name;
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+  }
+  EXPECT_EQ(files().size(), 3u);
+  // Not a terminal: plain progress lines on stderr.
+  EXPECT_NE(result.err.find("pyramid: 3/3 frames"), std::string::npos) << result.err;
+}
+
+TEST_F(CliTest, WithoutArgumentsRendersTheDefaultDemoIntoOut) {
+  const Result result = run("");
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_NE(result.out.find("of tutorial to out/"), std::string::npos) << result.out;
+  EXPECT_TRUE(fs::exists(dir_ / "out/tutorial_00000.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "out/tutorial_00900.png"));
+}
+
+TEST_F(CliTest, ContactSheetIsOnePng) {
+  const Result result = run("sheet pyramid --param rows=3 --count 3 --tile 160x120 --out sheet/p.png");
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_EQ(read_file(dir_ / "sheet/p.png").substr(1, 3), "PNG");
+  EXPECT_NE(result.out.find("contact sheet of 3 frames"), std::string::npos) << result.out;
+}
+
+TEST_F(CliTest, TraceOfAJsonProjectileMatchesTheExactAnswer) {
+  write_file(dir_ / "projectile.json", projectile);
+  const int steps = 200;
+  const Result result = run("trace projectile.json --steps " + std::to_string(steps) + " --every 10");
+  ASSERT_EQ(result.status, 0) << result.err;
+  std::istringstream lines(result.out);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "step,t,body,x,y,angle,vx,vy,omega,contacts,energy");
+  const double g = 9.81, dt = 0.01f, y0 = 100.0, v0x = 3.0, v0y = 12.0;
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    std::vector<double> v;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) v.push_back(std::stod(field));
+    ASSERT_EQ(v.size(), 11u) << line;
+    const int n = static_cast<int>(v[0]);
+    const double t = n * dt;
+    // Semi-implicit Euler: y_n = exact - g t dt / 2; rounding: at most 2^-23 |y| per step.
+    const double exact = y0 + v0y * t - g * t * t / 2;
+    const double bound = (n + 1) * 130.0 * std::ldexp(1.0, -23);
+    EXPECT_NEAR(v[4] - exact, -g * t * dt / 2, bound) << "step " << n;
+    EXPECT_NEAR(v[3], v0x * t, (n + 1) * 10.0 * std::ldexp(1.0, -23)) << "step " << n;
+    EXPECT_NEAR(v[7], v0y - g * t, (n + 1) * 20.0 * std::ldexp(1.0, -23)) << "step " << n;
+    EXPECT_NEAR(v[1], t, 1e-6);
+    ++rows;
+  }
+  EXPECT_EQ(rows, steps / 10 + 1);
+}
+
+TEST_F(CliTest, TraceAsJsonIsAValidDocument) {
+  write_file(dir_ / "projectile.json", projectile);
+  const Result result = run("trace projectile.json --steps 3 --format json");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const nlohmann::json trace = nlohmann::json::parse(result.out);
+  ASSERT_EQ(trace["samples"].size(), 4u);
+  EXPECT_EQ(trace["samples"][3]["step"], 3);
+  EXPECT_EQ(trace["samples"][3]["bodies"][0]["vx"], 3.0);
+}
+
+struct BadInput {
+  const char* name;
+  const char* scene_text;  // written to bad.json when not empty
+  const char* arguments;
+  int status;
+  const char* message;
+};
+
+class CliBadInput : public CliTest, public ::testing::WithParamInterface<BadInput> {};
+
+TEST_P(CliBadInput, GivesOneClearMessageANonZeroStatusAndNoFiles) {
+  const BadInput& input = GetParam();
+  if (*input.scene_text != '\0') write_file(dir_ / "bad.json", input.scene_text);
+  write_file(dir_ / "blocker", "a file where a directory is asked for");
+  // No ffmpeg on this PATH, whether or not the machine has one.
+  const Result result = run(input.arguments, "PATH=/nonexistent");
+  EXPECT_EQ(result.status, input.status) << result.err;
+  EXPECT_NE(result.err.find(input.message), std::string::npos) << "stderr: " << result.err;
+  std::vector<std::string> left = files();
+  left.erase(std::remove(left.begin(), left.end(), "bad.json"), left.end());
+  left.erase(std::remove(left.begin(), left.end(), "blocker"), left.end());
+  EXPECT_TRUE(left.empty()) << "left behind: " << left.front();
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "output directory left behind";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    ::testing::Values(
+        BadInput{"UnknownScene", "", "render no_such_scene", 2, "unknown scene 'no_such_scene'"},
+        BadInput{"MissingFile", "", "render missing.json", 2, "missing.json: cannot open the scene file"},
+        BadInput{"MalformedJson", R"({"bodies": [})", "render bad.json", 2, "bad.json: bodies[0]: malformed JSON at line 1"},
+        BadInput{"WrongType", R"({"bodies": [{"shape": {"type": "circle", "radius": [1]}, "position": [0, 0]}]})",
+                 "render bad.json", 2, "bad.json: bodies[0].shape.radius: expected a number, got an array"},
+        BadInput{"MissingField", R"({"bodies": [{"position": [0, 0]}]})", "render bad.json", 2,
+                 "bad.json: bodies[0]: missing field \"shape\""},
+        BadInput{"NegativeRadius", R"({"bodies": [{"shape": {"type": "circle", "radius": -0.5}, "position": [0, 0]}]})",
+                 "render bad.json", 2, "bad.json: bodies[0].shape.radius: must be > 0, got -0.5"},
+        BadInput{"NegativeDensity",
+                 R"({"materials": {"Foam": {"density": -1, "restitution": 0, "static_friction": 0, "dynamic_friction": 0}},
+                     "bodies": []})",
+                 "render bad.json", 2, "bad.json: materials.Foam.density: must be >= 0, got -1"},
+        BadInput{"NotFinite", R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, -Infinity]}]})",
+                 "trace bad.json --steps 1", 2, "bad.json: bodies[0].position[1]: malformed JSON"},
+        BadInput{"Concave",
+                 R"({"bodies": [{"shape": {"type": "polygon", "vertices": [[0,0],[2,0],[1,0.2],[1,2]]}, "position": [0, 0]}]})",
+                 "render bad.json", 2, "bad.json: bodies[0].shape.vertices: the outline is not convex"},
+        BadInput{"Degenerate",
+                 R"({"bodies": [{"shape": {"type": "polygon", "vertices": [[0,0],[1,1],[2,2]]}, "position": [0, 0]}]})",
+                 "render bad.json", 2, "bad.json: bodies[0].shape.vertices: "},
+        BadInput{"UnknownMaterial",
+                 R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Jelly"}]})",
+                 "render bad.json", 2, "bad.json: bodies[0].material: unknown material \"Jelly\""},
+        BadInput{"UnknownParameter", "", "render pyramid --param cols=3", 2, "unknown parameter 'cols'"},
+        BadInput{"ParameterOutOfRange", "", "render pyramid --param rows=1000", 2, "parameter rows: 1000 is outside 1..60"},
+        BadInput{"FramesAfterTheRun", "", "render bullet --frames 0:500", 2, "ends at step 500, after the end of the run"},
+        BadInput{"FramesSelectNothing", "", "render bullet --frames 200:", 2, "selects no step of the run"},
+        BadInput{"BadSize", "", "render bullet --size 10x10", 2, "--size '10x10'"},
+        BadInput{"BadOverlay", "", "render bullet --overlays sparkles", 2, "unknown overlay 'sparkles'"},
+        BadInput{"BadTheme", "", "render bullet --theme neon", 2, "--theme 'neon'"},
+        BadInput{"UnknownOption", "", "render bullet --colour red", 2, "--colour"},
+        BadInput{"TraceWithoutSteps", "", "trace bullet", 2, "--steps"},
+        BadInput{"BadVideoExtension", "", "render bullet --video clip.avi", 2, "must end in .mp4 or .gif"},
+        BadInput{"VideoWithoutFfmpeg", "", "render bullet --frames 0:2 --video clip.mp4", 1,
+                 "sudo apt-get install ffmpeg"},
+        BadInput{"UnwritableOutput", "", "render bullet --frames 0:2 --out blocker/frames", 1, "blocker"},
+        BadInput{"FailsHalfWay",
+                 R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, 0]}],
+                     "events": [{"step": 5, "type": "remove", "body": 0}, {"step": 8, "type": "remove", "body": 0}],
+                     "run": {"steps": 20, "frames": "::1"}})",
+                 "render bad.json --size 64x64", 2, "bad.json: events[1]: body 0 was already removed before step 8"}),
+    [](const auto& test) { return std::string(test.param.name); });
+
+TEST_F(CliTest, AFailedRunKeepsFilesThatExistedBefore) {
+  fs::create_directories(dir_ / "out");
+  write_file(dir_ / "out/keep.txt", "mine");
+  write_file(dir_ / "bad.json", R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, 0]}],
+      "events": [{"step": 3, "type": "remove", "body": 0}, {"step": 4, "type": "remove", "body": 0}]})");
+  const Result result = run("render bad.json --size 64x64 --frames 0:10");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_EQ(files(), (std::vector<std::string>{"bad.json", "out/keep.txt"}));
+}

@@ -1,0 +1,198 @@
+// JSON scene files: a complete scene loads with every field; each kind of bad input gives one
+// message naming the file, the JSON path and the reason.
+#include "core/world.h"
+#include "demos/scene_loader.h"
+#include "demos/scene_run.h"
+#include "demos/usage_error.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+using namespace impulse2d;
+using namespace impulse2d::demos;
+
+namespace {
+
+/// A valid scene whose first body is `body` (JSON text of one body).
+std::string scene_with_body(const std::string& body) {
+  return R"({"bodies": [)" + body + R"(, {"type": "static", "shape": {"type": "box", "half_extents": [5, 0.5]},
+             "position": [0, -1], "material": "Static"}]})";
+}
+
+/// The message `parse_scene` throws for `text`, or "" when it loads.
+std::string load_error(const std::string& text) {
+  try {
+    parse_scene(text, "bad.json");
+  } catch (const UsageError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(SceneFile, LoadsEveryPartOfTheSchema) {
+  const char* const text = R"({
+    "name": "everything", "description": "all fields", "caption": "a caption",
+    "settings": {"gravity": [0, -10], "time_step": 0.01, "substeps": 2, "solver": "per_iteration",
+                 "warm_starting": false, "block_solver": false, "position_correction": "linear",
+                 "correction_percent": 0.5, "slop": 0.02, "max_correction": 0.1,
+                 "restitution_threshold": 0.5, "friction_mixing": "root_sum_squares",
+                 "restitution_mixing": "min", "integrator": "explicit_euler",
+                 "broad_phase": "brute_force", "sleep_linear_speed": 0.1, "sleep_angular_speed": 0.1,
+                 "time_to_sleep": 1, "max_linear_speed": 100},
+    "model": {"shapes": ["circle", "box", "polygon"], "rotation": true, "friction": true,
+              "restitution": true, "ccd": true, "sleeping": true,
+              "velocity_iterations": 6, "position_iterations": 2},
+    "materials": {"Ice": {"density": 0.9, "restitution": 0.05, "static_friction": 0.1, "dynamic_friction": 0.03}},
+    "bodies": [
+      {"name": "floor", "type": "static", "shape": {"type": "box", "half_extents": [10, 1]},
+       "position": [0, -1], "material": "Static", "layers": 3},
+      {"name": "ball", "shape": {"type": "circle", "radius": 0.5}, "position": [0, 2],
+       "velocity": [1, 0], "angular_velocity": 2, "gravity_scale": 0.5, "linear_damping": 0.1,
+       "angular_damping": 0.1, "bullet": true, "material": "Ice"},
+      {"shape": {"type": "polygon", "vertices": [[0, 0], [2, 0], [1, 1]]}, "position": [3, 1],
+       "angle": 0.1, "fixed_rotation": true,
+       "material": {"density": 1, "restitution": 0.1, "static_friction": 0.5, "dynamic_friction": 0.4}},
+      {"type": "kinematic", "shape": {"type": "oriented_box", "half_extents": [0.5, 0.2]},
+       "position": [-3, 3], "velocity": [0.5, 0]}
+    ],
+    "events": [
+      {"step": 5, "type": "impulse", "body": "ball", "impulse": [1, 2], "point": [0, 2.1], "angular_impulse": 0.1},
+      {"step": 2, "type": "spawn", "body": {"name": "late", "shape": {"type": "circle", "radius": 0.2}, "position": [1, 4]}},
+      {"step": 8, "type": "remove", "body": "late"},
+      {"step": 9, "type": "remove", "body": 2}
+    ],
+    "camera": {"center": [0, 1], "pixels_per_metre": 30},
+    "run": {"steps": 50, "frames": "0:50:5"},
+    "overlays": ["normals", "impulses"]
+  })";
+  const Scene scene = parse_scene(text, "everything.json");
+  EXPECT_EQ(scene.name, "everything");
+  EXPECT_EQ(scene.settings.substeps, 2);
+  EXPECT_EQ(scene.settings.solver, SolverMethod::PerIteration);
+  EXPECT_EQ(scene.settings.broad_phase, BroadPhaseMethod::BruteForce);
+  EXPECT_TRUE(scene.model.ccd);
+  EXPECT_EQ(scene.model.velocity_iterations, 6);
+  EXPECT_EQ(scene.view.steps, 50);
+  EXPECT_EQ(scene.view.camera.mode, CameraSpec::Mode::Centered);
+  EXPECT_NE(scene.view.draw.flags & draw_contact_normals, 0u);
+  ASSERT_EQ(scene.events.size(), 4u);
+
+  SceneRun run(scene, Params{});
+  EXPECT_EQ(run.world().body_count(), 4);
+  for (int i = 0; i < 10; ++i) run.step();
+  EXPECT_EQ(run.world().body_count(), 3);  // spawned one at 2, removed it at 8 and body 2 at 9
+}
+
+TEST(SceneFile, PolygonVerticesAreAroundTheGivenPosition) {
+  const Scene scene = parse_scene(scene_with_body(R"({"shape": {"type": "polygon",
+      "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}, "position": [10, 20]})"), "square.json");
+  SceneRun run(scene, Params{});
+  EXPECT_EQ(run.world().body(run.world().body_ids()[0]).transform.position, vec2(11.0f, 21.0f));
+}
+
+TEST(SceneFile, WithoutAModelTheLeastOneCoveringTheBodiesIsInferred) {
+  const Scene scene = parse_scene(scene_with_body(R"({"shape": {"type": "box", "half_extents": [1, 1]}, "position": [0, 3]})"),
+                                  "boxes.json");
+  EXPECT_TRUE(scene.model.boxes);
+  EXPECT_FALSE(scene.model.circles);
+  EXPECT_FALSE(scene.model.polygons);
+  EXPECT_FALSE(scene.model.rotation);  // boxes never rotate
+  EXPECT_FALSE(scene.model.ccd);
+}
+
+struct BadFile {
+  const char* name;
+  std::string text;
+  const char* message;  // expected inside "bad.json: <message>"
+};
+
+class BadSceneFile : public ::testing::TestWithParam<BadFile> {};
+
+TEST_P(BadSceneFile, NamesFilePathAndReason) {
+  const std::string message = load_error(GetParam().text);
+  EXPECT_NE(message.find(std::string("bad.json: ") + GetParam().message), std::string::npos)
+      << "got: " << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadSceneFile,
+    ::testing::Values(
+        BadFile{"Malformed", R"({"bodies": [ {"shape": } ]})", "bodies[0].shape: malformed JSON at line 1, column"},
+        BadFile{"NaN", scene_with_body(R"({"shape": {"type": "circle", "radius": NaN}, "position": [0, 0]})"),
+                "bodies[0].shape.radius: malformed JSON"},
+        BadFile{"Infinite", scene_with_body(R"({"shape": {"type": "circle", "radius": 1e999}, "position": [0, 0]})"),
+                "bodies[0].shape.radius: malformed JSON at line 1, column"},
+        BadFile{"TooLargeForFloat", scene_with_body(R"({"shape": {"type": "circle", "radius": 1e200}, "position": [0, 0]})"),
+                "bodies[0].shape.radius: must fit a float"},
+        BadFile{"WrongType", scene_with_body(R"({"shape": {"type": "circle", "radius": "big"}, "position": [0, 0]})"),
+                "bodies[0].shape.radius: expected a number, got string \"big\""},
+        BadFile{"MissingField", scene_with_body(R"({"shape": {"type": "circle", "radius": 1}})"),
+                "bodies[0]: missing field \"position\""},
+        BadFile{"MissingBodies", R"({"name": "empty"})", "(root): missing field \"bodies\""},
+        BadFile{"NegativeRadius", scene_with_body(R"({"shape": {"type": "circle", "radius": -1}, "position": [0, 0]})"),
+                "bodies[0].shape.radius: must be > 0, got -1"},
+        BadFile{"NegativeDensity",
+                scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0],
+                    "material": {"density": -2, "restitution": 0, "static_friction": 0, "dynamic_friction": 0}})"),
+                "bodies[0].material.density: must be >= 0, got -2"},
+        BadFile{"ConcavePolygon",
+                scene_with_body(R"({"shape": {"type": "polygon", "vertices": [[0,0],[4,0],[1,1],[0,4]]}, "position": [0, 0]})"),
+                "bodies[0].shape.vertices: the outline is not convex"},
+        BadFile{"DegeneratePolygon",
+                scene_with_body(R"({"shape": {"type": "polygon", "vertices": [[0,0],[1,0],[2,0]]}, "position": [0, 0]})"),
+                "bodies[0].shape.vertices: "},
+        BadFile{"TwoVertices",
+                scene_with_body(R"({"shape": {"type": "polygon", "vertices": [[0,0],[1,0]]}, "position": [0, 0]})"),
+                "bodies[0].shape.vertices: a polygon needs 3..8 vertices, got 2"},
+        BadFile{"UnknownMaterial",
+                scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Cheese"})"),
+                "bodies[0].material: unknown material \"Cheese\""},
+        BadFile{"DynamicWithoutMass",
+                scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Static"})"),
+                "bodies[0].material: a dynamic body needs density > 0"},
+        BadFile{"UnknownShape", scene_with_body(R"({"shape": {"type": "capsule"}, "position": [0, 0]})"),
+                "bodies[0].shape.type: unknown shape type \"capsule\""},
+        BadFile{"Misspelt", scene_with_body(R"({"shape": {"type": "circle", "raduis": 1}, "position": [0, 0]})"),
+                "bodies[0].shape: unknown field \"raduis\""},
+        BadFile{"BadVector", scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0]})"),
+                "bodies[0].position: expected [x, y]"},
+        BadFile{"BadSolver", R"({"settings": {"solver": "magic"}, "bodies": []})",
+                "settings.solver: unknown value \"magic\" (expected one of: accumulated, per_iteration)"},
+        BadFile{"BadTimeStep", R"({"settings": {"time_step": 0}, "bodies": []})", "settings.time_step: must be > 0"},
+        BadFile{"UnknownEventBody",
+                R"({"bodies": [], "events": [{"step": 1, "type": "remove", "body": "ghost"}]})",
+                "events[0].body: no body is named \"ghost\""},
+        BadFile{"NegativeStep",
+                R"({"bodies": [], "events": [{"step": -1, "type": "button", "button": "jump"}]})",
+                "events[0].step: must be in 0..100000000, got -1"},
+        BadFile{"BadFrames", R"({"bodies": [], "run": {"frames": "9:3"}})", "run.frames: "},
+        BadFile{"BadOverlay", R"({"bodies": [], "overlays": ["sparkles"]})", "overlays[0]: unknown overlay 'sparkles'"},
+        BadFile{"BadCamera", R"({"bodies": [], "camera": {"bounds": [[1, 1], [0, 0]]}})",
+                "camera.bounds: the second corner must be above and right of the first"}),
+    [](const auto& test) { return std::string(test.param.name); });
+
+TEST(SceneFile, ButtonsTheSceneDoesNotHaveAreRejectedBeforeTheRun) {
+  const Scene scene =
+      parse_scene(R"({"bodies": [], "events": [{"step": 3, "type": "button", "button": "jump"}]})", "buttons.json");
+  try {
+    SceneRun run(scene, Params{});
+    FAIL() << "expected UsageError";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("buttons.json: events[0]: scene buttons has no button 'jump'"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(SceneFile, AnUnreadableFileIsNamed) {
+  try {
+    load_scene_file("/nonexistent/scene.json");
+    FAIL() << "expected UsageError";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("/nonexistent/scene.json: cannot open"), std::string::npos);
+  }
+}
