@@ -285,19 +285,6 @@ bool World::set_contact_enabled(BodyId a, BodyId b, bool enabled) {
   return false;
 }
 
-bool World::set_contact_enabled(BodyId a, BodyId b, bool enabled) {
-  checked_body(a, "World::set_contact_enabled");
-  checked_body(b, "World::set_contact_enabled");
-  if (b.index < a.index) std::swap(a, b);
-  for (Contact& contact : contacts_) {
-    if (contact.body_a == a && contact.body_b == b) {
-      contact.enabled = enabled;  // the next step's narrow phase carries it over
-      return true;
-    }
-  }
-  return false;
-}
-
 // ---- the step ---------------------------------------------------------------------------
 
 void World::step() {

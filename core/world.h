@@ -116,10 +116,6 @@ class World {
   /// pass through each other until they separate (e.g. dropping through a one-way platform).
   /// Returns false when the pair is not touching. Throws `Error` on a stale handle.
   bool set_contact_enabled(BodyId a, BodyId b, bool enabled);
-  /// Overrides the kept decision of the touching pair (a, b), in either order: false lets them
-  /// pass through each other until they separate (e.g. dropping through a one-way platform).
-  /// Returns false when the pair is not touching. Throws `Error` on a stale handle.
-  bool set_contact_enabled(BodyId a, BodyId b, bool enabled);
 
   /// Counts and timings of the last step.
   const StepStats& stats() const { return stats_; }
