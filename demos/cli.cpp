@@ -1,15 +1,14 @@
 /// @file cli.cpp
 #include "demos/cli.h"
 
+#include <CLI/CLI.hpp>
+#include <csignal>
+#include <iostream>
+
 #include "demos/commands.h"
 #include "demos/overlays.h"
 #include "demos/scene_registry.h"
 #include "demos/usage_error.h"
-
-#include <CLI/CLI.hpp>
-
-#include <csignal>
-#include <iostream>
 
 namespace impulse2d::demos {
 namespace {
@@ -24,8 +23,8 @@ std::string overlay_help() {
 }
 
 void add_scene_options(CLI::App& command, SceneArguments& arguments, bool scene_required) {
-  CLI::Option* scene = command.add_option("scene", arguments.scene,
-                                          "built-in scene name (see `impulse2d list`) or a .json scene file");
+  CLI::Option* scene = command.add_option(
+      "scene", arguments.scene, "built-in scene name (see `impulse2d list`) or a .json scene file");
   if (scene_required) scene->required();
   command.add_option("--param,-p", arguments.params, "scene parameter key=value (repeatable)");
 }
@@ -33,48 +32,61 @@ void add_scene_options(CLI::App& command, SceneArguments& arguments, bool scene_
 }  // namespace
 
 int run_cli(int argc, char** argv) {
-  CLI::App app{"impulse2d: a 2D impulse-based rigid-body engine; renders scenes to PNG frames.\n"
-               "Without a command it renders the default demo (" + default_scene().name +
-                   ") into out/.",
-               "impulse2d"};
+  CLI::App app{
+      "impulse2d: a 2D impulse-based rigid-body engine; renders scenes to PNG frames.\n"
+      "Without a command it renders the default demo (" +
+          default_scene().name + ") into out/.",
+      "impulse2d"};
   app.require_subcommand(0, 1);
   app.footer("Exit status: 0 success, 1 runtime failure, 2 bad usage or invalid scene file.");
 
-  CLI::App* list = app.add_subcommand("list", "list the built-in scenes with their parameters and models");
+  CLI::App* list =
+      app.add_subcommand("list", "list the built-in scenes with their parameters and models");
 
   RenderArguments render;
-  CLI::App* render_command = app.add_subcommand("render", "render a scene into a PNG frame sequence");
+  CLI::App* render_command =
+      app.add_subcommand("render", "render a scene into a PNG frame sequence");
   add_scene_options(*render_command, render.scene, true);
-  render_command->add_option("--frames,-f", render.frames,
-                             "steps to draw: A:B[:k] ranges, comma-separated (frame n = world after n steps)");
-  render_command->add_option("--steps", render.scene.steps, "length of the run in steps (default: the scene's)");
-  render_command->add_option("--size,-s", render.size, "frame size WxH in pixels")->capture_default_str();
+  render_command->add_option(
+      "--frames,-f", render.frames,
+      "steps to draw: A:B[:k] ranges, comma-separated (frame n = world after n steps)");
+  render_command->add_option("--steps", render.scene.steps,
+                             "length of the run in steps (default: the scene's)");
+  render_command->add_option("--size,-s", render.size, "frame size WxH in pixels")
+      ->capture_default_str();
   render_command->add_option("--overlays,-o", render.overlays, overlay_help());
   render_command->add_option("--theme", render.theme, "light or dark")->capture_default_str();
   render_command->add_option("--out,-d", render.out, "output directory")->capture_default_str();
-  render_command->add_option("--video", render.video, "also write a video (.mp4 or .gif; needs ffmpeg)");
-  render_command->add_option("--threads", render.threads, "PNG encoding threads")->capture_default_str();
+  render_command->add_option("--video", render.video,
+                             "also write a video (.mp4 or .gif; needs ffmpeg)");
+  render_command->add_option("--threads", render.threads, "PNG encoding threads")
+      ->capture_default_str();
 
   TraceArguments trace;
   CLI::App* trace_command = app.add_subcommand(
       "trace", "print per-step body states (step,t,body,x,y,angle,vx,vy,omega,contacts,energy)");
   add_scene_options(*trace_command, trace.scene, true);
   trace_command->add_option("--steps,-n", trace.scene.steps, "steps to simulate")->required();
-  trace_command->add_option("--every,-k", trace.every, "sample every k-th step")->capture_default_str();
+  trace_command->add_option("--every,-k", trace.every, "sample every k-th step")
+      ->capture_default_str();
   trace_command->add_option("--format", trace.format, "csv or json")->capture_default_str();
 
   SheetArguments sheet;
-  CLI::App* sheet_command =
-      app.add_subcommand("sheet", "tile chosen frames of a run into one labelled PNG (a contact sheet)");
+  CLI::App* sheet_command = app.add_subcommand(
+      "sheet", "tile chosen frames of a run into one labelled PNG (a contact sheet)");
   add_scene_options(*sheet_command, sheet.scene, false);
-  sheet_command->add_option("--frames,-f", sheet.frames, "steps to show: A:B[:k] ranges (default: --count spread)");
-  sheet_command->add_option("--count,-c", sheet.count, "frames spread evenly over the run")->capture_default_str();
-  sheet_command->add_option("--steps", sheet.scene.steps, "length of the run in steps (default: the scene's)");
+  sheet_command->add_option("--frames,-f", sheet.frames,
+                            "steps to show: A:B[:k] ranges (default: --count spread)");
+  sheet_command->add_option("--count,-c", sheet.count, "frames spread evenly over the run")
+      ->capture_default_str();
+  sheet_command->add_option("--steps", sheet.scene.steps,
+                            "length of the run in steps (default: the scene's)");
   sheet_command->add_option("--columns", sheet.columns, "tiles per row")->capture_default_str();
   sheet_command->add_option("--tile", sheet.tile, "tile size WxH in pixels")->capture_default_str();
   sheet_command->add_option("--overlays,-o", sheet.overlays, overlay_help());
   sheet_command->add_option("--theme", sheet.theme, "light or dark")->capture_default_str();
-  sheet_command->add_option("--out", sheet.out, "PNG file (default: out/contact_sheet_<scene>.png)");
+  sheet_command->add_option("--out", sheet.out,
+                            "PNG file (default: out/contact_sheet_<scene>.png)");
 
   try {
     app.parse(argc, argv);

@@ -1,6 +1,9 @@
 /// @file commands.cpp
 #include "demos/commands.h"
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "demos/contact_sheet.h"
 #include "demos/frame_sequence.h"
 #include "demos/overlays.h"
@@ -10,9 +13,6 @@
 #include "demos/trace_writer.h"
 #include "demos/usage_error.h"
 #include "demos/video_encoder.h"
-
-#include <cstdio>
-#include <cstdlib>
 
 namespace impulse2d::demos {
 namespace {
@@ -47,7 +47,8 @@ std::pair<int, int> parse_size(const std::string& text, const std::string& optio
     char* end = nullptr;
     const long value = std::strtol(part.c_str(), &end, 10);
     if (part.empty() || *end != '\0' || value < 16 || value > 8192) {
-      throw UsageError(option + " '" + text + "': expected WxH with each side 16..8192 pixels, e.g. 800x600");
+      throw UsageError(option + " '" + text +
+                       "': expected WxH with each side 16..8192 pixels, e.g. 800x600");
     }
     return static_cast<int>(value);
   };
@@ -70,8 +71,8 @@ void list_scenes(std::ostream& out) {
 
 void render_scene(const RenderArguments& arguments, std::ostream& out) {
   const ResolvedScene resolved = resolve(arguments.scene);
-  const FramePlan plan = plan_frames(arguments.frames ? *arguments.frames : resolved.scene.view.frames,
-                                     resolved.steps);
+  const FramePlan plan = plan_frames(
+      arguments.frames ? *arguments.frames : resolved.scene.view.frames, resolved.steps);
   FrameSequenceOptions options;
   std::tie(options.width, options.height) = parse_size(arguments.size, "--size");
   options.draw = resolved.scene.view.draw;
@@ -125,9 +126,11 @@ void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
   if (arguments.overlays) options.draw.flags = parse_overlays(*arguments.overlays);
   options.theme = theme_of(arguments.theme);
   const std::filesystem::path output =
-      arguments.out ? std::filesystem::path(*arguments.out)
-                    : std::filesystem::path("out") / ("contact_sheet_" + resolved.scene.name + ".png");
-  if (output.extension() != ".png") throw UsageError("--out " + output.string() + ": must end in .png");
+      arguments.out
+          ? std::filesystem::path(*arguments.out)
+          : std::filesystem::path("out") / ("contact_sheet_" + resolved.scene.name + ".png");
+  if (output.extension() != ".png")
+    throw UsageError("--out " + output.string() + ": must end in .png");
 
   SceneRun run(resolved.scene, resolved.params);
   const auto [width, height] = write_contact_sheet(run, plan, options, output);

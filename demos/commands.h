@@ -14,40 +14,40 @@ namespace impulse2d::demos {
 
 /// Arguments shared by every command that runs a scene.
 struct SceneArguments {
-  std::string scene;                ///< built-in name or path to a .json file
-  std::vector<std::string> params;  ///< "key=value" overrides
+  std::string scene;                  ///< built-in name or path to a .json file
+  std::vector<std::string> params;    ///< "key=value" overrides
   std::optional<std::int64_t> steps;  ///< run length override
 };
 
 /// `impulse2d render`.
 struct RenderArguments {
-  SceneArguments scene;               ///< what to run
-  std::optional<std::string> frames;  ///< `A:B:k` ranges; the scene's default when absent
-  std::string size = "800x600";       ///< WxH pixels
+  SceneArguments scene;                 ///< what to run
+  std::optional<std::string> frames;    ///< `A:B:k` ranges; the scene's default when absent
+  std::string size = "800x600";         ///< WxH pixels
   std::optional<std::string> overlays;  ///< overlay list; the scene's default when absent
-  std::string theme = "light";        ///< light or dark
-  std::string out = "out";            ///< directory
-  std::optional<std::string> video;   ///< .mp4 / .gif path
-  int threads = 2;                    ///< PNG encoding threads
+  std::string theme = "light";          ///< light or dark
+  std::string out = "out";              ///< directory
+  std::optional<std::string> video;     ///< .mp4 / .gif path
+  int threads = 2;                      ///< PNG encoding threads
 };
 
 /// `impulse2d trace`.
 struct TraceArguments {
-  SceneArguments scene;         ///< what to run (steps is required)
-  std::int64_t every = 1;       ///< sample every k-th step
-  std::string format = "csv";   ///< csv or json
+  SceneArguments scene;        ///< what to run (steps is required)
+  std::int64_t every = 1;      ///< sample every k-th step
+  std::string format = "csv";  ///< csv or json
 };
 
 /// `impulse2d sheet`.
 struct SheetArguments {
-  SceneArguments scene;               ///< what to run
-  std::optional<std::string> frames;  ///< `A:B:k` ranges; `count` evenly spread when absent
-  int count = 8;                      ///< frames when `frames` is absent
-  int columns = 4;                    ///< tiles per row
-  std::string tile = "400x300";       ///< WxH pixels per tile
+  SceneArguments scene;                 ///< what to run
+  std::optional<std::string> frames;    ///< `A:B:k` ranges; `count` evenly spread when absent
+  int count = 8;                        ///< frames when `frames` is absent
+  int columns = 4;                      ///< tiles per row
+  std::string tile = "400x300";         ///< WxH pixels per tile
   std::optional<std::string> overlays;  ///< overlay list; the scene's default when absent
-  std::string theme = "light";        ///< light or dark
-  std::optional<std::string> out;     ///< PNG path; out/contact_sheet_<scene>.png when absent
+  std::string theme = "light";          ///< light or dark
+  std::optional<std::string> out;       ///< PNG path; out/contact_sheet_<scene>.png when absent
 };
 
 /// Prints every built-in scene with its description, parameters and model.

@@ -1,17 +1,17 @@
 /// @file contact_sheet.cpp
 #include "demos/contact_sheet.h"
 
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
 #include "demos/frame_sequence.h"
 #include "demos/output_guard.h"
 #include "demos/scene_camera.h"
 #include "demos/usage_error.h"
 #include "render/frame_renderer.h"
 #include "render/png_encoder.h"
-
-#include <cstdio>
-#include <cstring>
-#include <string>
-#include <vector>
 
 namespace impulse2d::demos {
 namespace {
@@ -23,9 +23,11 @@ constexpr int text_scale = 2;     // magnification of the 7-pixel font in labels
 /// Copies `tile` into `sheet` with its top-left corner at (x, y).
 void paste(const render::Frame& tile, render::Frame& sheet, int x, int y) {
   for (int row = 0; row < tile.height; ++row) {
-    std::memcpy(&sheet.rgba[(static_cast<std::size_t>(y + row) * static_cast<std::size_t>(sheet.width) +
-                             static_cast<std::size_t>(x)) * 4],
-                &tile.rgba[static_cast<std::size_t>(row) * tile.stride()], tile.stride());
+    std::memcpy(
+        &sheet.rgba[(static_cast<std::size_t>(y + row) * static_cast<std::size_t>(sheet.width) +
+                     static_cast<std::size_t>(x)) *
+                    4],
+        &tile.rgba[static_cast<std::size_t>(row) * tile.stride()], tile.stride());
   }
 }
 
@@ -71,17 +73,22 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
   render::FrameRenderer sheet_renderer(width, height);
   const render::Camera sheet_camera = render::Camera::centered({0.0f, 0.0f}, 1.0f, width, height);
   render::Frame sheet;
-  sheet_renderer.render_primitives(sheet_camera, palette.background, [&](render::PrimitiveRenderer& draw) {
-    draw.draw_screen_rect({0.0f, 0.0f}, {static_cast<float>(width), static_cast<float>(title_height)},
-                          palette.hud_panel);
-    draw.draw_screen_text({8.0f, 8.0f}, scene_title(run.scene()), palette.hud_text, text_scale);
-    for (int i = 0; i < count; ++i) {
-      const float x = static_cast<float>((i % columns) * options.tile_width);
-      const float y = static_cast<float>(title_height + (i / columns) * cell_height + options.tile_height);
-      draw.draw_screen_text({x + 8.0f, y + 4.0f}, labels[static_cast<std::size_t>(i)], palette.hud_text,
-                            text_scale);
-    }
-  }, sheet);
+  sheet_renderer.render_primitives(
+      sheet_camera, palette.background,
+      [&](render::PrimitiveRenderer& draw) {
+        draw.draw_screen_rect({0.0f, 0.0f},
+                              {static_cast<float>(width), static_cast<float>(title_height)},
+                              palette.hud_panel);
+        draw.draw_screen_text({8.0f, 8.0f}, scene_title(run.scene()), palette.hud_text, text_scale);
+        for (int i = 0; i < count; ++i) {
+          const float x = static_cast<float>((i % columns) * options.tile_width);
+          const float y =
+              static_cast<float>(title_height + (i / columns) * cell_height + options.tile_height);
+          draw.draw_screen_text({x + 8.0f, y + 4.0f}, labels[static_cast<std::size_t>(i)],
+                                palette.hud_text, text_scale);
+        }
+      },
+      sheet);
   for (int i = 0; i < count; ++i) {
     paste(frames[static_cast<std::size_t>(i)], sheet, (i % columns) * options.tile_width,
           title_height + (i / columns) * cell_height);

@@ -3,22 +3,22 @@
 /// A contact sheet: chosen frames of a run tiled into one PNG, each with a label strip
 /// (step and simulated time) and a title strip over the whole sheet.
 
+#include <cstdint>
+#include <filesystem>
+
 #include "core/debug_draw.h"
 #include "demos/frame_plan.h"
 #include "demos/scene_run.h"
 #include "render/palette.h"
 
-#include <cstdint>
-#include <filesystem>
-
 namespace impulse2d::demos {
 
 /// Layout and looks of a contact sheet.
 struct ContactSheetOptions {
-  int tile_width = 400;    ///< pixels per frame
-  int tile_height = 300;   ///< pixels per frame
-  int columns = 4;         ///< tiles per row (>= 1)
-  DebugDrawOptions draw;   ///< overlay flags and arrow scales
+  int tile_width = 400;                        ///< pixels per frame
+  int tile_height = 300;                       ///< pixels per frame
+  int columns = 4;                             ///< tiles per row (>= 1)
+  DebugDrawOptions draw;                       ///< overlay flags and arrow scales
   render::Theme theme = render::Theme::Light;  ///< colours
 };
 

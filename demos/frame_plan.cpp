@@ -13,7 +13,8 @@ FramePlan plan_frames(const std::string& spec, std::int64_t run_steps) {
   } catch (const render::RenderError& error) {
     throw UsageError(std::string("--frames: ") + error.what());
   }
-  const std::string run = "the run (steps 0.." + std::to_string(run_steps) + "; change it with --steps)";
+  const std::string run =
+      "the run (steps 0.." + std::to_string(run_steps) + "; change it with --steps)";
   if (selection.last() && *selection.last() > run_steps) {
     throw UsageError("--frames '" + spec + "' ends at step " + std::to_string(*selection.last()) +
                      ", after the end of " + run);

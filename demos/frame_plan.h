@@ -2,18 +2,18 @@
 /// @file frame_plan.h
 /// Which steps of a run become frames, checked against the run's length.
 
-#include "render/frame_selection.h"
-
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "render/frame_selection.h"
 
 namespace impulse2d::demos {
 
 /// The frames of one run: frame n is the world after n steps.
 struct FramePlan {
-  std::int64_t steps = 0;             ///< steps to simulate (the last frame's step)
-  std::vector<std::int64_t> frames;   ///< selected steps, ascending, at least one
+  std::int64_t steps = 0;            ///< steps to simulate (the last frame's step)
+  std::vector<std::int64_t> frames;  ///< selected steps, ascending, at least one
 };
 
 /// Parses `spec` (`A:B:k` ranges, see `render::FrameSelection`) and keeps the steps in

@@ -1,15 +1,15 @@
 /// @file frame_sequence.cpp
 #include "demos/frame_sequence.h"
 
+#include <chrono>
+#include <cmath>
+#include <memory>
+
 #include "demos/output_guard.h"
 #include "demos/scene_camera.h"
 #include "demos/video_encoder.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
-
-#include <chrono>
-#include <cmath>
-#include <memory>
 
 namespace impulse2d::demos {
 namespace {
@@ -48,8 +48,8 @@ FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
   }
 
   render::FrameRenderer renderer(options.width, options.height);
-  const render::Camera camera = scene_camera(run.scene().view.camera, run.world(), options.width,
-                                             options.height);
+  const render::Camera camera =
+      scene_camera(run.scene().view.camera, run.world(), options.width, options.height);
   render::FrameOptions frame_options;
   frame_options.draw = options.draw;
   frame_options.theme = options.theme;

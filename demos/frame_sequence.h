@@ -3,27 +3,27 @@
 /// Renders a scene run into a PNG frame sequence (`dir/<scene>_<step:05>.png`), optionally
 /// also a video, with all-or-nothing output.
 
-#include "core/debug_draw.h"
-#include "demos/frame_plan.h"
-#include "demos/scene_run.h"
-#include "render/palette.h"
-
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
 
+#include "core/debug_draw.h"
+#include "demos/frame_plan.h"
+#include "demos/scene_run.h"
+#include "render/palette.h"
+
 namespace impulse2d::demos {
 
 /// How frames look and where they go.
 struct FrameSequenceOptions {
-  int width = 800;                     ///< pixels
-  int height = 600;                    ///< pixels
-  DebugDrawOptions draw;               ///< overlay flags and arrow scales
+  int width = 800;                             ///< pixels
+  int height = 600;                            ///< pixels
+  DebugDrawOptions draw;                       ///< overlay flags and arrow scales
   render::Theme theme = render::Theme::Light;  ///< colours
   std::filesystem::path directory = "out";     ///< created if missing
   std::optional<std::filesystem::path> video;  ///< also encode an .mp4 / .gif here
-  int writer_threads = 2;              ///< PNG encoding threads
+  int writer_threads = 2;                      ///< PNG encoding threads
 };
 
 /// What was written.

@@ -1,16 +1,17 @@
 /// @file json_cursor.cpp
 #include "demos/json_cursor.h"
 
-#include "demos/usage_error.h"
-
 #include <cmath>
 #include <limits>
+
+#include "demos/usage_error.h"
 
 namespace impulse2d::demos {
 
 using nlohmann::json;
 
-JsonCursor::JsonCursor(const json& value, std::string file) : JsonCursor(value, std::move(file), "") {}
+JsonCursor::JsonCursor(const json& value, std::string file)
+    : JsonCursor(value, std::move(file), "") {}
 
 JsonCursor::JsonCursor(const json& value, std::string file, std::string path)
     : value_(&value), file_(std::move(file)), path_(std::move(path)) {}
@@ -119,15 +120,22 @@ vec2 JsonCursor::vector() const {
 
 std::string describe_json_value(const json& value) {
   switch (value.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::object: return "an object";
-    case json::value_t::array: return "an array of " + std::to_string(value.size());
-    case json::value_t::string: return "string " + value.dump();
-    case json::value_t::boolean: return value.dump();
+    case json::value_t::null:
+      return "null";
+    case json::value_t::object:
+      return "an object";
+    case json::value_t::array:
+      return "an array of " + std::to_string(value.size());
+    case json::value_t::string:
+      return "string " + value.dump();
+    case json::value_t::boolean:
+      return value.dump();
     case json::value_t::number_integer:
     case json::value_t::number_unsigned:
-    case json::value_t::number_float: return "number " + value.dump();
-    default: return "a value of another kind";
+    case json::value_t::number_float:
+      return "number " + value.dump();
+    default:
+      return "a value of another kind";
   }
 }
 
@@ -230,8 +238,8 @@ json parse_json_document(const std::string& text, const std::string& file) {
   PathTracker tracker;
   if (!json::sax_parse(text, &tracker)) {
     // nlohmann counts the byte that stopped it, 1-based; locate it in lines and columns.
-    const std::size_t stop = std::min(tracker.error_position() == 0 ? 0 : tracker.error_position() - 1,
-                                      text.size());
+    const std::size_t stop =
+        std::min(tracker.error_position() == 0 ? 0 : tracker.error_position() - 1, text.size());
     std::size_t line = 1, column = 1;
     for (std::size_t i = 0; i < stop; ++i) {
       if (text[i] == '\n') {

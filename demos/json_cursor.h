@@ -4,16 +4,15 @@
 /// (e.g. `bodies[3].shape.radius`), and every failure throws `UsageError` with
 /// "<file>: <path>: <reason>".
 
-#include "core/math.h"
-
-#include <nlohmann/json.hpp>
-
 #include <cstdint>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "core/math.h"
 
 namespace impulse2d::demos {
 

@@ -21,8 +21,9 @@ const std::vector<OverlayName>& overlay_names() {
       {"sleeping", draw_sleeping, "sleeping bodies dimmed"},
       {"broadphase", draw_broad_phase, "broad-phase pairs"},
       {"ids", draw_body_ids, "body indices"},
-      {"contacts", draw_contact_points | draw_contact_normals | draw_normal_impulses |
-                       draw_friction_impulses | draw_penetration,
+      {"contacts",
+       draw_contact_points | draw_contact_normals | draw_normal_impulses | draw_friction_impulses |
+           draw_penetration,
        "points, normals, impulses and penetration"},
       {"all", draw_all, "everything"},
   };
@@ -34,7 +35,8 @@ std::uint32_t overlay_flags(const std::string& name) {
     if (name == each.name) return each.flags | draw_shapes;
   }
   std::string known;
-  for (const OverlayName& each : overlay_names()) known += (known.empty() ? "" : ", ") + std::string(each.name);
+  for (const OverlayName& each : overlay_names())
+    known += (known.empty() ? "" : ", ") + std::string(each.name);
   throw UsageError("unknown overlay '" + name + "' (known: " + known + ")");
 }
 

@@ -11,8 +11,8 @@ namespace impulse2d::demos {
 
 /// One parameter a scene accepts.
 struct ParamSpec {
-  std::string name;         ///< as written on the command line, e.g. "rows"
-  std::string description;  ///< one line, with units where physical
+  std::string name;            ///< as written on the command line, e.g. "rows"
+  std::string description;     ///< one line, with units where physical
   double default_value = 0.0;  ///< used when not overridden
   double minimum = 0.0;        ///< smallest accepted value (inclusive)
   double maximum = 0.0;        ///< largest accepted value (inclusive)

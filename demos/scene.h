@@ -3,6 +3,12 @@
 /// A scene: how to build a world, what physics it needs, how to look at it, and what happens
 /// while it runs. Built-in scenes are C++ (demos/scenes/*.cpp); scene files are JSON.
 
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "core/debug_draw.h"
 #include "core/settings.h"
 #include "core/shape.h"
@@ -10,12 +16,6 @@
 #include "demos/scene_event.h"
 #include "demos/scene_model.h"
 #include "demos/step_script.h"
-
-#include <cstdint>
-#include <functional>
-#include <memory>
-#include <string>
-#include <vector>
 
 namespace impulse2d {
 class World;
@@ -39,12 +39,12 @@ struct CameraSpec {
 
 /// The defaults of a rendered run; the command line overrides each.
 struct SceneView {
-  CameraSpec camera;             ///< where the camera looks
-  std::int64_t steps = 600;      ///< length of a run, steps
-  std::string frames = "::2";    ///< which steps become frames (`FrameSelection` syntax)
+  CameraSpec camera;           ///< where the camera looks
+  std::int64_t steps = 600;    ///< length of a run, steps
+  std::string frames = "::2";  ///< which steps become frames (`FrameSelection` syntax)
   /// Overlays on by default (`flags`) and their arrow scales; the theme sets the palette.
   DebugDrawOptions draw;
-  std::string caption;           ///< shown in the HUD after the scene name (may be empty)
+  std::string caption;  ///< shown in the HUD after the scene name (may be empty)
 };
 
 /// Makes the per-step script of one run from the run's parameters.
@@ -52,17 +52,17 @@ using ScriptFactory = std::function<std::unique_ptr<StepScript>(const Params&)>;
 
 /// Everything about one scene.
 struct Scene {
-  std::string name;         ///< registry key and file-name prefix, e.g. "pyramid"
-  std::string description;  ///< one line for `impulse2d list`
+  std::string name;               ///< registry key and file-name prefix, e.g. "pyramid"
+  std::string description;        ///< one line for `impulse2d list`
   std::vector<ParamSpec> params;  ///< named parameters with defaults and ranges
-  SceneModel model;         ///< the physics it needs (applied to `settings` when run)
-  WorldSettings settings;   ///< method choices: gravity, time step, solver, mixing rules, ...
-  SceneView view;           ///< camera, run length, frames, overlays
+  SceneModel model;               ///< the physics it needs (applied to `settings` when run)
+  WorldSettings settings;         ///< method choices: gravity, time step, solver, mixing rules, ...
+  SceneView view;                 ///< camera, run length, frames, overlays
   /// Creates the scene's bodies in a world that already has `settings` and the model applied.
   std::function<void(World&, const Params&)> build;
-  ScriptFactory script;              ///< optional per-step behaviour (empty: none)
-  std::vector<SceneEvent> events;    ///< scripted events, any order (sorted by the run)
-  std::string source = "built-in";   ///< "built-in" or the scene file's path
+  ScriptFactory script;             ///< optional per-step behaviour (empty: none)
+  std::vector<SceneEvent> events;   ///< scripted events, any order (sorted by the run)
+  std::string source = "built-in";  ///< "built-in" or the scene file's path
 };
 
 }  // namespace impulse2d::demos

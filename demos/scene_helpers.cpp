@@ -1,10 +1,10 @@
 /// @file scene_helpers.cpp
 #include "demos/scene_helpers.h"
 
-#include "core/world.h"
-
 #include <array>
 #include <cmath>
+
+#include "core/world.h"
 
 namespace impulse2d::demos {
 

@@ -2,11 +2,11 @@
 /// @file scene_helpers.h
 /// Small building blocks shared by the built-in scene builders.
 
+#include <cstdint>
+
 #include "core/body.h"
 #include "core/shape.h"
 #include "demos/scene_random.h"
-
-#include <cstdint>
 
 namespace impulse2d {
 class World;

@@ -1,6 +1,12 @@
 /// @file scene_loader.cpp
 #include "demos/scene_loader.h"
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
 #include "core/error.h"
 #include "core/material.h"
 #include "core/world.h"
@@ -9,12 +15,6 @@
 #include "demos/usage_error.h"
 #include "render/frame_selection.h"
 #include "render/render_error.h"
-
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
 
 namespace impulse2d::demos {
 namespace {
@@ -35,10 +35,12 @@ WorldSettings read_settings(const JsonCursor& node) {
   WorldSettings settings;
   if (auto field = node.optional_field("gravity")) settings.gravity = field->vector();
   if (auto field = node.optional_field("time_step")) settings.time_step = field->positive();
-  if (auto field = node.optional_field("substeps")) settings.substeps = static_cast<int>(field->integer(1, 64));
+  if (auto field = node.optional_field("substeps"))
+    settings.substeps = static_cast<int>(field->integer(1, 64));
   if (auto field = node.optional_field("solver")) {
-    settings.solver = field->choice<SolverMethod>({{"accumulated", SolverMethod::AccumulatedImpulses},
-                                                   {"per_iteration", SolverMethod::PerIteration}});
+    settings.solver =
+        field->choice<SolverMethod>({{"accumulated", SolverMethod::AccumulatedImpulses},
+                                     {"per_iteration", SolverMethod::PerIteration}});
   }
   if (auto field = node.optional_field("warm_starting")) settings.warm_starting = field->boolean();
   if (auto field = node.optional_field("block_solver")) settings.block_solver = field->boolean();
@@ -48,37 +50,47 @@ WorldSettings read_settings(const JsonCursor& node) {
          {"linear", PositionCorrection::LinearProjection},
          {"nonlinear_gauss_seidel", PositionCorrection::NonlinearGaussSeidel}});
   }
-  if (auto field = node.optional_field("correction_percent")) settings.correction_percent = field->non_negative();
+  if (auto field = node.optional_field("correction_percent"))
+    settings.correction_percent = field->non_negative();
   if (auto field = node.optional_field("slop")) settings.slop = field->non_negative();
-  if (auto field = node.optional_field("max_correction")) settings.max_correction = field->positive();
+  if (auto field = node.optional_field("max_correction"))
+    settings.max_correction = field->positive();
   if (auto field = node.optional_field("restitution_threshold")) {
     settings.restitution_threshold = field->non_negative();
   }
   if (auto field = node.optional_field("friction_mixing")) {
-    settings.friction_mixing = field->choice<FrictionMixing>({{"root_sum_squares", FrictionMixing::RootSumSquares},
-                                                              {"geometric_mean", FrictionMixing::GeometricMean},
-                                                              {"product", FrictionMixing::Product},
-                                                              {"average", FrictionMixing::Average},
-                                                              {"min", FrictionMixing::Minimum},
-                                                              {"max", FrictionMixing::Maximum}});
+    settings.friction_mixing =
+        field->choice<FrictionMixing>({{"root_sum_squares", FrictionMixing::RootSumSquares},
+                                       {"geometric_mean", FrictionMixing::GeometricMean},
+                                       {"product", FrictionMixing::Product},
+                                       {"average", FrictionMixing::Average},
+                                       {"min", FrictionMixing::Minimum},
+                                       {"max", FrictionMixing::Maximum}});
   }
   if (auto field = node.optional_field("restitution_mixing")) {
-    settings.restitution_mixing = field->choice<RestitutionMixing>({{"min", RestitutionMixing::Minimum},
-                                                                    {"max", RestitutionMixing::Maximum},
-                                                                    {"average", RestitutionMixing::Average}});
+    settings.restitution_mixing =
+        field->choice<RestitutionMixing>({{"min", RestitutionMixing::Minimum},
+                                          {"max", RestitutionMixing::Maximum},
+                                          {"average", RestitutionMixing::Average}});
   }
   if (auto field = node.optional_field("integrator")) {
-    settings.integrator = field->choice<Integrator>({{"semi_implicit_euler", Integrator::SemiImplicitEuler},
-                                                     {"explicit_euler", Integrator::ExplicitEuler}});
+    settings.integrator =
+        field->choice<Integrator>({{"semi_implicit_euler", Integrator::SemiImplicitEuler},
+                                   {"explicit_euler", Integrator::ExplicitEuler}});
   }
   if (auto field = node.optional_field("broad_phase")) {
-    settings.broad_phase = field->choice<BroadPhaseMethod>({{"sort_and_sweep", BroadPhaseMethod::SortAndSweep},
-                                                            {"brute_force", BroadPhaseMethod::BruteForce}});
+    settings.broad_phase =
+        field->choice<BroadPhaseMethod>({{"sort_and_sweep", BroadPhaseMethod::SortAndSweep},
+                                         {"brute_force", BroadPhaseMethod::BruteForce}});
   }
-  if (auto field = node.optional_field("sleep_linear_speed")) settings.sleep_linear_speed = field->non_negative();
-  if (auto field = node.optional_field("sleep_angular_speed")) settings.sleep_angular_speed = field->non_negative();
-  if (auto field = node.optional_field("time_to_sleep")) settings.time_to_sleep = field->non_negative();
-  if (auto field = node.optional_field("max_linear_speed")) settings.max_linear_speed = field->positive();
+  if (auto field = node.optional_field("sleep_linear_speed"))
+    settings.sleep_linear_speed = field->non_negative();
+  if (auto field = node.optional_field("sleep_angular_speed"))
+    settings.sleep_angular_speed = field->non_negative();
+  if (auto field = node.optional_field("time_to_sleep"))
+    settings.time_to_sleep = field->non_negative();
+  if (auto field = node.optional_field("max_linear_speed"))
+    settings.max_linear_speed = field->positive();
   try {
     validate_settings(settings);
   } catch (const Error& error) {
@@ -94,11 +106,18 @@ SceneModel read_model(const JsonCursor& node) {
   const JsonCursor shapes = node.field("shapes");
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     const JsonCursor kind = shapes.element(i);
-    switch (kind.choice<ShapeType>(
-        {{"circle", ShapeType::Circle}, {"box", ShapeType::Box}, {"polygon", ShapeType::Polygon}})) {
-      case ShapeType::Circle: model.circles = true; break;
-      case ShapeType::Box: model.boxes = true; break;
-      case ShapeType::Polygon: model.polygons = true; break;
+    switch (kind.choice<ShapeType>({{"circle", ShapeType::Circle},
+                                    {"box", ShapeType::Box},
+                                    {"polygon", ShapeType::Polygon}})) {
+      case ShapeType::Circle:
+        model.circles = true;
+        break;
+      case ShapeType::Box:
+        model.boxes = true;
+        break;
+      case ShapeType::Polygon:
+        model.polygons = true;
+        break;
     }
   }
   if (auto field = node.optional_field("rotation")) model.rotation = field->boolean();
@@ -124,8 +143,9 @@ Material read_material_object(const JsonCursor& node, const std::string& name) {
   material.static_friction = node.field("static_friction").non_negative();
   material.dynamic_friction = node.field("dynamic_friction").non_negative();
   if (material.static_friction < material.dynamic_friction) {
-    node.field("static_friction").fail("must be >= dynamic_friction (" +
-                                       node.field("dynamic_friction").value().dump() + ")");
+    node.field("static_friction")
+        .fail("must be >= dynamic_friction (" + node.field("dynamic_friction").value().dump() +
+              ")");
   }
   return material;
 }
@@ -180,7 +200,8 @@ ReadShape read_shape(const JsonCursor& node) {
       list.fail(core_reason(error));
     }
   } else {
-    type.fail("unknown shape type \"" + name + "\" (expected one of: circle, box, oriented_box, polygon)");
+    type.fail("unknown shape type \"" + name +
+              "\" (expected one of: circle, box, oriented_box, polygon)");
   }
   return result;
 }
@@ -192,8 +213,9 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   BodySpawn body;
   BodyDef& def = body.def;
   if (auto field = node.optional_field("type")) {
-    def.type = field->choice<BodyType>(
-        {{"dynamic", BodyType::Dynamic}, {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}});
+    def.type = field->choice<BodyType>({{"dynamic", BodyType::Dynamic},
+                                        {"static", BodyType::Static},
+                                        {"kinematic", BodyType::Kinematic}});
   }
   const ReadShape shape = read_shape(node.field("shape"));
   body.shape = shape.shape;
@@ -203,18 +225,22 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   if (auto field = node.optional_field("velocity")) def.linear_velocity = field->vector();
   if (auto field = node.optional_field("angular_velocity")) def.angular_velocity = field->real();
   if (auto field = node.optional_field("gravity_scale")) def.gravity_scale = field->real();
-  if (auto field = node.optional_field("linear_damping")) def.linear_damping = field->non_negative();
-  if (auto field = node.optional_field("angular_damping")) def.angular_damping = field->non_negative();
+  if (auto field = node.optional_field("linear_damping"))
+    def.linear_damping = field->non_negative();
+  if (auto field = node.optional_field("angular_damping"))
+    def.angular_damping = field->non_negative();
   if (auto field = node.optional_field("fixed_rotation")) def.fixed_rotation = field->boolean();
   if (auto field = node.optional_field("bullet")) def.is_bullet = field->boolean();
   if (auto field = node.optional_field("layers")) {
     def.collision_layers = static_cast<std::uint32_t>(field->integer(0, 0xFFFFFFFFll));
   }
   def.material = table.at("Wood");
-  if (auto field = node.optional_field("material")) def.material = read_body_material(*field, table);
+  if (auto field = node.optional_field("material"))
+    def.material = read_body_material(*field, table);
   if (def.type == BodyType::Dynamic && !(def.material.density > 0.0f)) {
-    node.field("material").fail("a dynamic body needs density > 0 (material " + def.material.name +
-                                " has density 0); make the body \"static\" or pick another material");
+    node.field("material")
+        .fail("a dynamic body needs density > 0 (material " + def.material.name +
+              " has density 0); make the body \"static\" or pick another material");
   }
   return body;
 }
@@ -236,12 +262,14 @@ CameraSpec read_camera(const JsonCursor& node) {
   node.allow_only({"bounds", "center", "pixels_per_metre"});
   CameraSpec camera;
   if (auto bounds = node.optional_field("bounds")) {
-    if (node.has("center")) node.fail("give either \"bounds\" or \"center\" with \"pixels_per_metre\", not both");
+    if (node.has("center"))
+      node.fail("give either \"bounds\" or \"center\" with \"pixels_per_metre\", not both");
     if (bounds->size() != 2) bounds->fail("expected [[min x, min y], [max x, max y]]");
     camera.mode = CameraSpec::Mode::FitBounds;
     camera.bounds.lower = bounds->element(0).vector();
     camera.bounds.upper = bounds->element(1).vector();
-    if (!(camera.bounds.upper.x > camera.bounds.lower.x && camera.bounds.upper.y > camera.bounds.lower.y)) {
+    if (!(camera.bounds.upper.x > camera.bounds.lower.x &&
+          camera.bounds.upper.y > camera.bounds.lower.y)) {
       bounds->fail("the second corner must be above and right of the first");
     }
   } else if (auto center = node.optional_field("center")) {
@@ -280,7 +308,8 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     field->expect_object();
     for (const auto& member : field->value().items()) {
       const std::string& name = member.key();
-      if (table.count(name) != 0) field->field(name).fail("redefines the built-in material " + name);
+      if (table.count(name) != 0)
+        field->field(name).fail("redefines the built-in material " + name);
       table[name] = read_material_object(field->field(name), name);
     }
   }
@@ -340,7 +369,8 @@ Scene parse_scene(const std::string& text, const std::string& file) {
           event.body = read_body_reference(node.field("body"), names);
           event.impulse = node.field("impulse").vector();
           if (auto point = node.optional_field("point")) event.point = point->vector();
-          if (auto angular = node.optional_field("angular_impulse")) event.angular_impulse = angular->real();
+          if (auto angular = node.optional_field("angular_impulse"))
+            event.angular_impulse = angular->real();
           break;
         case SceneEventKind::Spawn:
           node.allow_only({"step", "type", "body"});

@@ -4,9 +4,9 @@
 /// docs/demos.md; every field is validated, and every error names the file, the JSON path and
 /// the reason.
 
-#include "demos/scene.h"
-
 #include <string>
+
+#include "demos/scene.h"
 
 namespace impulse2d::demos {
 

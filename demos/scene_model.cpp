@@ -11,7 +11,8 @@ namespace {
 std::string declared_shapes(const SceneModel& model) {
   std::string shapes;
   for (ShapeType type : {ShapeType::Circle, ShapeType::Box, ShapeType::Polygon}) {
-    if (model.allows(type)) shapes += (shapes.empty() ? "" : "+") + std::string(shape_kind_name(type));
+    if (model.allows(type))
+      shapes += (shapes.empty() ? "" : "+") + std::string(shape_kind_name(type));
   }
   return shapes.empty() ? "none" : shapes;
 }
@@ -20,9 +21,12 @@ std::string declared_shapes(const SceneModel& model) {
 
 bool SceneModel::allows(ShapeType type) const {
   switch (type) {
-    case ShapeType::Circle: return circles;
-    case ShapeType::Box: return boxes;
-    case ShapeType::Polygon: return polygons;
+    case ShapeType::Circle:
+      return circles;
+    case ShapeType::Box:
+      return boxes;
+    case ShapeType::Polygon:
+      return polygons;
   }
   return false;
 }
@@ -40,7 +44,8 @@ void apply_model(const SceneModel& model, WorldSettings& settings) {
   settings.position_iterations = model.position_iterations;
 }
 
-void verify_shape_kinds(const SceneModel& model, const World& world, const std::string& scene_name) {
+void verify_shape_kinds(const SceneModel& model, const World& world,
+                        const std::string& scene_name) {
   const std::vector<Body>& slots = world.body_slots();
   for (std::uint32_t index = 0; index < slots.size(); ++index) {
     if (!world.slot_alive(index) || model.allows(slots[index].shape.type)) continue;
@@ -53,18 +58,21 @@ void verify_shape_kinds(const SceneModel& model, const World& world, const std::
 
 const char* shape_kind_name(ShapeType type) {
   switch (type) {
-    case ShapeType::Circle: return "circle";
-    case ShapeType::Box: return "box";
-    case ShapeType::Polygon: return "polygon";
+    case ShapeType::Circle:
+      return "circle";
+    case ShapeType::Box:
+      return "box";
+    case ShapeType::Polygon:
+      return "polygon";
   }
   return "unknown";
 }
 
 std::string describe_model(const SceneModel& model) {
   auto on_off = [](bool on) { return on ? "on" : "off"; };
-  return "shapes " + declared_shapes(model) + ", rotation " + on_off(model.rotation) + ", friction " +
-         on_off(model.friction) + ", restitution " + on_off(model.restitution) + ", ccd " +
-         on_off(model.ccd) + ", sleeping " + on_off(model.sleeping) + ", iterations " +
+  return "shapes " + declared_shapes(model) + ", rotation " + on_off(model.rotation) +
+         ", friction " + on_off(model.friction) + ", restitution " + on_off(model.restitution) +
+         ", ccd " + on_off(model.ccd) + ", sleeping " + on_off(model.sleeping) + ", iterations " +
          std::to_string(model.velocity_iterations) + "/" +
          std::to_string(model.position_iterations);
 }

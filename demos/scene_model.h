@@ -4,11 +4,11 @@
 /// its model; running it turns off everything else in `WorldSettings` and checks that the
 /// built world keeps to the declared shape kinds.
 
-#include "core/settings.h"
-#include "core/shape.h"
-
 #include <cstdint>
 #include <string>
+
+#include "core/settings.h"
+#include "core/shape.h"
 
 namespace impulse2d {
 class World;
@@ -18,13 +18,13 @@ namespace impulse2d::demos {
 
 /// The physics a scene uses.
 struct SceneModel {
-  bool circles = false;   ///< uses circle shapes
-  bool boxes = false;     ///< uses axis-aligned (never rotating) boxes
-  bool polygons = false;  ///< uses convex polygons (including oriented boxes)
+  bool circles = false;     ///< uses circle shapes
+  bool boxes = false;       ///< uses axis-aligned (never rotating) boxes
+  bool polygons = false;    ///< uses convex polygons (including oriented boxes)
   bool rotation = true;     ///< bodies spin (angular terms solved and integrated)
   bool friction = true;     ///< tangent impulses solved
   bool restitution = true;  ///< contacts may bounce
-  bool ccd = false;  ///< bodies marked `is_bullet` are swept so they cannot tunnel
+  bool ccd = false;         ///< bodies marked `is_bullet` are swept so they cannot tunnel
 
   bool sleeping = false;        ///< bodies at rest are put to sleep
   int velocity_iterations = 8;  ///< solver passes per step

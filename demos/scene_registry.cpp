@@ -32,8 +32,9 @@ const Scene& default_scene() { return builtin_scenes().front(); }
 
 Scene resolve_scene(const std::string& name_or_path) {
   const std::string suffix = ".json";
-  const bool is_file = name_or_path.size() > suffix.size() &&
-                       name_or_path.compare(name_or_path.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const bool is_file =
+      name_or_path.size() > suffix.size() &&
+      name_or_path.compare(name_or_path.size() - suffix.size(), suffix.size(), suffix) == 0;
   if (is_file) return load_scene_file(name_or_path);
   if (const Scene* scene = find_builtin_scene(name_or_path)) return *scene;
   std::string known;

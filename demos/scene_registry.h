@@ -4,10 +4,10 @@
 /// Adding a scene: write demos/scenes/<name>.cpp defining `Scene scenes::<name>()` and add
 /// the line `IMPULSE2D_SCENE(<name>)` to demos/scenes/scene_list.h.
 
-#include "demos/scene.h"
-
 #include <string>
 #include <vector>
+
+#include "demos/scene.h"
 
 namespace impulse2d::demos {
 

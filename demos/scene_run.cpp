@@ -1,9 +1,9 @@
 /// @file scene_run.cpp
 #include "demos/scene_run.h"
 
-#include "demos/usage_error.h"
-
 #include <algorithm>
+
+#include "demos/usage_error.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -27,14 +27,17 @@ SceneRun::SceneRun(const Scene& scene, const Params& params)
                    [](const SceneEvent* a, const SceneEvent* b) { return a->step < b->step; });
 
   created_ = world_.body_ids();
-  const std::vector<std::string> buttons = script_ ? script_->buttons() : std::vector<std::string>{};
+  const std::vector<std::string> buttons =
+      script_ ? script_->buttons() : std::vector<std::string>{};
   int bodies_so_far = static_cast<int>(created_.size());
   for (const SceneEvent* event : events_) {
-    const bool names_body = event->kind == SceneEventKind::Impulse || event->kind == SceneEventKind::Remove;
+    const bool names_body =
+        event->kind == SceneEventKind::Impulse || event->kind == SceneEventKind::Remove;
     if (names_body && (event->body < 0 || event->body >= bodies_so_far)) {
-      throw UsageError(scene.source + ": " + event->origin + ": body " + std::to_string(event->body) +
-                       " does not exist at step " + std::to_string(event->step) + " (" +
-                       std::to_string(bodies_so_far) + " bodies created by then)");
+      throw UsageError(scene.source + ": " + event->origin + ": body " +
+                       std::to_string(event->body) + " does not exist at step " +
+                       std::to_string(event->step) + " (" + std::to_string(bodies_so_far) +
+                       " bodies created by then)");
     }
     if (event->kind == SceneEventKind::Spawn) ++bodies_so_far;
     if (event->kind == SceneEventKind::Button &&
@@ -42,8 +45,8 @@ SceneRun::SceneRun(const Scene& scene, const Params& params)
       std::string known;
       for (const std::string& name : buttons) known += (known.empty() ? "" : ", ") + name;
       throw UsageError(scene.source + ": " + event->origin + ": scene " + scene.name +
-                       " has no button '" + event->button + "' (its buttons: " +
-                       (known.empty() ? std::string("none") : known) + ")");
+                       " has no button '" + event->button +
+                       "' (its buttons: " + (known.empty() ? std::string("none") : known) + ")");
     }
   }
 }
@@ -94,4 +97,3 @@ void SceneRun::step() {
 }
 
 }  // namespace impulse2d::demos
-

@@ -3,12 +3,12 @@
 /// One run of a scene: the world built under the scene's model, stepped with its scripted
 /// events and per-step script.
 
-#include "core/world.h"
-#include "demos/scene.h"
-
 #include <cstdint>
 #include <memory>
 #include <vector>
+
+#include "core/world.h"
+#include "demos/scene.h"
 
 namespace impulse2d::demos {
 
@@ -45,7 +45,7 @@ class SceneRun {
   std::unique_ptr<StepScript> script_;
   std::vector<const SceneEvent*> events_;  // sorted by step, stable for equal steps
   std::size_t next_event_ = 0;
-  std::vector<BodyId> created_;            // creation index -> handle
+  std::vector<BodyId> created_;  // creation index -> handle
 };
 
 }  // namespace impulse2d::demos

@@ -1,11 +1,10 @@
 /// @file trace_writer.cpp
 #include "demos/trace_writer.h"
 
-#include "demos/usage_error.h"
-
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
+#include "demos/usage_error.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -31,9 +30,12 @@ void append_sample(const World& world, TraceFormat format, std::string& out, boo
   for (const BodyId id : world.body_ids()) {
     const Body& body = world.body(id);
     if (body.type == BodyType::Static) continue;
-    const std::string values[] = {number(body.transform.position.x), number(body.transform.position.y),
-                                  number(body.angle),                number(body.linear_velocity.x),
-                                  number(body.linear_velocity.y),    number(body.angular_velocity)};
+    const std::string values[] = {number(body.transform.position.x),
+                                  number(body.transform.position.y),
+                                  number(body.angle),
+                                  number(body.linear_velocity.x),
+                                  number(body.linear_velocity.y),
+                                  number(body.angular_velocity)};
     if (format == TraceFormat::Csv) {
       out += step + "," + time + "," + std::to_string(id.index);
       for (const std::string& value : values) out += "," + value;
@@ -74,8 +76,8 @@ std::string trace_run(SceneRun& run, std::int64_t steps, std::int64_t every, Tra
   if (format == TraceFormat::Csv) {
     out = "step,t,body,x,y,angle,vx,vy,omega,contacts,energy\n";
   } else {
-    out = "{\n  \"scene\": " + nlohmann::json(run.scene().name).dump() + ",\n  \"time_step\": " +
-          number(run.world().settings().time_step) + ",\n  \"samples\": [";
+    out = "{\n  \"scene\": " + nlohmann::json(run.scene().name).dump() +
+          ",\n  \"time_step\": " + number(run.world().settings().time_step) + ",\n  \"samples\": [";
   }
   bool first = true;
   while (true) {

@@ -3,10 +3,10 @@
 /// Per-step body states of a run as CSV or JSON, for plotting and for checking a scene
 /// against an exact answer.
 
-#include "demos/scene_run.h"
-
 #include <cstdint>
 #include <string>
+
+#include "demos/scene_run.h"
 
 namespace impulse2d::demos {
 

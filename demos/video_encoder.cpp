@@ -1,14 +1,14 @@
 /// @file video_encoder.cpp
 #include "demos/video_encoder.h"
 
-#include "demos/usage_error.h"
-
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+
+#include "demos/usage_error.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -50,21 +50,22 @@ void check_video_output(const std::filesystem::path& output) {
   if (!find_on_path("ffmpeg")) throw std::runtime_error(install_hint);
 }
 
-VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height, double frames_per_second)
+VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height,
+                           double frames_per_second)
     : output_(std::move(output)), width_(width), height_(height) {
   check_video_output(output_);
   const std::filesystem::path ffmpeg = *find_on_path("ffmpeg");
-  temporary_ = output_.parent_path() /
-               ("." + output_.stem().string() + ".partial-" + std::to_string(getpid()) +
-                output_.extension().string());
-  const std::string filters = output_.extension() == ".gif"
-                                  ? "-vf 'split[a][b];[a]palettegen[p];[b][p]paletteuse'"
-                                  : "-c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'";
+  temporary_ = output_.parent_path() / ("." + output_.stem().string() + ".partial-" +
+                                        std::to_string(getpid()) + output_.extension().string());
+  const std::string filters =
+      output_.extension() == ".gif"
+          ? "-vf 'split[a][b];[a]palettegen[p];[b][p]paletteuse'"
+          : "-c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'";
   const std::string command = shell_quote(ffmpeg.string()) +
                               " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s " +
-                              std::to_string(width) + "x" + std::to_string(height) + " -framerate " +
-                              std::to_string(frames_per_second) + " -i - " + filters + " " +
-                              shell_quote(temporary_.string());
+                              std::to_string(width) + "x" + std::to_string(height) +
+                              " -framerate " + std::to_string(frames_per_second) + " -i - " +
+                              filters + " " + shell_quote(temporary_.string());
   pipe_ = popen(command.c_str(), "w");
   if (pipe_ == nullptr) throw std::runtime_error("cannot start ffmpeg (" + ffmpeg.string() + ")");
 }

@@ -4,11 +4,11 @@
 /// required to build). Frames are piped in as raw RGBA; the file appears only when ffmpeg
 /// finished successfully (temporary name + rename).
 
-#include "render/frame.h"
-
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+
+#include "render/frame.h"
 
 namespace impulse2d::demos {
 

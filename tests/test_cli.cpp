@@ -1,10 +1,7 @@
 // The impulse2d program run as a subprocess: commands, exit codes (0 / 1 runtime / 2 usage),
 // messages for bad input, and no partial files left behind. `trace` of a JSON projectile
 // matches the exact answer up to semi-implicit Euler's known error g t dt / 2.
-#include <nlohmann/json.hpp>
-
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -12,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -33,7 +31,9 @@ std::string read_file(const fs::path& path) {
   return text.str();
 }
 
-void write_file(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
 /// A fresh, empty directory for one test.
 class CliTest : public ::testing::Test {
@@ -48,8 +48,8 @@ class CliTest : public ::testing::Test {
 
   /// Runs `impulse2d <arguments>` in the test directory; `environment` is prefixed (VAR=x).
   Result run(const std::string& arguments, const std::string& environment = "") const {
-    const std::string command = "cd '" + dir_.string() + "' && " + environment + " '" IMPULSE2D_CLI "' " +
-                                arguments + " > stdout.txt 2> stderr.txt";
+    const std::string command = "cd '" + dir_.string() + "' && " + environment +
+                                " '" IMPULSE2D_CLI "' " + arguments + " > stdout.txt 2> stderr.txt";
     Result result;
     const int status = std::system(command.c_str());
     result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -84,8 +84,8 @@ const char* const projectile = R"({
 TEST_F(CliTest, ListShowsEveryBuiltInSceneWithItsModel) {
   const Result result = run("list");
   EXPECT_EQ(result.status, 0) << result.err;
-  for (const char* name : {"tutorial", "materials", "friction_ramp", "shape_pairs", "pyramid", "stack",
-                           "newtons_cradle", "bullet", "ball_pit", "random_polygons"}) {
+  for (const char* name : {"tutorial", "materials", "friction_ramp", "shape_pairs", "pyramid",
+                           "stack", "newtons_cradle", "bullet", "ball_pit", "random_polygons"}) {
     EXPECT_NE(result.out.find(std::string(name) + "\n"), std::string::npos) << name;
   }
   EXPECT_NE(result.out.find("model: shapes box, rotation off"), std::string::npos) << result.out;
@@ -102,10 +102,13 @@ TEST_F(CliTest, HelpWorksOnEveryCommand) {
 
 TEST_F(CliTest, RendersAFrameSequenceAndPrintsWhereItWent) {
   const Result result =
-      run("render pyramid --param rows=4 --frames 0:20:10 --size 160x120 --overlays normals,penetration --out frames");
+      run("render pyramid --param rows=4 --frames 0:20:10 --size 160x120 --overlays "
+          "normals,penetration --out frames");
   ASSERT_EQ(result.status, 0) << result.err;
-  EXPECT_NE(result.out.find("wrote 3 frames of pyramid to frames/"), std::string::npos) << result.out;
-  for (const char* name : {"frames/pyramid_00000.png", "frames/pyramid_00010.png", "frames/pyramid_00020.png"}) {
+  EXPECT_NE(result.out.find("wrote 3 frames of pyramid to frames/"), std::string::npos)
+      << result.out;
+  for (const char* name :
+       {"frames/pyramid_00000.png", "frames/pyramid_00010.png", "frames/pyramid_00020.png"}) {
     const std::string png = read_file(dir_ / name);
     ASSERT_GT(png.size(), 8u) << name;
     EXPECT_EQ(png.substr(1, 3), "PNG");
@@ -124,7 +127,8 @@ TEST_F(CliTest, WithoutArgumentsRendersTheDefaultDemoIntoOut) {
 }
 
 TEST_F(CliTest, ContactSheetIsOnePng) {
-  const Result result = run("sheet pyramid --param rows=3 --count 3 --tile 160x120 --out sheet/p.png");
+  const Result result =
+      run("sheet pyramid --param rows=3 --count 3 --tile 160x120 --out sheet/p.png");
   ASSERT_EQ(result.status, 0) << result.err;
   EXPECT_EQ(read_file(dir_ / "sheet/p.png").substr(1, 3), "PNG");
   EXPECT_NE(result.out.find("contact sheet of 3 frames"), std::string::npos) << result.out;
@@ -133,7 +137,8 @@ TEST_F(CliTest, ContactSheetIsOnePng) {
 TEST_F(CliTest, TraceOfAJsonProjectileMatchesTheExactAnswer) {
   write_file(dir_ / "projectile.json", projectile);
   const int steps = 200;
-  const Result result = run("trace projectile.json --steps " + std::to_string(steps) + " --every 10");
+  const Result result =
+      run("trace projectile.json --steps " + std::to_string(steps) + " --every 10");
   ASSERT_EQ(result.status, 0) << result.err;
   std::istringstream lines(result.out);
   std::string line;
@@ -199,53 +204,75 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, CliBadInput,
     ::testing::Values(
         BadInput{"UnknownScene", "", "render no_such_scene", 2, "unknown scene 'no_such_scene'"},
-        BadInput{"MissingFile", "", "render missing.json", 2, "missing.json: cannot open the scene file"},
-        BadInput{"MalformedJson", R"({"bodies": [})", "render bad.json", 2, "bad.json: bodies[0]: malformed JSON at line 1"},
-        BadInput{"WrongType", R"({"bodies": [{"shape": {"type": "circle", "radius": [1]}, "position": [0, 0]}]})",
-                 "render bad.json", 2, "bad.json: bodies[0].shape.radius: expected a number, got an array"},
+        BadInput{"MissingFile", "", "render missing.json", 2,
+                 "missing.json: cannot open the scene file"},
+        BadInput{"MalformedJson", R"({"bodies": [})", "render bad.json", 2,
+                 "bad.json: bodies[0]: malformed JSON at line 1"},
+        BadInput{
+            "WrongType",
+            R"({"bodies": [{"shape": {"type": "circle", "radius": [1]}, "position": [0, 0]}]})",
+            "render bad.json", 2,
+            "bad.json: bodies[0].shape.radius: expected a number, got an array"},
         BadInput{"MissingField", R"({"bodies": [{"position": [0, 0]}]})", "render bad.json", 2,
                  "bad.json: bodies[0]: missing field \"shape\""},
-        BadInput{"NegativeRadius", R"({"bodies": [{"shape": {"type": "circle", "radius": -0.5}, "position": [0, 0]}]})",
-                 "render bad.json", 2, "bad.json: bodies[0].shape.radius: must be > 0, got -0.5"},
-        BadInput{"NegativeDensity",
-                 R"({"materials": {"Foam": {"density": -1, "restitution": 0, "static_friction": 0, "dynamic_friction": 0}},
+        BadInput{
+            "NegativeRadius",
+            R"({"bodies": [{"shape": {"type": "circle", "radius": -0.5}, "position": [0, 0]}]})",
+            "render bad.json", 2, "bad.json: bodies[0].shape.radius: must be > 0, got -0.5"},
+        BadInput{
+            "NegativeDensity",
+            R"({"materials": {"Foam": {"density": -1, "restitution": 0, "static_friction": 0, "dynamic_friction": 0}},
                      "bodies": []})",
-                 "render bad.json", 2, "bad.json: materials.Foam.density: must be >= 0, got -1"},
-        BadInput{"NotFinite", R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, -Infinity]}]})",
-                 "trace bad.json --steps 1", 2, "bad.json: bodies[0].position[1]: malformed JSON"},
-        BadInput{"Concave",
-                 R"({"bodies": [{"shape": {"type": "polygon", "vertices": [[0,0],[2,0],[1,0.2],[1,2]]}, "position": [0, 0]}]})",
-                 "render bad.json", 2, "bad.json: bodies[0].shape.vertices: the outline is not convex"},
-        BadInput{"Degenerate",
-                 R"({"bodies": [{"shape": {"type": "polygon", "vertices": [[0,0],[1,1],[2,2]]}, "position": [0, 0]}]})",
-                 "render bad.json", 2, "bad.json: bodies[0].shape.vertices: "},
-        BadInput{"UnknownMaterial",
-                 R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Jelly"}]})",
-                 "render bad.json", 2, "bad.json: bodies[0].material: unknown material \"Jelly\""},
-        BadInput{"UnknownParameter", "", "render pyramid --param cols=3", 2, "unknown parameter 'cols'"},
-        BadInput{"ParameterOutOfRange", "", "render pyramid --param rows=1000", 2, "parameter rows: 1000 is outside 1..60"},
-        BadInput{"FramesAfterTheRun", "", "render bullet --frames 0:500", 2, "ends at step 500, after the end of the run"},
-        BadInput{"FramesSelectNothing", "", "render bullet --frames 200:", 2, "selects no step of the run"},
+            "render bad.json", 2, "bad.json: materials.Foam.density: must be >= 0, got -1"},
+        BadInput{
+            "NotFinite",
+            R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, -Infinity]}]})",
+            "trace bad.json --steps 1", 2, "bad.json: bodies[0].position[1]: malformed JSON"},
+        BadInput{
+            "Concave",
+            R"({"bodies": [{"shape": {"type": "polygon", "vertices": [[0,0],[2,0],[1,0.2],[1,2]]}, "position": [0, 0]}]})",
+            "render bad.json", 2, "bad.json: bodies[0].shape.vertices: the outline is not convex"},
+        BadInput{
+            "Degenerate",
+            R"({"bodies": [{"shape": {"type": "polygon", "vertices": [[0,0],[1,1],[2,2]]}, "position": [0, 0]}]})",
+            "render bad.json", 2, "bad.json: bodies[0].shape.vertices: "},
+        BadInput{
+            "UnknownMaterial",
+            R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Jelly"}]})",
+            "render bad.json", 2, "bad.json: bodies[0].material: unknown material \"Jelly\""},
+        BadInput{"UnknownParameter", "", "render pyramid --param cols=3", 2,
+                 "unknown parameter 'cols'"},
+        BadInput{"ParameterOutOfRange", "", "render pyramid --param rows=1000", 2,
+                 "parameter rows: 1000 is outside 1..60"},
+        BadInput{"FramesAfterTheRun", "", "render bullet --frames 0:500", 2,
+                 "ends at step 500, after the end of the run"},
+        BadInput{"FramesSelectNothing", "", "render bullet --frames 200:", 2,
+                 "selects no step of the run"},
         BadInput{"BadSize", "", "render bullet --size 10x10", 2, "--size '10x10'"},
-        BadInput{"BadOverlay", "", "render bullet --overlays sparkles", 2, "unknown overlay 'sparkles'"},
+        BadInput{"BadOverlay", "", "render bullet --overlays sparkles", 2,
+                 "unknown overlay 'sparkles'"},
         BadInput{"BadTheme", "", "render bullet --theme neon", 2, "--theme 'neon'"},
         BadInput{"UnknownOption", "", "render bullet --colour red", 2, "--colour"},
         BadInput{"TraceWithoutSteps", "", "trace bullet", 2, "--steps"},
-        BadInput{"BadVideoExtension", "", "render bullet --video clip.avi", 2, "must end in .mp4 or .gif"},
+        BadInput{"BadVideoExtension", "", "render bullet --video clip.avi", 2,
+                 "must end in .mp4 or .gif"},
         BadInput{"VideoWithoutFfmpeg", "", "render bullet --frames 0:2 --video clip.mp4", 1,
                  "sudo apt-get install ffmpeg"},
-        BadInput{"UnwritableOutput", "", "render bullet --frames 0:2 --out blocker/frames", 1, "blocker"},
+        BadInput{"UnwritableOutput", "", "render bullet --frames 0:2 --out blocker/frames", 1,
+                 "blocker"},
         BadInput{"FailsHalfWay",
                  R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, 0]}],
                      "events": [{"step": 5, "type": "remove", "body": 0}, {"step": 8, "type": "remove", "body": 0}],
                      "run": {"steps": 20, "frames": "::1"}})",
-                 "render bad.json --size 64x64", 2, "bad.json: events[1]: body 0 was already removed before step 8"}),
+                 "render bad.json --size 64x64", 2,
+                 "bad.json: events[1]: body 0 was already removed before step 8"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST_F(CliTest, AFailedRunKeepsFilesThatExistedBefore) {
   fs::create_directories(dir_ / "out");
   write_file(dir_ / "out/keep.txt", "mine");
-  write_file(dir_ / "bad.json", R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, 0]}],
+  write_file(dir_ / "bad.json",
+             R"({"bodies": [{"shape": {"type": "circle", "radius": 1}, "position": [0, 0]}],
       "events": [{"step": 3, "type": "remove", "body": 0}, {"step": 4, "type": "remove", "body": 0}]})");
   const Result result = run("render bad.json --size 64x64 --frames 0:10");
   EXPECT_EQ(result.status, 2);

@@ -1,14 +1,14 @@
 // JSON scene files: a complete scene loads with every field; each kind of bad input gives one
 // message naming the file, the JSON path and the reason.
-#include "core/world.h"
-#include "demos/scene_loader.h"
-#include "demos/scene_run.h"
-#include "demos/usage_error.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <string>
+
+#include "core/world.h"
+#include "demos/scene_loader.h"
+#include "demos/scene_run.h"
+#include "demos/usage_error.h"
 
 using namespace impulse2d;
 using namespace impulse2d::demos;
@@ -17,7 +17,8 @@ namespace {
 
 /// A valid scene whose first body is `body` (JSON text of one body).
 std::string scene_with_body(const std::string& body) {
-  return R"({"bodies": [)" + body + R"(, {"type": "static", "shape": {"type": "box", "half_extents": [5, 0.5]},
+  return R"({"bodies": [)" + body +
+         R"(, {"type": "static", "shape": {"type": "box", "half_extents": [5, 0.5]},
              "position": [0, -1], "material": "Static"}]})";
 }
 
@@ -89,14 +90,16 @@ TEST(SceneFile, LoadsEveryPartOfTheSchema) {
 
 TEST(SceneFile, PolygonVerticesAreAroundTheGivenPosition) {
   const Scene scene = parse_scene(scene_with_body(R"({"shape": {"type": "polygon",
-      "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}, "position": [10, 20]})"), "square.json");
+      "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}, "position": [10, 20]})"),
+                                  "square.json");
   SceneRun run(scene, Params{});
   EXPECT_EQ(run.world().body(run.world().body_ids()[0]).transform.position, vec2(11.0f, 21.0f));
 }
 
 TEST(SceneFile, WithoutAModelTheLeastOneCoveringTheBodiesIsInferred) {
-  const Scene scene = parse_scene(scene_with_body(R"({"shape": {"type": "box", "half_extents": [1, 1]}, "position": [0, 3]})"),
-                                  "boxes.json");
+  const Scene scene = parse_scene(
+      scene_with_body(R"({"shape": {"type": "box", "half_extents": [1, 1]}, "position": [0, 3]})"),
+      "boxes.json");
   EXPECT_TRUE(scene.model.boxes);
   EXPECT_FALSE(scene.model.circles);
   EXPECT_FALSE(scene.model.polygons);
@@ -121,48 +124,75 @@ TEST_P(BadSceneFile, NamesFilePathAndReason) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadSceneFile,
     ::testing::Values(
-        BadFile{"Malformed", R"({"bodies": [ {"shape": } ]})", "bodies[0].shape: malformed JSON at line 1, column"},
-        BadFile{"NaN", scene_with_body(R"({"shape": {"type": "circle", "radius": NaN}, "position": [0, 0]})"),
-                "bodies[0].shape.radius: malformed JSON"},
-        BadFile{"Infinite", scene_with_body(R"({"shape": {"type": "circle", "radius": 1e999}, "position": [0, 0]})"),
+        BadFile{"Malformed", R"({"bodies": [ {"shape": } ]})",
+                "bodies[0].shape: malformed JSON at line 1, column"},
+        BadFile{
+            "NaN",
+            scene_with_body(R"({"shape": {"type": "circle", "radius": NaN}, "position": [0, 0]})"),
+            "bodies[0].shape.radius: malformed JSON"},
+        BadFile{"Infinite",
+                scene_with_body(
+                    R"({"shape": {"type": "circle", "radius": 1e999}, "position": [0, 0]})"),
                 "bodies[0].shape.radius: malformed JSON at line 1, column"},
-        BadFile{"TooLargeForFloat", scene_with_body(R"({"shape": {"type": "circle", "radius": 1e200}, "position": [0, 0]})"),
+        BadFile{"TooLargeForFloat",
+                scene_with_body(
+                    R"({"shape": {"type": "circle", "radius": 1e200}, "position": [0, 0]})"),
                 "bodies[0].shape.radius: must fit a float"},
-        BadFile{"WrongType", scene_with_body(R"({"shape": {"type": "circle", "radius": "big"}, "position": [0, 0]})"),
+        BadFile{"WrongType",
+                scene_with_body(
+                    R"({"shape": {"type": "circle", "radius": "big"}, "position": [0, 0]})"),
                 "bodies[0].shape.radius: expected a number, got string \"big\""},
         BadFile{"MissingField", scene_with_body(R"({"shape": {"type": "circle", "radius": 1}})"),
                 "bodies[0]: missing field \"position\""},
         BadFile{"MissingBodies", R"({"name": "empty"})", "(root): missing field \"bodies\""},
-        BadFile{"NegativeRadius", scene_with_body(R"({"shape": {"type": "circle", "radius": -1}, "position": [0, 0]})"),
-                "bodies[0].shape.radius: must be > 0, got -1"},
+        BadFile{
+            "NegativeRadius",
+            scene_with_body(R"({"shape": {"type": "circle", "radius": -1}, "position": [0, 0]})"),
+            "bodies[0].shape.radius: must be > 0, got -1"},
         BadFile{"NegativeDensity",
                 scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0],
                     "material": {"density": -2, "restitution": 0, "static_friction": 0, "dynamic_friction": 0}})"),
                 "bodies[0].material.density: must be >= 0, got -2"},
-        BadFile{"ConcavePolygon",
-                scene_with_body(R"({"shape": {"type": "polygon", "vertices": [[0,0],[4,0],[1,1],[0,4]]}, "position": [0, 0]})"),
-                "bodies[0].shape.vertices: the outline is not convex"},
-        BadFile{"DegeneratePolygon",
-                scene_with_body(R"({"shape": {"type": "polygon", "vertices": [[0,0],[1,0],[2,0]]}, "position": [0, 0]})"),
-                "bodies[0].shape.vertices: "},
-        BadFile{"TwoVertices",
-                scene_with_body(R"({"shape": {"type": "polygon", "vertices": [[0,0],[1,0]]}, "position": [0, 0]})"),
-                "bodies[0].shape.vertices: a polygon needs 3..8 vertices, got 2"},
-        BadFile{"UnknownMaterial",
-                scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Cheese"})"),
-                "bodies[0].material: unknown material \"Cheese\""},
-        BadFile{"DynamicWithoutMass",
-                scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Static"})"),
-                "bodies[0].material: a dynamic body needs density > 0"},
-        BadFile{"UnknownShape", scene_with_body(R"({"shape": {"type": "capsule"}, "position": [0, 0]})"),
+        BadFile{
+            "ConcavePolygon",
+            scene_with_body(
+                R"({"shape": {"type": "polygon", "vertices": [[0,0],[4,0],[1,1],[0,4]]}, "position": [0, 0]})"),
+            "bodies[0].shape.vertices: the outline is not convex"},
+        BadFile{
+            "DegeneratePolygon",
+            scene_with_body(
+                R"({"shape": {"type": "polygon", "vertices": [[0,0],[1,0],[2,0]]}, "position": [0, 0]})"),
+            "bodies[0].shape.vertices: "},
+        BadFile{
+            "TwoVertices",
+            scene_with_body(
+                R"({"shape": {"type": "polygon", "vertices": [[0,0],[1,0]]}, "position": [0, 0]})"),
+            "bodies[0].shape.vertices: a polygon needs 3..8 vertices, got 2"},
+        BadFile{
+            "UnknownMaterial",
+            scene_with_body(
+                R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Cheese"})"),
+            "bodies[0].material: unknown material \"Cheese\""},
+        BadFile{
+            "DynamicWithoutMass",
+            scene_with_body(
+                R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Static"})"),
+            "bodies[0].material: a dynamic body needs density > 0"},
+        BadFile{"UnknownShape",
+                scene_with_body(R"({"shape": {"type": "capsule"}, "position": [0, 0]})"),
                 "bodies[0].shape.type: unknown shape type \"capsule\""},
-        BadFile{"Misspelt", scene_with_body(R"({"shape": {"type": "circle", "raduis": 1}, "position": [0, 0]})"),
-                "bodies[0].shape: unknown field \"raduis\""},
-        BadFile{"BadVector", scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0]})"),
+        BadFile{
+            "Misspelt",
+            scene_with_body(R"({"shape": {"type": "circle", "raduis": 1}, "position": [0, 0]})"),
+            "bodies[0].shape: unknown field \"raduis\""},
+        BadFile{"BadVector",
+                scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0]})"),
                 "bodies[0].position: expected [x, y]"},
         BadFile{"BadSolver", R"({"settings": {"solver": "magic"}, "bodies": []})",
-                "settings.solver: unknown value \"magic\" (expected one of: accumulated, per_iteration)"},
-        BadFile{"BadTimeStep", R"({"settings": {"time_step": 0}, "bodies": []})", "settings.time_step: must be > 0"},
+                "settings.solver: unknown value \"magic\" (expected one of: accumulated, "
+                "per_iteration)"},
+        BadFile{"BadTimeStep", R"({"settings": {"time_step": 0}, "bodies": []})",
+                "settings.time_step: must be > 0"},
         BadFile{"UnknownEventBody",
                 R"({"bodies": [], "events": [{"step": 1, "type": "remove", "body": "ghost"}]})",
                 "events[0].body: no body is named \"ghost\""},
@@ -170,19 +200,22 @@ INSTANTIATE_TEST_SUITE_P(
                 R"({"bodies": [], "events": [{"step": -1, "type": "button", "button": "jump"}]})",
                 "events[0].step: must be in 0..100000000, got -1"},
         BadFile{"BadFrames", R"({"bodies": [], "run": {"frames": "9:3"}})", "run.frames: "},
-        BadFile{"BadOverlay", R"({"bodies": [], "overlays": ["sparkles"]})", "overlays[0]: unknown overlay 'sparkles'"},
+        BadFile{"BadOverlay", R"({"bodies": [], "overlays": ["sparkles"]})",
+                "overlays[0]: unknown overlay 'sparkles'"},
         BadFile{"BadCamera", R"({"bodies": [], "camera": {"bounds": [[1, 1], [0, 0]]}})",
                 "camera.bounds: the second corner must be above and right of the first"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(SceneFile, ButtonsTheSceneDoesNotHaveAreRejectedBeforeTheRun) {
   const Scene scene =
-      parse_scene(R"({"bodies": [], "events": [{"step": 3, "type": "button", "button": "jump"}]})", "buttons.json");
+      parse_scene(R"({"bodies": [], "events": [{"step": 3, "type": "button", "button": "jump"}]})",
+                  "buttons.json");
   try {
     SceneRun run(scene, Params{});
     FAIL() << "expected UsageError";
   } catch (const UsageError& error) {
-    EXPECT_NE(std::string(error.what()).find("buttons.json: events[0]: scene buttons has no button 'jump'"),
+    EXPECT_NE(std::string(error.what())
+                  .find("buttons.json: events[0]: scene buttons has no button 'jump'"),
               std::string::npos)
         << error.what();
   }
@@ -193,6 +226,7 @@ TEST(SceneFile, AnUnreadableFileIsNamed) {
     load_scene_file("/nonexistent/scene.json");
     FAIL() << "expected UsageError";
   } catch (const UsageError& error) {
-    EXPECT_NE(std::string(error.what()).find("/nonexistent/scene.json: cannot open"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("/nonexistent/scene.json: cannot open"),
+              std::string::npos);
   }
 }

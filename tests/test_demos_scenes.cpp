@@ -1,5 +1,10 @@
 // Built-in scenes: each builds under its declared model, steps without diverging and renders;
 // the registry, parameters, frame plans and the deterministic random source.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
 #include "core/world.h"
 #include "demos/frame_plan.h"
 #include "demos/params.h"
@@ -9,11 +14,6 @@
 #include "demos/scene_run.h"
 #include "demos/usage_error.h"
 #include "render/frame_renderer.h"
-
-#include <gtest/gtest.h>
-
-#include <cmath>
-#include <set>
 
 using namespace impulse2d;
 using namespace impulse2d::demos;
@@ -48,8 +48,9 @@ TEST(Registry, ListsTheRequiredScenesOnceEach) {
     EXPECT_FALSE(scene.description.empty()) << scene.name;
     EXPECT_TRUE(scene.build) << scene.name;
   }
-  for (const char* required : {"tutorial", "materials", "friction_ramp", "shape_pairs", "pyramid", "stack",
-                               "newtons_cradle", "bullet", "ball_pit", "random_polygons"}) {
+  for (const char* required :
+       {"tutorial", "materials", "friction_ramp", "shape_pairs", "pyramid", "stack",
+        "newtons_cradle", "bullet", "ball_pit", "random_polygons"}) {
     EXPECT_EQ(names.count(required), 1u) << required;
   }
   EXPECT_EQ(default_scene().name, "tutorial");
@@ -88,7 +89,8 @@ TEST_P(BuiltinScene, BuildsUnderItsModelStepsAndRenders) {
   ASSERT_EQ(frame.width, 160);
   std::set<std::uint32_t> colours;
   for (std::size_t i = 0; i < frame.rgba.size(); i += 4) {
-    colours.insert(static_cast<std::uint32_t>(frame.rgba[i]) << 16 | frame.rgba[i + 1] << 8 | frame.rgba[i + 2]);
+    colours.insert(static_cast<std::uint32_t>(frame.rgba[i]) << 16 | frame.rgba[i + 1] << 8 |
+                   frame.rgba[i + 2]);
   }
   EXPECT_GT(colours.size(), 3u) << "the frame looks empty";
 }

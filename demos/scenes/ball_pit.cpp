@@ -21,12 +21,14 @@ void build(World& world, const Params& params) {
   const int rows = (balls + per_row - 1) / per_row;
   const float wall_half_height = 0.5f * spacing * static_cast<float>(rows) + 1.0f;
   for (const float side : {-1.0f, 1.0f}) {
-    add_static_box(world, {side * (half_width + 0.5f), wall_half_height}, {0.5f, wall_half_height}, ground);
+    add_static_box(world, {side * (half_width + 0.5f), wall_half_height}, {0.5f, wall_half_height},
+                   ground);
   }
   const Material rubber{"Rubber", 0.4f, 0.3f, 0.8f, 0.6f};
   for (int i = 0; i < balls; ++i) {
     const int row = i / per_row, column = i % per_row;
-    const float x = -half_width + spacing * (static_cast<float>(column) + 1.0f) + random.uniform(-0.05f, 0.05f);
+    const float x =
+        -half_width + spacing * (static_cast<float>(column) + 1.0f) + random.uniform(-0.05f, 0.05f);
     const float y = 0.5f + spacing * static_cast<float>(row);
     add_body(world, BodyType::Dynamic, make_circle(random.uniform(0.2f, 0.3f)), {x, y}, rubber);
   }

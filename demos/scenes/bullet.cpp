@@ -25,7 +25,8 @@ void build(World& world, const Params& params) {
     float speed;
     bool swept;
   };
-  for (const Lane& lane : {Lane{3.0f, slow, false}, Lane{0.0f, fast, false}, Lane{-3.0f, fast, true}}) {
+  for (const Lane& lane :
+       {Lane{3.0f, slow, false}, Lane{0.0f, fast, false}, Lane{-3.0f, fast, true}}) {
     BodyDef def;
     def.material = lead;
     def.is_bullet = lane.swept;

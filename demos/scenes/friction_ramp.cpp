@@ -2,22 +2,22 @@
 /// Coulomb friction on an incline: a block holds iff tan(theta) <= mu_s, otherwise it slides
 /// with a = g (sin(theta) - mu_d cos(theta)). Four parallel ramps at the same angle, stacked
 /// along their normal, carry a block each: mu_s just above tan(theta) (holds), then just
-/// below it with three dynamic coefficients (creeps, slides, slides fast). The ramps' friction is high and mixing takes
-/// the minimum, so each contact uses the block's own coefficients.
+/// below it with three dynamic coefficients (creeps, slides, slides fast). The ramps' friction is
+/// high and mixing takes the minimum, so each contact uses the block's own coefficients.
+#include <cmath>
+#include <string>
+
 #include "core/world.h"
 #include "demos/scene.h"
 #include "demos/scene_helpers.h"
 
-#include <cmath>
-#include <string>
-
 namespace impulse2d::demos::scenes {
 namespace {
 
-constexpr float ramp_half_length = 10.0f;    // metres
-constexpr float ramp_half_thickness = 0.25f; // metres
-constexpr float ramp_spacing = 3.0f;         // distance between parallel ramps, metres
-constexpr vec2 block_half{0.5f, 0.35f};      // metres
+constexpr float ramp_half_length = 10.0f;     // metres
+constexpr float ramp_half_thickness = 0.25f;  // metres
+constexpr float ramp_spacing = 3.0f;          // distance between parallel ramps, metres
+constexpr vec2 block_half{0.5f, 0.35f};       // metres
 
 void build(World& world, const Params& params) {
   const float theta = radians(static_cast<float>(params.number("angle")));
@@ -37,10 +37,10 @@ void build(World& world, const Params& params) {
     const vec2 center = -ramp_spacing * static_cast<float>(i) * up;
     add_body(world, BodyType::Static, make_oriented_box({ramp_half_length, ramp_half_thickness}),
              center, ramp, -theta);
-    const Material block{"mu_s " + std::to_string(coefficients[i].x), 0.3f, 0.0f,
-                         coefficients[i].x, coefficients[i].y};
-    const vec2 position = center - (ramp_half_length - 1.5f) * along +
-                          (ramp_half_thickness + block_half.y) * up;
+    const Material block{"mu_s " + std::to_string(coefficients[i].x), 0.3f, 0.0f, coefficients[i].x,
+                         coefficients[i].y};
+    const vec2 position =
+        center - (ramp_half_length - 1.5f) * along + (ramp_half_thickness + block_half.y) * up;
     add_body(world, BodyType::Dynamic, make_oriented_box(block_half), position, block, -theta);
   }
 }

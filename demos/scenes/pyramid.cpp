@@ -18,9 +18,11 @@ void build(World& world, const Params& params) {
   for (int row = 0; row < rows; ++row) {
     const int count = rows - row;
     for (int i = 0; i < count; ++i) {
-      const float x = (static_cast<float>(i) - 0.5f * static_cast<float>(count - 1)) * 2.0f * half_size;
+      const float x =
+          (static_cast<float>(i) - 0.5f * static_cast<float>(count - 1)) * 2.0f * half_size;
       const float y = half_size + 2.0f * half_size * static_cast<float>(row);
-      add_body(world, BodyType::Dynamic, make_box({half_size, half_size}), {x, y}, materials::wood());
+      add_body(world, BodyType::Dynamic, make_box({half_size, half_size}), {x, y},
+               materials::wood());
     }
   }
 }

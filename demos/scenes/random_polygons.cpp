@@ -20,7 +20,8 @@ void build(World& world, const Params& params) {
   const int rows = (count + per_row - 1) / per_row;
   const float wall_half_height = 0.5f * spacing * static_cast<float>(rows) + 1.0f;
   for (const float side : {-1.0f, 1.0f}) {
-    add_static_box(world, {side * (half_width + 0.5f), wall_half_height}, {0.5f, wall_half_height}, ground);
+    add_static_box(world, {side * (half_width + 0.5f), wall_half_height}, {0.5f, wall_half_height},
+                   ground);
   }
   for (int i = 0; i < count; ++i) {
     const int row = i / per_row, column = i % per_row;

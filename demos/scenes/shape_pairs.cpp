@@ -3,11 +3,11 @@
 /// kind B falls on a body of kind A that rests on a pad. A is created before B, so the pair's
 /// first body (the smaller slot) is A and the contact goes through collide[A][B]; the nine
 /// cells cover both orders of every pair of kinds.
+#include <array>
+
 #include "core/world.h"
 #include "demos/scene.h"
 #include "demos/scene_helpers.h"
-
-#include <array>
 
 namespace impulse2d::demos::scenes {
 namespace {
@@ -16,9 +16,12 @@ constexpr float cell_size = 4.0f;  // metres
 
 Shape shape_of_kind(ShapeType kind) {
   switch (kind) {
-    case ShapeType::Circle: return make_circle(0.6f);
-    case ShapeType::Box: return make_box({0.6f, 0.45f});
-    case ShapeType::Polygon: break;
+    case ShapeType::Circle:
+      return make_circle(0.6f);
+    case ShapeType::Box:
+      return make_box({0.6f, 0.45f});
+    case ShapeType::Polygon:
+      break;
   }
   const std::array<vec2, 5> pentagon = {vec2{0.6f, -0.45f}, vec2{0.75f, 0.25f}, vec2{0.0f, 0.65f},
                                         vec2{-0.75f, 0.25f}, vec2{-0.6f, -0.45f}};
@@ -30,7 +33,8 @@ void build(World& world, const Params&) {
   const Material pad = materials::static_ground();
   for (int row = 0; row < 3; ++row) {
     for (int column = 0; column < 3; ++column) {
-      const vec2 origin{cell_size * static_cast<float>(column), -cell_size * static_cast<float>(row)};
+      const vec2 origin{cell_size * static_cast<float>(column),
+                        -cell_size * static_cast<float>(row)};
       add_static_box(world, origin, {1.5f, 0.2f}, pad);
       add_body(world, BodyType::Dynamic, shape_of_kind(kinds[row]), origin + vec2{0.0f, 0.9f},
                materials::wood());

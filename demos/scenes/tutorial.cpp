@@ -4,19 +4,19 @@
 /// every surface is frictionless (part 1: bodies slide off the platform), on the right the
 /// tutorial's materials keep their friction (part 3: they come to rest). Both copies receive
 /// the same bodies at the same places.
+#include <vector>
+
 #include "core/world.h"
 #include "demos/scene.h"
 #include "demos/scene_helpers.h"
 
-#include <vector>
-
 namespace impulse2d::demos::scenes {
 namespace {
 
-constexpr float half_offset = 11.0f;     // x of each copy's centre, metres
-constexpr float spawn_height = 15.0f;    // metres
-constexpr float spawn_half_width = 4.5f; // spawns in [-w, w] around a copy's centre, metres
-constexpr float lost_below = -10.0f;     // bodies that fall below this are removed, metres
+constexpr float half_offset = 11.0f;      // x of each copy's centre, metres
+constexpr float spawn_height = 15.0f;     // metres
+constexpr float spawn_half_width = 4.5f;  // spawns in [-w, w] around a copy's centre, metres
+constexpr float lost_below = -10.0f;      // bodies that fall below this are removed, metres
 constexpr std::uint32_t left_layer = 1u, right_layer = 2u;
 
 /// Drops one random body on each copy every `interval` steps until `count` have fallen, and
@@ -32,17 +32,17 @@ class Rain final : public StepScript {
     remove_lost_bodies(world);
     if (step % interval_ != 0 || dropped_ >= count_) return;
     ++dropped_;
-    const std::vector<Material> falling = {materials::rock(), materials::wood(), materials::metal(),
-                                           materials::bouncy_ball(), materials::super_ball(),
-                                           materials::pillow()};
+    const std::vector<Material> falling = {materials::rock(),       materials::wood(),
+                                           materials::metal(),      materials::bouncy_ball(),
+                                           materials::super_ball(), materials::pillow()};
     const Material material = falling[static_cast<std::size_t>(random_.integer(0, 5))];
     const bool circle = random_.unit() < 0.5f;
     const Shape shape = circle ? make_circle(random_.uniform(0.35f, 0.9f))
                                : random_convex_polygon(random_, random_.uniform(0.5f, 1.1f));
     const float x = random_.uniform(-spawn_half_width, spawn_half_width);
     const float angle = random_.uniform(0.0f, 6.2831853f);
-    add_body(world, BodyType::Dynamic, shape, {x - half_offset, spawn_height}, frictionless(material),
-             angle, left_layer);
+    add_body(world, BodyType::Dynamic, shape, {x - half_offset, spawn_height},
+             frictionless(material), angle, left_layer);
     add_body(world, BodyType::Dynamic, shape, {x + half_offset, spawn_height}, material, angle,
              right_layer);
   }
