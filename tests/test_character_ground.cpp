@@ -426,3 +426,56 @@ TEST(CharacterSettings, InvalidValuesAreRejectedByName) {
   }
   EXPECT_THROW(window_steps(0.1f, 0.0f), Error);
 }
+
+// ---- overlays ----------------------------------------------------------------------------
+
+namespace {
+
+// Records what `Character::draw` emits.
+class DrawRecorder final : public DebugDraw {
+ public:
+  void draw_solid_polygon(const vec2*, int, Color, Color) override {}
+  void draw_solid_circle(vec2, float, vec2, Color, Color) override {}
+  void draw_segment(vec2, vec2, Color) override { ++segments; }
+  void draw_arrow(vec2 from, vec2 to, Color) override { arrows.push_back(to - from); }
+  void draw_point(vec2, float, Color) override { ++points; }
+  void draw_text(vec2, const std::string& text, Color) override { label = text; }
+  std::vector<vec2> arrows;
+  int segments = 0;
+  int points = 0;
+  std::string label;
+};
+
+}  // namespace
+
+TEST(CharacterOverlay, GroundNormalTimersAndJumpsLeft) {
+  const float dt = 1.0f / 60;
+  World world(settings_at(dt));
+  add_floor(world, -20.0f, 0.0f, 0.0f);
+  CharacterDef def;
+  def.position = {-0.5f, 0.5f};
+  def.settings.extra_jumps = 2;
+  Character character(world, def);
+  InputScript idle;
+  run(world, character, idle, 10, nullptr);
+  DrawRecorder grounded;
+  character.draw(world, grounded);
+  ASSERT_EQ(grounded.arrows.size(), 1u);  // the ground normal, 0.6 m long, straight up
+  EXPECT_NEAR(grounded.arrows[0].x, 0.0f, 1e-6);
+  EXPECT_NEAR(grounded.arrows[0].y, 0.6f, 1e-6);
+  EXPECT_EQ(grounded.points, 2);           // one dot per extra jump left
+  EXPECT_EQ(grounded.segments, 2);         // empty coyote and buffer tracks
+  EXPECT_EQ(grounded.label, "coyote 0/6  buffer 0/6  jumps 2");
+
+  // Two steps after walking off the edge: 4 of the 6 coyote steps are left.
+  InputScript walk;
+  walk.set(0, CharacterInput{1.0f, false, false});
+  while (character.grounded()) run(world, character, walk, 1, nullptr);
+  run(world, character, walk, 1, nullptr);
+  EXPECT_EQ(character.steps_since_grounded(), 2);
+  DrawRecorder falling;
+  character.draw(world, falling);
+  EXPECT_TRUE(falling.arrows.empty());
+  EXPECT_EQ(falling.segments, 3);  // both tracks and the coyote bar
+  EXPECT_EQ(falling.label, "coyote 4/6  buffer 0/6  jumps 2");
+}
