@@ -3,6 +3,7 @@
 /// and alpha differences, failure classes, sidecars, update modes, artifacts, the HTML
 /// report and the promote script.
 
+#include "tests/test_golden_temp_dir.h"
 #include "tools/golden/artifacts.h"
 #include "tools/golden/base64.h"
 #include "tools/golden/body_drift.h"
@@ -22,7 +23,6 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -38,27 +38,7 @@ using nlohmann::json;
 
 constexpr Rgba kBackground{30, 60, 90, 255};
 
-/// A fresh directory for one test, removed when the test ends.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("impulse2d_golden_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using testing::TempDir;
 
 /// Adds `delta` to the red channel of every pixel in the square [x, x+size) x [y, y+size).
 void shift_red(Image& image, int x, int y, int size, int delta) {

@@ -1,0 +1,24 @@
+# The golden-image suite: one test per golden of the built-in scenes, the golden inventory
+# (unused or unpaired files), sensitivity to small physics changes, insensitivity to the
+# rasteriser's thread count (child processes). Goldens live in golden_images/; failures leave
+# their artifacts and index.html in GOLDEN_ARTIFACT_DIR (default: <build>/golden_artifacts).
+if(TARGET impulse2d_golden_scenes)
+  impulse2d_add_test(test_golden
+    SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_scenes.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_inventory.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_sensitivity.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_threads.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_support.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_render_support.cpp
+    LIBS impulse2d_golden_scenes)
+  target_compile_definitions(test_golden PRIVATE
+    IMPULSE2D_GOLDEN_DIR="${PROJECT_SOURCE_DIR}/golden_images"
+    IMPULSE2D_GOLDEN_ARTIFACT_DIR="${PROJECT_BINARY_DIR}/golden_artifacts")
+endif()
+
+# The check runner on synthetic frame producers and the `impulse2d diff` command: no
+# renderer, no scenes.
+impulse2d_add_test(test_golden_harness
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_check_run.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_diff_command.cpp
+  LIBS impulse2d_golden)

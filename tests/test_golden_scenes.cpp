@@ -1,0 +1,39 @@
+/// @file test_golden_scenes.cpp
+/// One test per golden image: the built-in scene simulated to the golden's step, rendered,
+/// and compared (exact first, then the sidecar's tolerance). A failure is classified, its
+/// artifacts land under GOLDEN_ARTIFACT_DIR with the HTML report; GOLDEN_UPDATE writes
+/// goldens (never under CI).
+#include "tests/test_golden_support.h"
+#include "tools/golden_scenes/golden_catalog.h"
+#include "tools/golden_scenes/scene_frame.h"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <ostream>
+
+namespace impulse2d::golden {
+
+/// Prints a golden parameter as its id (GoogleTest would dump its bytes).
+void PrintTo(const GoldenSpec& spec, std::ostream* out) { *out << spec.id(); }
+
+namespace {
+
+class GoldenScenes : public ::testing::TestWithParam<GoldenSpec> {};
+
+TEST_P(GoldenScenes, MatchesGolden) {
+  const GoldenSpec& spec = GetParam();
+  const CheckOutcome outcome =
+      run_golden_check(spec.id(), spec.scene, static_cast<int>(spec.step),
+                       scene_frame_producer(spec), testing::suite_settings());
+  if (outcome.golden_written) std::cout << outcome.message() << "\n";
+  EXPECT_TRUE(outcome.passed()) << outcome.message();
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, GoldenScenes, ::testing::ValuesIn(golden_catalog()),
+                         [](const ::testing::TestParamInfo<GoldenSpec>& param_info) {
+                           return golden_test_name(param_info.param);
+                         });
+
+}  // namespace
+}  // namespace impulse2d::golden

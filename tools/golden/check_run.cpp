@@ -1,0 +1,161 @@
+/// @file check_run.cpp
+#include "tools/golden/check_run.h"
+
+#include "tools/golden/artifacts.h"
+#include "tools/golden/compare.h"
+#include "tools/golden/error.h"
+#include "tools/golden/report.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <memory>
+#include <optional>
+
+namespace impulse2d::golden {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Holds an exclusive lock on <root>/.lock while alive, so test processes running in
+/// parallel do not interleave writing artifacts and regenerating the report.
+class RootLock {
+ public:
+  explicit RootLock(const fs::path& root) {
+    fs::create_directories(root);
+    const fs::path file = root / ".lock";
+    descriptor_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (descriptor_ < 0 || ::flock(descriptor_, LOCK_EX) != 0) {
+      if (descriptor_ >= 0) ::close(descriptor_);
+      throw GoldenError("cannot lock '" + file.string() + "'");
+    }
+  }
+  ~RootLock() {
+    ::flock(descriptor_, LOCK_UN);
+    ::close(descriptor_);
+  }
+  RootLock(const RootLock&) = delete;
+  RootLock& operator=(const RootLock&) = delete;
+
+ private:
+  int descriptor_ = -1;
+};
+
+/// The sidecar that would make `frame` this check's golden.
+Sidecar sidecar_for(const std::string& scene, int frame, const ProducedFrame& produced,
+                    const Tolerance& tolerance) {
+  Sidecar sidecar;
+  sidecar.scene = scene;
+  sidecar.frame = frame;
+  sidecar.width = produced.image.width;
+  sidecar.height = produced.image.height;
+  sidecar.state_hash = produced.state_hash;
+  sidecar.renderer = produced.renderer;
+  sidecar.tolerance = tolerance;
+  sidecar.bodies = produced.bodies;
+  return sidecar;
+}
+
+/// True when the first production already settles the check as a pass.
+bool matches(const GoldenCheck& check) { return classify_failure(check) == FailureClass::None; }
+
+}  // namespace
+
+std::string CheckOutcome::message() const {
+  if (golden_written) {
+    return "golden '" + check.name + "' written (" + failure_class_name(failure_class) +
+           " before the update); review it with git diff before committing";
+  }
+  if (failure_class == FailureClass::None) return "golden '" + check.name + "' matches";
+  std::string text = failure_message(check);
+  if (!artifact_dir.empty()) text += "\nartifacts: " + artifact_dir.string();
+  if (!report.empty()) text += "\nreport: " + report.string();
+  return text;
+}
+
+CheckSettings check_settings_from_environment(const fs::path& golden_dir,
+                                              const fs::path& artifact_root) {
+  CheckSettings settings;
+  const char* golden_override = std::getenv("GOLDEN_IMAGES_DIR");
+  settings.golden_dir =
+      golden_override != nullptr && golden_override[0] != '\0' ? fs::path(golden_override)
+                                                               : golden_dir;
+  settings.artifact_root = artifact_root_from_environment(artifact_root);
+  settings.update_mode = update_mode_from_environment().mode;
+  return settings;
+}
+
+fs::path golden_png_path(const fs::path& golden_dir, const std::string& name) {
+  return golden_dir / fs::path(name + ".png");
+}
+
+CheckOutcome run_golden_check(const std::string& name, const std::string& scene, int frame,
+                              const FrameProducer& produce, const CheckSettings& settings) {
+  const fs::path png = golden_png_path(settings.golden_dir, name);
+  const fs::path sidecar_file = sidecar_path_for(png);
+
+  CheckOutcome outcome;
+  GoldenCheck& check = outcome.check;
+  check.name = name;
+  check.golden_present = fs::exists(png) && fs::exists(sidecar_file);
+
+  std::optional<Image> expected;
+  std::optional<Sidecar> golden_sidecar;
+  if (check.golden_present) {
+    golden_sidecar = read_sidecar(sidecar_file, name + ".json");
+    expected = load_png(png);
+    check.expected_state_hash = golden_sidecar->state_hash;
+    check.expected_renderer = golden_sidecar->renderer;
+  }
+  const Tolerance tolerance = golden_sidecar ? golden_sidecar->tolerance : Tolerance{};
+
+  const ProducedFrame actual = produce();
+  check.actual_state_hash = actual.state_hash;
+  check.actual_renderer = actual.renderer;
+  if (expected) check.comparison = compare_images(*expected, actual.image, tolerance);
+
+  if (!matches(check)) {
+    const ProducedFrame again = produce();
+    check.second_render_identical = again.state_hash == actual.state_hash &&
+                                    rgba_hash(again.image) == rgba_hash(actual.image) &&
+                                    again.image.width == actual.image.width &&
+                                    again.image.height == actual.image.height;
+    if (golden_sidecar && golden_sidecar->state_hash != actual.state_hash) {
+      check.moved_bodies =
+          largest_drifts(golden_sidecar->bodies, actual.bodies, settings.drift_count);
+    }
+  }
+  outcome.failure_class = classify_failure(check);
+
+  const Sidecar actual_sidecar = sidecar_for(scene, frame, actual, tolerance);
+  if (should_write_golden(settings.update_mode, outcome.failure_class)) {
+    save_png(png, actual.image);
+    write_sidecar(sidecar_file, actual_sidecar);
+    outcome.golden_written = true;
+  }
+
+  if (settings.artifact_root.empty()) return outcome;
+  const RootLock lock(settings.artifact_root);
+  if (outcome.passed()) {
+    // A failure of an earlier run must not linger in the report once the golden passes.
+    const fs::path stale = settings.artifact_root / fs::path(name);
+    if (fs::exists(stale / "metrics.json")) {
+      fs::remove_all(stale);
+      write_html_report(settings.artifact_root);
+    }
+    return outcome;
+  }
+  const bool promotable = outcome.failure_class != FailureClass::Nondeterminism;
+  outcome.artifact_dir =
+      write_failure_artifacts(settings.artifact_root, check, actual.image,
+                              expected ? &*expected : nullptr,
+                              promotable ? &actual_sidecar : nullptr);
+  write_html_report(settings.artifact_root);
+  outcome.report = settings.artifact_root / "index.html";
+  return outcome;
+}
+
+}  // namespace impulse2d::golden

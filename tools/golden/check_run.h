@@ -1,0 +1,81 @@
+#pragma once
+/// @file check_run.h
+/// One golden check from start to finish, for any source of frames: produce the frame,
+/// compare it with golden_images/<name>.png under its sidecar's tolerance, on a mismatch
+/// produce it again to rule out nondeterminism, classify, leave the artifacts and the HTML
+/// report, and write the golden when the update mode says so.
+
+#include "tools/golden/body_drift.h"
+#include "tools/golden/failure.h"
+#include "tools/golden/image.h"
+#include "tools/golden/sidecar.h"
+#include "tools/golden/update_mode.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace impulse2d::golden {
+
+/// One production of a golden's frame: the pixels and the physics state behind them.
+struct ProducedFrame {
+  Image image;                    ///< the rendered frame
+  std::uint64_t state_hash = 0;   ///< the world's state hash at that frame
+  std::vector<BodyPose> bodies;   ///< every body's pose at that frame, for drift reports
+  RendererFingerprint renderer;   ///< what drew it
+};
+
+/// Simulates and renders a golden's frame from scratch. Called once per check, and a second
+/// time only when the first result does not match the golden (or there is none).
+using FrameProducer = std::function<ProducedFrame()>;
+
+/// What a check needs besides the frame.
+struct CheckSettings {
+  std::filesystem::path golden_dir;     ///< the golden set, e.g. <source>/golden_images
+  /// Where failures leave their artifacts and index.html; empty: write none.
+  std::filesystem::path artifact_root;
+  UpdateMode update_mode = UpdateMode::None;  ///< which goldens this run may write
+  std::size_t drift_count = 5;  ///< how many moved bodies a divergence message names
+};
+
+/// The outcome of `run_golden_check`.
+struct CheckOutcome {
+  GoldenCheck check;  ///< everything measured
+  FailureClass failure_class = FailureClass::None;  ///< `classify_failure(check)`
+  /// True when the update mode wrote the golden (then the check counts as passed).
+  bool golden_written = false;
+  /// The failure's artifact directory; empty when none was written.
+  std::filesystem::path artifact_dir;
+  /// The regenerated HTML report; empty when none was written.
+  std::filesystem::path report;
+
+  /// True when the frame matched its golden or the run wrote the golden on request.
+  bool passed() const { return failure_class == FailureClass::None || golden_written; }
+  /// `failure_message(check)`, then where the artifacts and report are; for passes, a line
+  /// saying so (and that the golden was written, when it was).
+  std::string message() const;
+};
+
+/// Settings from the environment: GOLDEN_IMAGES_DIR (else `golden_dir`), GOLDEN_ARTIFACT_DIR
+/// (else `artifact_root`), and the update mode from GOLDEN_UPDATE and CI
+/// (`update_mode_from_environment`). Throws `GoldenError` for a bad GOLDEN_UPDATE.
+CheckSettings check_settings_from_environment(const std::filesystem::path& golden_dir,
+                                              const std::filesystem::path& artifact_root);
+
+/// The golden's PNG for `name` ("<scene>/<golden>") in `golden_dir`.
+std::filesystem::path golden_png_path(const std::filesystem::path& golden_dir,
+                                      const std::string& name);
+
+/// Runs one check. The golden counts as present when both its PNG and its sidecar exist.
+/// A failure writes `write_failure_artifacts` (the actual's sidecar carries the golden's
+/// tolerance, or the strict default) and regenerates the report under the artifact root,
+/// one process at a time (a lock file in the root); a pass removes a stale failure
+/// directory of the same name. Throws `GoldenError` for unreadable goldens or sidecars and
+/// failed writes, and whatever `produce` throws.
+CheckOutcome run_golden_check(const std::string& name, const std::string& scene, int frame,
+                              const FrameProducer& produce, const CheckSettings& settings);
+
+}  // namespace impulse2d::golden

@@ -1,0 +1,80 @@
+/// @file diff_command.cpp
+#include "tools/golden/diff_command.h"
+
+#include "tools/golden/compare.h"
+#include "tools/golden/compare_json.h"
+#include "tools/golden/diff_images.h"
+#include "tools/golden/error.h"
+#include "tools/golden/file_io.h"
+#include "tools/golden/image.h"
+#include "tools/golden/report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+
+namespace impulse2d::golden {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+/// Writes the images, metrics.json and index.html of a mismatch into `directory`; returns
+/// the report's path.
+fs::path write_diff_artifacts(const fs::path& directory, const std::string& title,
+                              const CompareResult& result, const Image& expected,
+                              const Image& actual) {
+  json files = json::object();
+  auto write_png = [&](const std::string& key, const Image& image) {
+    save_png(directory / (key + ".png"), image);
+    files[key] = key + ".png";
+  };
+  write_png("expected", expected);
+  write_png("actual", actual);
+  if (result.outcome != CompareOutcome::SizeMismatch) {
+    write_png("diff", diff_overlay(expected, actual, result.tolerance.max_channel_delta));
+    write_png("heatmap", diff_heatmap(expected, actual));
+  }
+  const bool size_mismatch = result.outcome == CompareOutcome::SizeMismatch;
+  const std::string class_name = result.passed() ? "within tolerance"
+                                 : size_mismatch ? "size mismatch"
+                                                 : "images differ";
+  std::string class_id = class_name;
+  std::replace(class_id.begin(), class_id.end(), ' ', '_');
+  const json metrics = {{"name", title},
+                        {"class", class_id},
+                        {"class_name", class_name},
+                        {"message", result.message()},
+                        {"comparison", comparison_to_json(result)},
+                        {"files", files}};
+  write_text_file_atomically(directory / "metrics.json", metrics.dump(2) + "\n");
+  write_html_report(directory);
+  return directory / "index.html";
+}
+
+}  // namespace
+
+int run_diff_command(const std::string& expected_png, const std::string& actual_png,
+                     const std::string& out_dir, std::ostream& out, std::ostream& err,
+                     const Tolerance& tolerance) {
+  try {
+    const Image expected = load_png(expected_png);
+    const Image actual = load_png(actual_png);
+    const CompareResult result = compare_images(expected, actual, tolerance);
+    out << expected_png << " vs " << actual_png << ": " << result.message() << "\n";
+    if (result.outcome != CompareOutcome::ExactMatch && !out_dir.empty()) {
+      const fs::path report = write_diff_artifacts(
+          out_dir, expected_png + " vs " + actual_png, result, expected, actual);
+      out << "report: " << report.string() << "\n";
+    }
+    return result.passed() ? kDiffSame : kDiffDiffers;
+  } catch (const GoldenError& error) {
+    err << "impulse2d diff: " << error.what() << "\n";
+    return kDiffError;
+  }
+}
+
+}  // namespace impulse2d::golden

@@ -1,0 +1,30 @@
+#pragma once
+/// @file diff_command.h
+/// `impulse2d diff a.png b.png [--out DIR]`: compares two PNG files as the golden suite does
+/// (exact match on decoded RGBA first, metrics only on a mismatch) and, with an output
+/// directory, leaves the difference as images, metrics.json and an HTML report.
+
+#include "tools/golden/tolerance.h"
+
+#include <iosfwd>
+#include <string>
+
+namespace impulse2d::golden {
+
+/// Exit status of `run_diff_command`: the images match (exactly or within tolerance).
+inline constexpr int kDiffSame = 0;
+/// Exit status of `run_diff_command`: the images differ beyond tolerance or in size.
+inline constexpr int kDiffDiffers = 1;
+/// Exit status of `run_diff_command`: an input could not be read or an output written.
+inline constexpr int kDiffError = 2;
+
+/// Compares `expected_png` (a) with `actual_png` (b) under `tolerance` (strict by default)
+/// and prints one verdict paragraph to `out`. When they are not an exact match and `out_dir`
+/// is not empty, writes into it expected.png, actual.png, diff.png and heatmap.png (the last
+/// two when the sizes agree), metrics.json and index.html, and prints the report's path.
+/// Errors go to `err`, naming the file. Returns kDiffSame, kDiffDiffers or kDiffError.
+int run_diff_command(const std::string& expected_png, const std::string& actual_png,
+                     const std::string& out_dir, std::ostream& out, std::ostream& err,
+                     const Tolerance& tolerance = Tolerance{});
+
+}  // namespace impulse2d::golden

@@ -1,0 +1,38 @@
+#pragma once
+/// @file scene_frame.h
+/// A built-in scene simulated to a golden's step and rendered at the golden size: the frame
+/// producer of the golden suite.
+
+#include "tools/golden/check_run.h"
+#include "tools/golden_scenes/golden_catalog.h"
+
+#include <functional>
+
+namespace impulse2d::demos {
+struct Scene;
+}
+
+namespace impulse2d::render {
+class FrameRenderer;
+}
+
+namespace impulse2d::golden {
+
+/// Changes a copy of a scene before it runs, e.g. a solver setting for sensitivity tests.
+using SceneVariant = std::function<void(demos::Scene&)>;
+
+/// The renderer of this process at kGoldenWidth x kGoldenHeight, created on first use and
+/// shared by every golden check in the process (one OSMesa context per process).
+render::FrameRenderer& shared_golden_renderer();
+
+/// Simulates `spec`'s scene (with `variant` applied, when given) from scratch to `spec.step`
+/// with the scene's camera, then renders it with the HUD and legend as `impulse2d` draws
+/// them. Bodies are named "body <slot>", with the slot's generation when it was reused.
+/// Throws `GoldenError` for an unknown scene, and whatever the scene's run throws.
+ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
+                                  const SceneVariant& variant = nullptr);
+
+/// A `FrameProducer` of `produce_scene_frame` on the shared renderer.
+FrameProducer scene_frame_producer(const GoldenSpec& spec, const SceneVariant& variant = nullptr);
+
+}  // namespace impulse2d::golden
