@@ -46,8 +46,12 @@ void SleepIslands::update(std::vector<Body>& bodies, const std::vector<std::uint
       return body.type == BodyType::Kinematic &&
              (body.linear_velocity != vec2(0.0f) || body.angular_velocity != 0.0f);
     };
-    if (is_moving_kinematic(a) && b_dynamic) b.sleep_time = 0.0f;
-    if (is_moving_kinematic(b) && a_dynamic) a.sleep_time = 0.0f;
+    auto disturb = [](Body& body) {
+      body.awake = true;
+      body.sleep_time = 0.0f;
+    };
+    if (is_moving_kinematic(a) && b_dynamic) disturb(b);
+    if (is_moving_kinematic(b) && a_dynamic) disturb(a);
   }
 
   for (std::uint32_t i = 0; i < count; ++i) {

@@ -79,3 +79,20 @@ TEST(Sleeping, ARestingStackFallsAsleepAndWakesWhenHit) {
   for (int i = 0; i < 20; ++i) world.step();
   EXPECT_TRUE(world.body(top).awake);
 }
+
+TEST(Sleeping, AMovingKinematicBodyWakesWhatItPushes) {
+  WorldSettings settings;
+  settings.enable_sleeping = true;
+  World world(settings);
+  const BodyId box = build_stack(world, 1, make_oriented_box({0.5f, 0.5f}), 0.5f);
+  for (int i = 0; i < 120; ++i) world.step();
+  ASSERT_FALSE(world.body(box).awake);
+  BodyDef pusher;
+  pusher.type = BodyType::Kinematic;
+  pusher.position = {-1.2f, 0.5f};
+  pusher.linear_velocity = {1.0f, 0.0f};
+  world.create_body(pusher, make_box({0.5f, 0.4f}));
+  for (int i = 0; i < 60; ++i) world.step();
+  EXPECT_TRUE(world.body(box).awake);
+  EXPECT_GT(world.body(box).transform.position.x, 0.5f);  // pushed along, not overlapped
+}
