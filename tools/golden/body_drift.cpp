@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -44,6 +45,7 @@ std::vector<BodyDrift> largest_drifts(const std::vector<BodyPose>& golden,
 std::string describe_drifts(const std::vector<BodyDrift>& drifts) {
   if (drifts.empty()) return "no body moved";
   std::ostringstream text;
+  text << std::setprecision(3);  // "0.000678 m", "24.2 m": enough to tell drifts apart
   for (std::size_t i = 0; i < drifts.size(); ++i) {
     const BodyDrift& drift = drifts[i];
     if (i > 0) text << "; ";

@@ -31,8 +31,8 @@ struct BodyDrift {
 std::vector<BodyDrift> largest_drifts(const std::vector<BodyPose>& golden,
                                       const std::vector<BodyPose>& actual, std::size_t count);
 
-/// "box 3 moved 0.42 m, turned 0.10 rad; ..." for failure messages; "no body moved" when
-/// the list is empty.
+/// "box 3 moved 0.42 m, turned 0.1 rad; ..." (3 significant digits) for failure messages;
+/// "no body moved" when the list is empty.
 std::string describe_drifts(const std::vector<BodyDrift>& drifts);
 
 }  // namespace impulse2d::golden
