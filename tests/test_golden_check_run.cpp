@@ -3,6 +3,7 @@
 /// promotable actual, update modes write goldens, each failure class is told apart, a
 /// nondeterministic frame is never written, stale artifacts leave the report once a golden
 /// passes.
+#include "tests/test_golden_environment.h"
 #include "tests/test_golden_temp_dir.h"
 #include "tools/golden/check_run.h"
 #include "tools/golden/file_io.h"
@@ -18,6 +19,7 @@ namespace impulse2d::golden {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::ScopedEnvironment;
 using testing::TempDir;
 
 constexpr const char* kName = "boxes/settled";
@@ -211,16 +213,18 @@ TEST_F(GoldenCheckRun, NoArtifactRootWritesNoArtifacts) {
 }
 
 TEST(GoldenCheckSettings, EnvironmentOverridesDirectoriesAndCiForcesNone) {
-  ::setenv("GOLDEN_IMAGES_DIR", "/tmp/goldens-here", 1);
-  ::setenv("GOLDEN_ARTIFACT_DIR", "/tmp/artifacts-here", 1);
-  ::setenv("GOLDEN_UPDATE", "all", 1);
-  ::setenv("CI", "true", 1);
+  ScopedEnvironment environment;
+  environment.set("GOLDEN_IMAGES_DIR", "/tmp/goldens-here");
+  environment.set("GOLDEN_ARTIFACT_DIR", "/tmp/artifacts-here");
+  environment.set("GOLDEN_UPDATE", "all");
+  environment.set("CI", "true");
   const CheckSettings settings = check_settings_from_environment("/src/golden", "/build/art");
   EXPECT_EQ(settings.golden_dir, "/tmp/goldens-here");
   EXPECT_EQ(settings.artifact_root, "/tmp/artifacts-here");
   EXPECT_EQ(settings.update_mode, UpdateMode::None);
+
   for (const char* name : {"GOLDEN_IMAGES_DIR", "GOLDEN_ARTIFACT_DIR", "GOLDEN_UPDATE", "CI"}) {
-    ::unsetenv(name);
+    environment.set(name, nullptr);
   }
   const CheckSettings defaults = check_settings_from_environment("/src/golden", "/build/art");
   EXPECT_EQ(defaults.golden_dir, "/src/golden");

@@ -3,6 +3,7 @@
 /// and alpha differences, failure classes, sidecars, update modes, artifacts, the HTML
 /// report and the promote script.
 
+#include "tests/test_golden_environment.h"
 #include "tests/test_golden_temp_dir.h"
 #include "tools/golden/artifacts.h"
 #include "tools/golden/base64.h"
@@ -510,18 +511,19 @@ TEST(GoldenUpdateMode, CiForcesNoneAndSaysWhy) {
 }
 
 TEST(GoldenUpdateMode, ReadsTheEnvironment) {
-  ::setenv("GOLDEN_UPDATE", "missing", 1);
-  ::setenv("CI", "false", 1);
+  testing::ScopedEnvironment environment;
+  environment.set("GOLDEN_UPDATE", "missing");
+  environment.set("CI", "false");
   EXPECT_EQ(update_mode_from_environment().mode, UpdateMode::Missing);
-  ::setenv("CI", "true", 1);
+  environment.set("CI", "true");
   EXPECT_EQ(update_mode_from_environment().mode, UpdateMode::None);
-  ::unsetenv("GOLDEN_UPDATE");
-  ::unsetenv("CI");
+  environment.set("GOLDEN_UPDATE", nullptr);
+  environment.set("CI", nullptr);
   EXPECT_EQ(update_mode_from_environment().mode, UpdateMode::None);
 
-  ::setenv("GOLDEN_ARTIFACT_DIR", "/tmp/chosen", 1);
+  environment.set("GOLDEN_ARTIFACT_DIR", "/tmp/chosen");
   EXPECT_EQ(artifact_root_from_environment("build/golden"), fs::path("/tmp/chosen"));
-  ::unsetenv("GOLDEN_ARTIFACT_DIR");
+  environment.set("GOLDEN_ARTIFACT_DIR", nullptr);
   EXPECT_EQ(artifact_root_from_environment("build/golden"), fs::path("build/golden"));
 }
 
