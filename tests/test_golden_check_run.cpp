@@ -3,17 +3,17 @@
 /// promotable actual, update modes write goldens, each failure class is told apart, a
 /// nondeterministic frame is never written, stale artifacts leave the report once a golden
 /// passes.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
 #include "tests/test_golden_environment.h"
 #include "tests/test_golden_temp_dir.h"
 #include "tools/golden/check_run.h"
 #include "tools/golden/file_io.h"
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
-#include <cstdlib>
-#include <filesystem>
-#include <string>
 
 namespace impulse2d::golden {
 namespace {
@@ -77,7 +77,7 @@ TEST_F(GoldenCheckRun, MissingGoldenFailsAndLeavesAPromotableActual) {
   EXPECT_EQ(sidecar.bodies.size(), 2u);
   EXPECT_EQ(outcome.report, temp_.path() / "artifacts" / "index.html");
   EXPECT_TRUE(fs::exists(outcome.report));
-  EXPECT_NE(outcome.message().find("missing golden for golden 'boxes/settled'"), std::string::npos)
+  EXPECT_NE(outcome.message().find("golden 'boxes/settled': missing golden: "), std::string::npos)
       << outcome.message();
   EXPECT_NE(outcome.message().find("report: "), std::string::npos);
 }
@@ -95,7 +95,8 @@ TEST_F(GoldenCheckRun, MissingModeWritesTheGoldenAndAPassClearsStaleArtifacts) {
   const CheckOutcome again = check(fixed(5, 1));
   EXPECT_EQ(again.failure_class, FailureClass::None) << again.message();
   EXPECT_FALSE(again.golden_written);
-  EXPECT_FALSE(fs::exists(failure_dir())) << "the stale failure must leave the report";
+  EXPECT_FALSE(fs::exists(failure_dir().parent_path()))
+      << "the stale failure must leave the report";
   const std::string report = read_text_file(temp_.path() / "artifacts" / "index.html");
   EXPECT_NE(report.find("0 failures"), std::string::npos);
 }
@@ -123,8 +124,8 @@ TEST_F(GoldenCheckRun, StateHashChangeIsSimulationDivergedNamingTheMovedBody) {
   ASSERT_EQ(outcome.check.moved_bodies.size(), 1u);
   EXPECT_EQ(outcome.check.moved_bodies[0].name, "body 1");
   EXPECT_NE(outcome.message().find("body 1 moved 0.3"), std::string::npos) << outcome.message();
-  for (const char* file : {"actual.png", "actual.json", "expected.png", "diff.png",
-                           "heatmap.png", "metrics.json"}) {
+  for (const char* file :
+       {"actual.png", "actual.json", "expected.png", "diff.png", "heatmap.png", "metrics.json"}) {
     EXPECT_TRUE(fs::exists(failure_dir() / file)) << file;
   }
   EXPECT_EQ(metrics()["class"], "simulation_diverged");
@@ -169,8 +170,7 @@ TEST_F(GoldenCheckRun, SidecarToleranceIsAppliedAndNamed) {
     return frame;
   });
   EXPECT_EQ(cluster.failure_class, FailureClass::RasterisationDiffers);
-  EXPECT_NE(cluster.message().find("override from sidecar 'boxes/settled.json'"),
-            std::string::npos)
+  EXPECT_NE(cluster.message().find("override from sidecar 'boxes/settled.json'"), std::string::npos)
       << cluster.message();
 }
 

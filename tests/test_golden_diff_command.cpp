@@ -1,16 +1,16 @@
 /// @file test_golden_diff_command.cpp
 /// `impulse2d diff a.png b.png [--out DIR]`: verdicts, exit statuses and the artifacts it
 /// leaves.
-#include "tests/test_golden_temp_dir.h"
-#include "tools/golden/diff_command.h"
-#include "tools/golden/file_io.h"
-#include "tools/golden/image.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <sstream>
 #include <string>
+
+#include "tests/test_golden_temp_dir.h"
+#include "tools/golden/diff_command.h"
+#include "tools/golden/file_io.h"
+#include "tools/golden/image.h"
 
 namespace impulse2d::golden {
 namespace {
@@ -20,9 +20,7 @@ using testing::TempDir;
 
 class GoldenDiffCommand : public ::testing::Test {
  protected:
-  GoldenDiffCommand() {
-    save_png(a_, make_image(20, 10, Rgba{10, 20, 30, 255}));
-  }
+  GoldenDiffCommand() { save_png(a_, make_image(20, 10, Rgba{10, 20, 30, 255})); }
   /// Runs the command on a.png and `b`; fills out_ and err_.
   int run(const fs::path& b, const fs::path& out_dir = {}) {
     out_.str("");

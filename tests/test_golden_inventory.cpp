@@ -1,17 +1,17 @@
 /// @file test_golden_inventory.cpp
 /// The golden set and the catalog agree: every built-in scene has goldens, every golden file
 /// is used by a test and has its partner, and each sidecar describes its catalog entry.
-#include "demos/scene_registry.h"
-#include "tests/test_golden_support.h"
-#include "tools/golden/inventory.h"
-#include "tools/golden/sidecar.h"
-#include "tools/golden_scenes/golden_catalog.h"
-
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
 #include <vector>
+
+#include "demos/scene_registry.h"
+#include "tests/test_golden_support.h"
+#include "tools/golden/inventory.h"
+#include "tools/golden/sidecar.h"
+#include "tools/golden_scenes/golden_catalog.h"
 
 namespace impulse2d::golden {
 namespace {
@@ -52,10 +52,9 @@ TEST(GoldenInventory, EveryGoldenFileIsUsedAndPaired) {
   EXPECT_TRUE(inventory.missing_image.empty())
       << "golden sidecars without a .png:" << join(inventory.missing_image);
   const std::vector<std::string> unused = unused_goldens(inventory.goldens, catalog_ids());
-  EXPECT_TRUE(unused.empty())
-      << "goldens no test uses (delete them, or add them to "
-         "tools/golden_scenes/golden_catalog.cpp):"
-      << join(unused);
+  EXPECT_TRUE(unused.empty()) << "goldens no test uses (delete them, or add them to "
+                                 "tools/golden_scenes/golden_catalog.cpp):"
+                              << join(unused);
 }
 
 TEST(GoldenInventory, SidecarsDescribeTheirCatalogEntry) {

@@ -3,14 +3,14 @@
 /// and compared (exact first, then the sidecar's tolerance). A failure is classified, its
 /// artifacts land under GOLDEN_ARTIFACT_DIR with the HTML report; GOLDEN_UPDATE writes
 /// goldens (never under CI).
-#include "tests/test_golden_support.h"
-#include "tools/golden_scenes/golden_catalog.h"
-#include "tools/golden_scenes/scene_frame.h"
-
 #include <gtest/gtest.h>
 
 #include <iostream>
 #include <ostream>
+
+#include "tests/test_golden_support.h"
+#include "tools/golden_scenes/golden_catalog.h"
+#include "tools/golden_scenes/scene_frame.h"
 
 namespace impulse2d::golden {
 

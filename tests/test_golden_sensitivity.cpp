@@ -3,16 +3,16 @@
 /// swapped, a coefficient or constant off by 5%, one solver iteration fewer) fails against
 /// the committed golden as *simulation diverged*, naming the bodies that moved; the
 /// unchanged run passes. Variants never write goldens or artifacts.
-#include "demos/scene.h"
-#include "tests/test_golden_support.h"
-#include "tools/golden_scenes/golden_catalog.h"
-#include "tools/golden_scenes/scene_frame.h"
-
 #include <gtest/gtest.h>
 
 #include <iostream>
 #include <ostream>
 #include <string>
+
+#include "demos/scene.h"
+#include "tests/test_golden_support.h"
+#include "tools/golden_scenes/golden_catalog.h"
+#include "tools/golden_scenes/scene_frame.h"
 
 namespace impulse2d::golden {
 namespace {

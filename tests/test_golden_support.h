@@ -3,9 +3,9 @@
 /// What the golden suites share: where the goldens and artifacts are, and the settings a
 /// check runs with.
 
-#include "tools/golden/check_run.h"
-
 #include <filesystem>
+
+#include "tools/golden/check_run.h"
 
 namespace impulse2d::golden::testing {
 

@@ -2,6 +2,12 @@
 /// The suite is insensitive to what does not matter: goldens rendered with LP_NUM_THREADS=1
 /// and =2 match the committed golden exactly, state hash included. llvmpipe reads the
 /// variable once per process, so each setting runs in a child process (this binary).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
 #include "tests/test_golden_support.h"
 #include "tests/test_render_support.h"
 #include "tools/golden/compare.h"
@@ -10,12 +16,6 @@
 #include "tools/golden/sidecar.h"
 #include "tools/golden_scenes/golden_catalog.h"
 #include "tools/golden_scenes/scene_frame.h"
-
-#include <gtest/gtest.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <string>
 
 namespace impulse2d::golden {
 namespace {
@@ -51,10 +51,10 @@ TEST(GoldenThreads, OneAndTwoRasteriserThreadsMatchTheGoldenExactly) {
     const Sidecar sidecar = read_sidecar(sidecar_path_for(golden), std::string(id) + ".json");
     for (const int threads : {1, 2}) {
       const fs::path output = directory / ("threads_" + std::to_string(threads) + ".png");
-      const int status = render::testing::run_self(
-          "GoldenThreadsChild.WriteFrame", {{"LP_NUM_THREADS", std::to_string(threads)},
-                                            {kGoldenVariable, id},
-                                            {kOutputVariable, output.string()}});
+      const int status = render::testing::run_self("GoldenThreadsChild.WriteFrame",
+                                                   {{"LP_NUM_THREADS", std::to_string(threads)},
+                                                    {kGoldenVariable, id},
+                                                    {kOutputVariable, output.string()}});
       ASSERT_EQ(status, 0) << id << ": child with LP_NUM_THREADS=" << threads << " failed";
       const CompareResult result = compare_images(expected, load_png(output));
       EXPECT_EQ(result.outcome, CompareOutcome::ExactMatch)

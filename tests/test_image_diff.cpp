@@ -332,7 +332,7 @@ TEST(GoldenFailure, EachClassIsRecognisedWithItsOwnMessage) {
   missing.comparison.reset();
   missing.expected_state_hash.reset();
   EXPECT_EQ(classify_failure(missing), FailureClass::MissingGolden);
-  EXPECT_NE(failure_message(missing).find("missing golden for golden 'circles/start'"),
+  EXPECT_NE(failure_message(missing).find("golden 'circles/start': missing golden: "),
             std::string::npos);
   EXPECT_NE(failure_message(missing).find("promote_goldens.sh"), std::string::npos);
 

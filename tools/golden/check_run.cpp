@@ -1,11 +1,6 @@
 /// @file check_run.cpp
 #include "tools/golden/check_run.h"
 
-#include "tools/golden/artifacts.h"
-#include "tools/golden/compare.h"
-#include "tools/golden/error.h"
-#include "tools/golden/report.h"
-
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -13,6 +8,11 @@
 #include <cstdlib>
 #include <memory>
 #include <optional>
+
+#include "tools/golden/artifacts.h"
+#include "tools/golden/compare.h"
+#include "tools/golden/error.h"
+#include "tools/golden/report.h"
 
 namespace impulse2d::golden {
 
@@ -80,9 +80,9 @@ CheckSettings check_settings_from_environment(const fs::path& golden_dir,
                                               const fs::path& artifact_root) {
   CheckSettings settings;
   const char* golden_override = std::getenv("GOLDEN_IMAGES_DIR");
-  settings.golden_dir =
-      golden_override != nullptr && golden_override[0] != '\0' ? fs::path(golden_override)
-                                                               : golden_dir;
+  settings.golden_dir = golden_override != nullptr && golden_override[0] != '\0'
+                            ? fs::path(golden_override)
+                            : golden_dir;
   settings.artifact_root = artifact_root_from_environment(artifact_root);
   settings.update_mode = update_mode_from_environment().mode;
   return settings;
@@ -144,15 +144,19 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
     const fs::path stale = settings.artifact_root / fs::path(name);
     if (fs::exists(stale / "metrics.json")) {
       fs::remove_all(stale);
+      for (fs::path parent = stale.parent_path();
+           parent != settings.artifact_root && fs::is_empty(parent);
+           parent = parent.parent_path()) {
+        fs::remove(parent);
+      }
       write_html_report(settings.artifact_root);
     }
     return outcome;
   }
   const bool promotable = outcome.failure_class != FailureClass::Nondeterminism;
-  outcome.artifact_dir =
-      write_failure_artifacts(settings.artifact_root, check, actual.image,
-                              expected ? &*expected : nullptr,
-                              promotable ? &actual_sidecar : nullptr);
+  outcome.artifact_dir = write_failure_artifacts(settings.artifact_root, check, actual.image,
+                                                 expected ? &*expected : nullptr,
+                                                 promotable ? &actual_sidecar : nullptr);
   write_html_report(settings.artifact_root);
   outcome.report = settings.artifact_root / "index.html";
   return outcome;

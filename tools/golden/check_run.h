@@ -5,12 +5,6 @@
 /// produce it again to rule out nondeterminism, classify, leave the artifacts and the HTML
 /// report, and write the golden when the update mode says so.
 
-#include "tools/golden/body_drift.h"
-#include "tools/golden/failure.h"
-#include "tools/golden/image.h"
-#include "tools/golden/sidecar.h"
-#include "tools/golden/update_mode.h"
-
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -18,14 +12,20 @@
 #include <string>
 #include <vector>
 
+#include "tools/golden/body_drift.h"
+#include "tools/golden/failure.h"
+#include "tools/golden/image.h"
+#include "tools/golden/sidecar.h"
+#include "tools/golden/update_mode.h"
+
 namespace impulse2d::golden {
 
 /// One production of a golden's frame: the pixels and the physics state behind them.
 struct ProducedFrame {
-  Image image;                    ///< the rendered frame
-  std::uint64_t state_hash = 0;   ///< the world's state hash at that frame
-  std::vector<BodyPose> bodies;   ///< every body's pose at that frame, for drift reports
-  RendererFingerprint renderer;   ///< what drew it
+  Image image;                   ///< the rendered frame
+  std::uint64_t state_hash = 0;  ///< the world's state hash at that frame
+  std::vector<BodyPose> bodies;  ///< every body's pose at that frame, for drift reports
+  RendererFingerprint renderer;  ///< what drew it
 };
 
 /// Simulates and renders a golden's frame from scratch. Called once per check, and a second
@@ -34,16 +34,16 @@ using FrameProducer = std::function<ProducedFrame()>;
 
 /// What a check needs besides the frame.
 struct CheckSettings {
-  std::filesystem::path golden_dir;     ///< the golden set, e.g. <source>/golden_images
+  std::filesystem::path golden_dir;  ///< the golden set, e.g. <source>/golden_images
   /// Where failures leave their artifacts and index.html; empty: write none.
   std::filesystem::path artifact_root;
   UpdateMode update_mode = UpdateMode::None;  ///< which goldens this run may write
-  std::size_t drift_count = 5;  ///< how many moved bodies a divergence message names
+  std::size_t drift_count = 5;                ///< how many moved bodies a divergence message names
 };
 
 /// The outcome of `run_golden_check`.
 struct CheckOutcome {
-  GoldenCheck check;  ///< everything measured
+  GoldenCheck check;                                ///< everything measured
   FailureClass failure_class = FailureClass::None;  ///< `classify_failure(check)`
   /// True when the update mode wrote the golden (then the check counts as passed).
   bool golden_written = false;

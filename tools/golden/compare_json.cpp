@@ -11,19 +11,26 @@ using nlohmann::json;
 
 std::string outcome_id(CompareOutcome outcome) {
   switch (outcome) {
-    case CompareOutcome::ExactMatch: return "exact_match";
-    case CompareOutcome::WithinTolerance: return "within_tolerance";
-    case CompareOutcome::ExceedsTolerance: return "exceeds_tolerance";
-    case CompareOutcome::SizeMismatch: return "size_mismatch";
+    case CompareOutcome::ExactMatch:
+      return "exact_match";
+    case CompareOutcome::WithinTolerance:
+      return "within_tolerance";
+    case CompareOutcome::ExceedsTolerance:
+      return "exceeds_tolerance";
+    case CompareOutcome::SizeMismatch:
+      return "size_mismatch";
   }
   return "unknown";
 }
 
 std::string rule_id(ToleranceRule rule) {
   switch (rule) {
-    case ToleranceRule::DifferingPixels: return "max_differing_pixels";
-    case ToleranceRule::DifferingRatio: return "max_differing_ratio";
-    case ToleranceRule::WindowDensity: return "max_window_pixels";
+    case ToleranceRule::DifferingPixels:
+      return "max_differing_pixels";
+    case ToleranceRule::DifferingRatio:
+      return "max_differing_ratio";
+    case ToleranceRule::WindowDensity:
+      return "max_window_pixels";
   }
   return "unknown";
 }

@@ -2,9 +2,9 @@
 /// @file compare_json.h
 /// A comparison as JSON, the form metrics.json files and the HTML report read.
 
-#include "tools/golden/compare.h"
-
 #include <nlohmann/json.hpp>
+
+#include "tools/golden/compare.h"
 
 namespace impulse2d::golden {
 

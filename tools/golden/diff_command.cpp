@@ -1,6 +1,11 @@
 /// @file diff_command.cpp
 #include "tools/golden/diff_command.h"
 
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
 #include "tools/golden/compare.h"
 #include "tools/golden/compare_json.h"
 #include "tools/golden/diff_images.h"
@@ -8,12 +13,6 @@
 #include "tools/golden/file_io.h"
 #include "tools/golden/image.h"
 #include "tools/golden/report.h"
-
-#include <nlohmann/json.hpp>
-
-#include <algorithm>
-#include <filesystem>
-#include <ostream>
 
 namespace impulse2d::golden {
 
@@ -66,8 +65,8 @@ int run_diff_command(const std::string& expected_png, const std::string& actual_
     const CompareResult result = compare_images(expected, actual, tolerance);
     out << expected_png << " vs " << actual_png << ": " << result.message() << "\n";
     if (result.outcome != CompareOutcome::ExactMatch && !out_dir.empty()) {
-      const fs::path report = write_diff_artifacts(
-          out_dir, expected_png + " vs " + actual_png, result, expected, actual);
+      const fs::path report = write_diff_artifacts(out_dir, expected_png + " vs " + actual_png,
+                                                   result, expected, actual);
       out << "report: " << report.string() << "\n";
     }
     return result.passed() ? kDiffSame : kDiffDiffers;

@@ -4,10 +4,10 @@
 /// (exact match on decoded RGBA first, metrics only on a mismatch) and, with an output
 /// directory, leaves the difference as images, metrics.json and an HTML report.
 
-#include "tools/golden/tolerance.h"
-
 #include <iosfwd>
 #include <string>
+
+#include "tools/golden/tolerance.h"
 
 namespace impulse2d::golden {
 

@@ -52,7 +52,7 @@ std::string failure_class_id(FailureClass failure_class) {
 std::string failure_message(const GoldenCheck& check) {
   const FailureClass failure_class = classify_failure(check);
   std::ostringstream text;
-  text << failure_class_name(failure_class) << " for golden '" << check.name << "': ";
+  text << "golden '" << check.name << "': " << failure_class_name(failure_class) << ": ";
   switch (failure_class) {
     case FailureClass::None:
       text << check.comparison->message();

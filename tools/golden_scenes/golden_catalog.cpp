@@ -8,10 +8,9 @@ namespace impulse2d::golden {
 namespace {
 
 /// The overlays that show what the solver did: contacts, impulses, velocities, centres.
-constexpr std::uint32_t kPhysicsOverlays = draw_shapes | draw_contact_points |
-                                           draw_contact_normals | draw_normal_impulses |
-                                           draw_friction_impulses | draw_velocities |
-                                           draw_center_of_mass;
+constexpr std::uint32_t kPhysicsOverlays =
+    draw_shapes | draw_contact_points | draw_contact_normals | draw_normal_impulses |
+    draw_friction_impulses | draw_velocities | draw_center_of_mass;
 
 /// The frames chosen for one scene.
 struct SceneFrames {
@@ -23,9 +22,9 @@ struct SceneFrames {
 /// Chosen by looking at each scene's run: `motion` while bodies fall, slide, swing or
 /// collide; `settled` at rest or at the end of the scene's default run.
 constexpr SceneFrames kSceneFrames[] = {
-    {"tutorial", 240, 900},     {"materials", 75, 480},      {"friction_ramp", 60, 180},
-    {"shape_pairs", 30, 240},   {"pyramid", 60, 600},        {"stack", 60, 600},
-    {"newtons_cradle", 60, 180}, {"bullet", 20, 90},         {"ball_pit", 120, 600},
+    {"tutorial", 240, 900},        {"materials", 75, 480},    {"friction_ramp", 60, 180},
+    {"shape_pairs", 30, 240},      {"pyramid", 60, 600},      {"stack", 60, 600},
+    {"newtons_cradle", 60, 180},   {"bullet", 20, 90},        {"ball_pit", 120, 600},
     {"random_polygons", 120, 600}, {"platformer", 470, 1110},
 };
 

@@ -17,9 +17,9 @@ inline constexpr int kGoldenHeight = 240;
 
 /// One golden image of a built-in scene.
 struct GoldenSpec {
-  std::string scene;        ///< built-in scene name, e.g. "pyramid"
-  std::string name;         ///< golden name within the scene, e.g. "settled_overlays"
-  std::int64_t step = 0;    ///< steps simulated before the frame is drawn
+  std::string scene;      ///< built-in scene name, e.g. "pyramid"
+  std::string name;       ///< golden name within the scene, e.g. "settled_overlays"
+  std::int64_t step = 0;  ///< steps simulated before the frame is drawn
   /// `DebugDrawFlag`s; 0 means the scene's own default overlays.
   std::uint32_t overlays = 0;
   /// Parameter overrides ("rows", "8"), applied over the scene's defaults.

@@ -1,15 +1,15 @@
 /// @file scene_frame.cpp
 #include "tools/golden_scenes/scene_frame.h"
 
+#include <memory>
+#include <string>
+
 #include "demos/frame_sequence.h"
 #include "demos/scene_camera.h"
 #include "demos/scene_registry.h"
 #include "demos/scene_run.h"
 #include "render/frame_renderer.h"
 #include "tools/golden/error.h"
-
-#include <memory>
-#include <string>
 
 namespace impulse2d::golden {
 
@@ -35,8 +35,8 @@ std::vector<BodyPose> body_poses(const World& world) {
   std::vector<BodyPose> poses;
   for (const BodyId id : world.body_ids()) {
     const Body& body = world.body(id);
-    poses.push_back(BodyPose{body_name(id), body.transform.position.x,
-                             body.transform.position.y, body.angle});
+    poses.push_back(
+        BodyPose{body_name(id), body.transform.position.x, body.transform.position.y, body.angle});
   }
   return poses;
 }
@@ -51,8 +51,8 @@ render::FrameRenderer& shared_golden_renderer() {
 ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
                                   const SceneVariant& variant) {
   const demos::Scene* builtin = demos::find_builtin_scene(spec.scene);
-  if (builtin == nullptr) throw GoldenError("golden '" + spec.id() + "': no built-in scene '" +
-                                            spec.scene + "'");
+  if (builtin == nullptr)
+    throw GoldenError("golden '" + spec.id() + "': no built-in scene '" + spec.scene + "'");
   demos::Scene scene = *builtin;
   if (variant) variant(scene);
   demos::Params params(scene.params);

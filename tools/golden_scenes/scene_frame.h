@@ -3,10 +3,10 @@
 /// A built-in scene simulated to a golden's step and rendered at the golden size: the frame
 /// producer of the golden suite.
 
+#include <functional>
+
 #include "tools/golden/check_run.h"
 #include "tools/golden_scenes/golden_catalog.h"
-
-#include <functional>
 
 namespace impulse2d::demos {
 struct Scene;
