@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <cstdlib>
-#include <memory>
 #include <optional>
 
 #include "tools/golden/artifacts.h"

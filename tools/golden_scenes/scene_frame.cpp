@@ -1,7 +1,6 @@
 /// @file scene_frame.cpp
 #include "tools/golden_scenes/scene_frame.h"
 
-#include <memory>
 #include <string>
 
 #include "demos/frame_sequence.h"
