@@ -5,6 +5,7 @@
 #include <stb_easy_font.h>
 
 #include <algorithm>
+#include <array>
 
 namespace impulse2d::render {
 
@@ -39,6 +40,35 @@ void layout_text(const std::string& text, std::vector<GlyphRect>& rects) {
     }
     rects.push_back(rect);
   }
+}
+
+const GlyphBitmap& glyph_bitmap(char character) {
+  static const std::array<GlyphBitmap, 128> bitmaps = [] {
+    std::array<GlyphBitmap, 128> table{};
+    std::vector<GlyphRect> rects;
+    for (int code = 32; code < 127; ++code) {
+      const std::string text(1, static_cast<char>(code));
+      rects.clear();
+      layout_text(text, rects);
+      GlyphBitmap& glyph = table[static_cast<std::size_t>(code)];
+      glyph.advance = static_cast<int>(text_width(text));
+      for (int row = 0; row < font_glyph_rows; ++row) {
+        for (int column = 0; column < font_glyph_columns; ++column) {
+          const float x = static_cast<float>(column) + 0.5f;  // font pixel centre
+          const float y = static_cast<float>(row) + 0.5f;
+          for (const GlyphRect& rect : rects) {
+            if (x > rect.left && x < rect.right && y > rect.top && y < rect.bottom) {
+              glyph.bits |= std::uint64_t{1} << (row * font_glyph_columns + column);
+              break;
+            }
+          }
+        }
+      }
+    }
+    return table;
+  }();
+  const auto code = static_cast<unsigned char>(character);
+  return bitmaps[code < bitmaps.size() ? code : 0];
 }
 
 float text_width(const std::string& text) {

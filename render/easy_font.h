@@ -1,7 +1,9 @@
 #pragma once
 /// @file easy_font.h
-/// Text as rectangles, from stb_easy_font (a public-domain bitmap font built of quads).
+/// Text from stb_easy_font (a public-domain bitmap font built of quads): as rectangles, and
+/// as one bitmap per character for drawing each character as a single primitive.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,26 @@ struct GlyphRect {
 
 /// Height of a capital letter in font pixels: a line's baseline is this far below its top.
 constexpr float font_cap_height = 7.0f;
+
+/// Distance between the tops of consecutive lines, font pixels (stb_easy_font's).
+constexpr float font_line_height = 12.0f;
+
+/// Columns of a glyph bitmap: every character's rectangles lie in x = 0..7 font pixels.
+constexpr int font_glyph_columns = 7;
+/// Rows of a glyph bitmap: every character's rectangles lie in y = 0..9 font pixels.
+constexpr int font_glyph_rows = 9;
+
+/// One character rasterised from its rectangles: bit (row * font_glyph_columns + column)
+/// is set when font pixel (column, row) of the cell (y down from the text line's top) is
+/// covered. Pen advance is the x distance to the next character, font pixels.
+struct GlyphBitmap {
+  std::uint64_t bits = 0;  ///< font_glyph_columns x font_glyph_rows cells, row-major
+  int advance = 0;         ///< font pixels from this character's left edge to the next one's
+};
+
+/// The bitmap of `character`; characters outside printable ASCII (32..126) have no pixels
+/// and no advance.
+const GlyphBitmap& glyph_bitmap(char character);
 
 /// Appends the rectangles that draw `text` (ASCII; '\n' starts a new line) to `rects`.
 void layout_text(const std::string& text, std::vector<GlyphRect>& rects);

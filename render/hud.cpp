@@ -12,7 +12,6 @@ namespace impulse2d::render {
 namespace {
 
 constexpr float kPanelPadding = 6.0f;   // font pixels around the text
-constexpr float kLineHeight = 12.0f;    // font pixels per line (stb_easy_font's)
 constexpr float kSwatchWidth = 14.0f;   // font pixels
 constexpr float kScaleBarPixels = 50.0f;
 
@@ -86,11 +85,11 @@ void draw_hud(PrimitiveRenderer& renderer, const std::vector<std::string>& lines
   if (!lines.empty()) {
     float width = 0.0f;
     for (const std::string& line : lines) width = std::max(width, text_width(line));
-    const float height = kLineHeight * static_cast<float>(lines.size()) - (kLineHeight - font_cap_height);
+    const float height = font_line_height * static_cast<float>(lines.size()) - (font_line_height - font_cap_height);
     renderer.draw_screen_rect(vec2(0.0f), vec2(width + 2.0f * kPanelPadding, height + 2.0f * kPanelPadding) * s,
                               palette.hud_panel);
     for (std::size_t i = 0; i < lines.size(); ++i) {
-      renderer.draw_screen_text(vec2(kPanelPadding, kPanelPadding + kLineHeight * static_cast<float>(i)) * s,
+      renderer.draw_screen_text(vec2(kPanelPadding, kPanelPadding + font_line_height * static_cast<float>(i)) * s,
                                 lines[i], palette.hud_text, text_scale);
     }
   }
@@ -98,11 +97,11 @@ void draw_hud(PrimitiveRenderer& renderer, const std::vector<std::string>& lines
   float width = 0.0f;
   for (const LegendEntry& entry : legend) width = std::max(width, text_width(entry.label));
   const float panel_width = (width + kSwatchWidth + 3.0f * kPanelPadding) * s;
-  const float height = kLineHeight * static_cast<float>(legend.size()) - (kLineHeight - font_cap_height);
+  const float height = font_line_height * static_cast<float>(legend.size()) - (font_line_height - font_cap_height);
   const float left = static_cast<float>(renderer.viewport_width()) - panel_width;
   renderer.draw_screen_rect(vec2(left, 0.0f), vec2(panel_width, (height + 2.0f * kPanelPadding) * s), palette.hud_panel);
   for (std::size_t i = 0; i < legend.size(); ++i) {
-    const float top = (kPanelPadding + kLineHeight * static_cast<float>(i)) * s;
+    const float top = (kPanelPadding + font_line_height * static_cast<float>(i)) * s;
     Color swatch = legend[i].color;
     swatch.a = std::max(swatch.a, 0.85f);  // keys of translucent overlays still read clearly
     renderer.draw_screen_rect(vec2(left + kPanelPadding * s, top), vec2(kSwatchWidth, font_cap_height) * s, swatch);

@@ -1,11 +1,11 @@
 #pragma once
 /// @file primitive_renderer.h
 /// The batched GL implementation of core's `DebugDraw`: every primitive of a frame becomes
-/// a quad of one vertex buffer, drawn by one program in one call, in the order emitted.
+/// one point sprite (a quad when large) of one vertex buffer, drawn by one program in the
+/// order emitted.
 
 #include "core/debug_draw.h"
 #include "render/camera.h"
-#include "render/easy_font.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -23,12 +23,17 @@ struct PrimitiveStyle {
   float arrow_head_length = 7.0f;  ///< at most half the arrow's length
   float arrow_head_width = 6.0f;   ///< full width of the head at its base
   int label_scale = 1;             ///< integer magnification of `draw_text` labels (1 = 7 px caps)
+  /// Largest primitive, in pixels across, drawn as one point sprite (the driver's limit
+  /// also applies); larger ones are quads. The pixels are the same either way.
+  float max_point_sprite = 255.0f;
 };
 
-/// Draws world primitives (lines and arrows as thin quads with analytic coverage, circles
-/// as quads with an analytic anti-aliased edge, polygons as triangles) and screen-space
-/// rectangles and text, batched between `begin` and `finish`. Needs the GL context it was
-/// created under to be current for construction, `finish` and destruction.
+/// Draws world primitives (segments, arrows, discs with their rim, characters: each one
+/// primitive with analytic anti-aliased coverage; polygon fills as triangles) and
+/// screen-space rectangles and text, batched between `begin` and `finish`. llvmpipe's cost
+/// grows with the primitives it rasterises and the 4x4 pixel blocks each one touches, so a
+/// small primitive is a single point sprite rather than two triangles. Needs the GL context
+/// it was created under to be current for construction, `finish` and destruction.
 class PrimitiveRenderer final : public DebugDraw {
  public:
   /// Compiles the program and creates the buffers. Throws `RenderError` on shader errors.
@@ -42,8 +47,8 @@ class PrimitiveRenderer final : public DebugDraw {
   /// Clears the framebuffer to `background` (drawn opaque) and draws the batch, in order.
   /// Throws `RenderError` when GL reports an error.
   void finish(Color background);
-  /// Primitives (quads) batched since `begin`.
-  std::size_t primitive_count() const { return vertices_.size() / 4; }
+  /// Primitives (point sprites, quads and polygon-fill quads) batched since `begin`.
+  std::size_t primitive_count() const { return primitive_count_; }
   /// Width of the frame being batched, pixels.
   int viewport_width() const { return camera_.width(); }
   /// Height of the frame being batched, pixels.
@@ -66,30 +71,47 @@ class PrimitiveRenderer final : public DebugDraw {
   void draw_screen_text(vec2 top_left, const std::string& text, Color color, int scale);
 
  private:
-  // One corner of a quad, as the shaders read it (see primitive_shaders.h).
+  // One vertex, as the shaders read it (see primitive_shaders.h). The defaults switch
+  // every shape off.
   struct Vertex {
-    float position[2];
-    float local[2];
-    float extent[2];
-    std::uint8_t color[4];
+    float sprite[3] = {0.0f, 0.0f, 1.0f};
+    float frame[4] = {0.0f, 0.0f, 1.0f, 0.0f};
+    float box[3] = {-1.0e6f, -1.0e6f, 0.0f};
+    float head[4] = {1.0e6f, 0.0f, 0.0f, 0.0f};
+    float disc[4] = {0.0f, -1.0e6f, -1.0e6f, -1.0e6f};
+    std::uint8_t fill[4] = {0, 0, 0, 0};
+    std::uint8_t line[4] = {0, 0, 0, 0};
+    std::uint32_t glyph[2] = {0, 0};
+  };
+  // Consecutive primitives drawn by one call: points, or quads (four vertices each).
+  struct Run {
+    bool points = true;
+    std::size_t first_vertex = 0;
+    std::size_t count = 0;  // points or quads
   };
   vec2 to_window(vec2 world) const;
-  void push_solid(vec2 a, vec2 b, vec2 c, vec2 d, Color color);
+  void push_shape(const Vertex& shape, vec2 lower, vec2 upper);
+  void push_quad(const Vertex& shape, const vec2 (&corners)[4]);
+  void add_to_run(bool points, std::size_t vertices);
   void push_segment(vec2 from, vec2 to, float extension_pixels, Color color);
-  void push_disc(vec2 center, float radius_pixels, float ring_width_pixels, Color color);
+  void push_disc(vec2 center, float radius_pixels, Color fill, float ring_radius_pixels, Color ring);
+  void push_rect(vec2 lower_left, vec2 upper_right, Color color);
   void push_text(vec2 window_top_left, const std::string& text, Color color, float scale);
 
   PrimitiveStyle style_;
   Camera camera_;
   float world_to_window_[4] = {1.0f, 0.0f, 1.0f, 0.0f};  // x scale, x offset, y scale, y offset
+  float max_point_size_ = 1.0f;                           // the driver's largest point sprite
   std::unique_ptr<ShaderProgram> program_;
   int viewport_location_ = -1;
   unsigned int vertex_array_ = 0;
   unsigned int vertex_buffer_ = 0;
   unsigned int index_buffer_ = 0;
-  std::size_t capacity_quads_ = 0;  // quads the vertex and index buffers hold
+  std::size_t capacity_vertices_ = 0;  // vertices the vertex buffer holds
+  std::size_t capacity_quads_ = 0;     // quads the index buffer holds
+  std::size_t primitive_count_ = 0;
   std::vector<Vertex> vertices_;
-  std::vector<GlyphRect> glyphs_;  // scratch for text layout
+  std::vector<Run> runs_;
 };
 
 }  // namespace impulse2d::render

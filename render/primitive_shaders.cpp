@@ -4,45 +4,75 @@
 namespace impulse2d::render {
 
 const char* const primitive_vertex_shader = R"glsl(#version 330 core
-layout(location = 0) in vec2 a_position;  // window pixels, origin bottom-left
-layout(location = 1) in vec2 a_local;     // pixels from the primitive's centre, in its frame
-layout(location = 2) in vec2 a_extent;    // see primitive_shaders.h
-layout(location = 3) in vec4 a_color;
+layout(location = 0) in vec3 a_sprite;  // window position (origin bottom-left), point size
+layout(location = 1) in vec4 a_frame;
+layout(location = 2) in vec3 a_box;
+layout(location = 3) in vec4 a_head;
+layout(location = 4) in vec4 a_disc;
+layout(location = 5) in vec4 a_fill;
+layout(location = 6) in vec4 a_line;
+layout(location = 7) in uvec2 a_glyph;
 
 uniform vec2 u_viewport;  // pixels
 
-out vec2 v_local;
-flat out vec2 v_extent;
-flat out vec4 v_color;
+flat out vec4 v_frame;
+flat out vec3 v_box;
+flat out vec4 v_head;
+flat out vec4 v_disc;
+flat out vec4 v_fill;
+flat out vec4 v_line;
+flat out uvec2 v_glyph;
 
 void main() {
-  v_local = a_local;
-  v_extent = a_extent;
-  v_color = a_color;
-  gl_Position = vec4(a_position / u_viewport * 2.0 - 1.0, 0.0, 1.0);
+  v_frame = a_frame;
+  v_box = a_box;
+  v_head = a_head;
+  v_disc = a_disc;
+  v_fill = a_fill;
+  v_line = a_line;
+  v_glyph = a_glyph;
+  gl_PointSize = a_sprite.z;
+  gl_Position = vec4(a_sprite.xy / u_viewport * 2.0 - 1.0, 0.0, 1.0);
 }
 )glsl";
 
+// llvmpipe runs every branch of a fragment shader, so every shape is measured on every
+// pixel and the parameters switch the unused ones off (coverage 0; glyph bit 1).
 const char* const primitive_fragment_shader = R"glsl(#version 330 core
-in vec2 v_local;
-flat in vec2 v_extent;
-flat in vec4 v_color;
+flat in vec4 v_frame;
+flat in vec3 v_box;
+flat in vec4 v_head;
+flat in vec4 v_disc;
+flat in vec4 v_fill;
+flat in vec4 v_line;
+flat in uvec2 v_glyph;
 
 out vec4 o_color;
 
+const int kGlyphColumns = 7;  // font_glyph_columns
+
 void main() {
-  float coverage;
-  if (v_extent.x < 0.0) {
-    float radius = -v_extent.x;
-    float distance = length(v_local);
-    coverage = clamp(radius + 0.5 - distance, 0.0, 1.0);
-    if (v_extent.y > 0.0) coverage *= clamp(distance - (radius - v_extent.y) + 0.5, 0.0, 1.0);
-  } else {
-    vec2 inside = clamp(v_extent + 0.5 - abs(v_local), 0.0, 1.0);
-    coverage = inside.x * inside.y;
-  }
-  if (coverage <= 0.0) discard;
-  o_color = vec4(v_color.rgb, v_color.a * coverage);
+  vec2 d = gl_FragCoord.xy - v_frame.xy;
+  vec2 p = vec2(dot(d, v_frame.zw), v_frame.z * d.y - v_frame.w * d.x);
+  vec2 inside = clamp(v_box.xy + 0.5 - abs(p), 0.0, 1.0);
+  float box = inside.x * inside.y;
+  float side = (p.x - v_head.y) * v_head.z + abs(p.y) * v_head.w;
+  float head = clamp(0.5 - max(max(v_head.x - p.x, p.x - v_head.y), side), 0.0, 1.0);
+  float r = length(p - vec2(v_disc.x, 0.0));
+  float disc = clamp(v_disc.y + 0.5 - r, 0.0, 1.0);
+  float ring = clamp(v_disc.z + 0.5 - r, 0.0, 1.0) * clamp(r - v_disc.w + 0.5, 0.0, 1.0);
+  // Glyph: the font pixel under this pixel centre, counted from the cell's top-left corner
+  // (only read inside the cell, where the box coverage is not 0).
+  ivec2 cell = ivec2(vec2(p.x + v_box.x, v_box.y - p.y) * v_box.z);
+  int bit = cell.y * kGlyphColumns + cell.x;
+  uint word = bit < 32 ? v_glyph.x : v_glyph.y;
+  float glyph = v_box.z > 0.0 ? float((word >> uint(bit & 31)) & 1u) : 1.0;
+
+  // The fill layer under the ring layer, premultiplied; blended with (1, 1 - alpha).
+  float fill_alpha = v_fill.a * max(max(box, head), disc) * glyph;
+  float line_alpha = v_line.a * ring;
+  float under = fill_alpha * (1.0 - line_alpha);
+  o_color = vec4(v_line.rgb * line_alpha + v_fill.rgb * under, line_alpha + under);
 }
 )glsl";
 

@@ -1,6 +1,7 @@
 // The renderer below the world: camera mapping, context errors, and known colours at known
 // pixels for hand-made primitives.
 #include "render/camera.h"
+#include "render/easy_font.h"
 #include "render/frame_renderer.h"
 #include "render/offscreen_context.h"
 #include "render/render_error.h"
@@ -8,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 using namespace impulse2d;
 using namespace impulse2d::render;
@@ -30,6 +33,28 @@ Camera test_camera() { return Camera::centered(vec2(0.0f, 0.0f), 10.0f, 200, 100
 void draw_known_scene(PrimitiveRenderer& draw) {
   draw.draw_solid_circle(vec2(-5.0f, 0.05f), 2.0f, vec2(1.0f, 0.0f), kFill, kOutline);
   draw.draw_arrow(vec2(1.0f, 0.05f), vec2(5.05f, 0.05f), kArrow);
+}
+
+// Every primitive kind at many sizes, angles and sub-pixel offsets, overlapping.
+void draw_mixed_scene(PrimitiveRenderer& draw) {
+  for (int i = 0; i < 24; ++i) {
+    const float t = static_cast<float>(i);
+    const vec2 at(-9.0f + 0.77f * t, -4.0f + 0.31f * static_cast<float>(i % 9));
+    const vec2 along(std::cos(0.45f * t), std::sin(0.45f * t));
+    draw.draw_solid_circle(at, 0.1f + 0.13f * static_cast<float>(i % 7), along, kFill, kOutline);
+    draw.draw_segment(at, at + along * (0.2f + 0.4f * static_cast<float>(i % 5)), kArrow);
+    draw.draw_arrow(at, at + along * (0.02f + 0.5f * static_cast<float>(i % 6)), kOutline);
+    draw.draw_point(at + vec2(0.3f, 0.0f), 2.0f + static_cast<float>(i % 4), kArrow);
+    draw.draw_text(at + vec2(0.0f, 0.5f), std::to_string(i), kOutline);
+  }
+  const vec2 hexagon[6] = {{2, 0}, {1, 1.7f}, {-1, 1.7f}, {-2, 0}, {-1, -1.7f}, {1, -1.7f}};
+  draw.draw_solid_polygon(hexagon, 6, kFill, kOutline);
+  draw.draw_segment({-9.5f, -4.5f}, {9.5f, 4.5f}, kOutline);  // long and diagonal
+  // Centres just outside the frame: GL would drop such a point sprite whole.
+  draw.draw_solid_circle({-10.2f, 1.0f}, 0.5f, {0, 1}, kFill, kOutline);
+  draw.draw_text({9.5f, -5.3f}, "42", kOutline);
+  draw.draw_screen_rect({3.5f, 60.25f}, {40.0f, 12.5f}, Color{0.1f, 0.2f, 0.9f, 0.5f});
+  draw.draw_screen_text({2, 2}, "sprites\nand quads", kOutline, 2);
 }
 
 }  // namespace
@@ -159,4 +184,58 @@ TEST(RenderPrimitives, SameInputTwiceIsBitIdentical) {
   Frame third;
   other.render_primitives(test_camera(), kWhite, draw_known_scene, third);
   EXPECT_EQ(first.rgba, third.rgba);
+}
+
+TEST(RenderPrimitives, PointSpritesAndQuadsGiveTheSamePixels) {
+  // Small primitives are point sprites, large ones quads; the fragment stage measures each
+  // pixel in the primitive's own frame, so forcing every primitive to a quad changes nothing.
+  FrameRenderer sprites(200, 100);
+  PrimitiveStyle quads_only;
+  quads_only.max_point_sprite = 0.0f;
+  FrameRenderer quads(200, 100, quads_only);
+  Frame with_sprites;
+  Frame with_quads;
+  sprites.render_primitives(test_camera(), kWhite, draw_mixed_scene, with_sprites);
+  quads.render_primitives(test_camera(), kWhite, draw_mixed_scene, with_quads);
+  EXPECT_EQ(with_sprites.rgba, with_quads.rgba);
+  Frame empty;
+  sprites.render_primitives(test_camera(), kWhite, [](PrimitiveRenderer&) {}, empty);
+  EXPECT_NE(with_sprites.hash(), empty.hash());
+}
+
+TEST(RenderPrimitives, TextCoversExactlyTheFontsRectangles) {
+  // Each character is one primitive reading its glyph bitmap; the pixels must be those of
+  // stb_easy_font's rectangles for the whole string (every printable character, two lines).
+  std::string text;
+  for (int code = 32; code < 127; ++code) {
+    text += static_cast<char>(code);
+    if (code == 79) text += '\n';
+  }
+  FrameRenderer renderer(400, 100);
+  const Camera camera = Camera::centered(vec2(0.0f, 0.0f), 10.0f, 400, 100);
+  for (const int scale : {1, 2}) {
+    const vec2 top_left(3.0f, 5.0f);
+    Frame frame;
+    renderer.render_primitives(
+        camera, kWhite, [&](PrimitiveRenderer& draw) { draw.draw_screen_text(top_left, text, kOutline, scale); },
+        frame);
+    std::vector<GlyphRect> rects;
+    layout_text(text, rects);
+    const float s = static_cast<float>(scale);
+    int text_pixels = 0;
+    for (int y = 0; y < frame.height; ++y) {
+      for (int x = 0; x < frame.width; ++x) {
+        const float px = static_cast<float>(x) + 0.5f;
+        const float py = static_cast<float>(y) + 0.5f;
+        bool inside = false;
+        for (const GlyphRect& r : rects) {
+          inside = inside || (px > top_left.x + r.left * s && px < top_left.x + r.right * s &&
+                              py > top_left.y + r.top * s && py < top_left.y + r.bottom * s);
+        }
+        text_pixels += inside ? 1 : 0;
+        ASSERT_EQ(frame.pixel(x, y), to_pixel(inside ? kOutline : kWhite)) << "scale " << scale << " at " << x << "," << y;
+      }
+    }
+    EXPECT_GT(text_pixels, 500 * scale * scale);
+  }
 }
