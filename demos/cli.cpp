@@ -9,6 +9,7 @@
 #include "demos/overlays.h"
 #include "demos/scene_registry.h"
 #include "demos/usage_error.h"
+#include "tools/golden/diff_command.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -88,6 +89,17 @@ int run_cli(int argc, char** argv) {
   sheet_command->add_option("--out", sheet.out,
                             "PNG file (default: out/contact_sheet_<scene>.png)");
 
+  std::string diff_expected, diff_actual, diff_out;
+  CLI::App* diff_command = app.add_subcommand(
+      "diff",
+      "compare two PNG frames as the golden suite does (exact RGBA match first, metrics on a "
+      "mismatch); exit 0 same, 1 different, 2 unreadable input or unwritable output");
+  diff_command->add_option("expected", diff_expected, "the reference PNG (a)")->required();
+  diff_command->add_option("actual", diff_actual, "the PNG to check (b)")->required();
+  diff_command->add_option("--out,-d", diff_out,
+                           "on a mismatch, write expected/actual/diff/heatmap PNGs, "
+                           "metrics.json and index.html into this directory");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -106,6 +118,8 @@ int run_cli(int argc, char** argv) {
       trace_scene(trace, std::cout);
     } else if (sheet_command->parsed()) {
       sheet_scene(sheet, std::cout);
+    } else if (diff_command->parsed()) {
+      return golden::run_diff_command(diff_expected, diff_actual, diff_out, std::cout, std::cerr);
     } else {
       RenderArguments demo;
       demo.scene.scene = default_scene().name;

@@ -93,7 +93,7 @@ TEST_F(CliTest, ListShowsEveryBuiltInSceneWithItsModel) {
 }
 
 TEST_F(CliTest, HelpWorksOnEveryCommand) {
-  for (const char* command : {"", "list ", "render ", "trace ", "sheet "}) {
+  for (const char* command : {"", "list ", "render ", "trace ", "sheet ", "diff "}) {
     const Result result = run(std::string(command) + "--help");
     EXPECT_EQ(result.status, 0) << command << result.err;
     EXPECT_NE(result.out.find("Usage"), std::string::npos) << command;
@@ -132,6 +132,24 @@ TEST_F(CliTest, ContactSheetIsOnePng) {
   ASSERT_EQ(result.status, 0) << result.err;
   EXPECT_EQ(read_file(dir_ / "sheet/p.png").substr(1, 3), "PNG");
   EXPECT_NE(result.out.find("contact sheet of 3 frames"), std::string::npos) << result.out;
+}
+
+TEST_F(CliTest, DiffSaysSameForTwoRendersAndWritesAReportForDifferentFrames) {
+  ASSERT_EQ(run("render pyramid --param rows=3 --frames 0,30 --size 160x120 --out f").status, 0);
+  ASSERT_EQ(run("render pyramid --param rows=3 --frames 0 --size 160x120 --out g").status, 0);
+  const Result same = run("diff f/pyramid_00000.png g/pyramid_00000.png --out report");
+  EXPECT_EQ(same.status, 0) << same.out << same.err;
+  EXPECT_FALSE(fs::exists(dir_ / "report/index.html"));  // nothing to show for an exact match
+  const Result different = run("diff f/pyramid_00000.png f/pyramid_00030.png --out report");
+  EXPECT_EQ(different.status, 1) << different.out << different.err;
+  EXPECT_NE(different.out.find("differ"), std::string::npos) << different.out;
+  for (const char* name : {"report/index.html", "report/diff.png", "report/heatmap.png",
+                           "report/metrics.json", "report/expected.png", "report/actual.png"}) {
+    EXPECT_TRUE(fs::exists(dir_ / name)) << name;
+  }
+  const Result missing = run("diff f/pyramid_00000.png nowhere.png");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("nowhere.png"), std::string::npos) << missing.err;
 }
 
 TEST_F(CliTest, TraceOfAJsonProjectileMatchesTheExactAnswer) {
