@@ -152,6 +152,19 @@ TEST_F(CliTest, DiffSaysSameForTwoRendersAndWritesAReportForDifferentFrames) {
   EXPECT_NE(missing.err.find("nowhere.png"), std::string::npos) << missing.err;
 }
 
+TEST_F(CliTest, VideoIsEncodedWhenFfmpegIsInstalled) {
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "ffmpeg is not installed (optional: apt-get install ffmpeg)";
+  }
+  const Result result = run(
+      "render pyramid --param rows=3 --frames 0:40:4 --size 160x120 --out v --video v/p.mp4");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const std::string video = read_file(dir_ / "v/p.mp4");
+  ASSERT_GT(video.size(), 12u);
+  EXPECT_EQ(video.substr(4, 4), "ftyp");  // an MP4 container
+  EXPECT_NE(result.out.find("v/p.mp4"), std::string::npos) << result.out;
+}
+
 TEST_F(CliTest, TraceOfAJsonProjectileMatchesTheExactAnswer) {
   write_file(dir_ / "projectile.json", projectile);
   const int steps = 200;
