@@ -58,7 +58,14 @@ const GlyphBitmap& glyph_bitmap(char character) {
           const float y = static_cast<float>(row) + 0.5f;
           for (const GlyphRect& rect : rects) {
             if (x > rect.left && x < rect.right && y > rect.top && y < rect.bottom) {
+              if (glyph.bits == 0) {
+                glyph.ink_left = glyph.ink_right = column;
+                glyph.ink_top = row;
+              }
               glyph.bits |= std::uint64_t{1} << (row * font_glyph_columns + column);
+              glyph.ink_left = std::min(glyph.ink_left, column);
+              glyph.ink_right = std::max(glyph.ink_right, column + 1);
+              glyph.ink_bottom = row + 1;
               break;
             }
           }

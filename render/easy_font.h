@@ -35,6 +35,10 @@ constexpr int font_glyph_rows = 9;
 struct GlyphBitmap {
   std::uint64_t bits = 0;  ///< font_glyph_columns x font_glyph_rows cells, row-major
   int advance = 0;         ///< font pixels from this character's left edge to the next one's
+  int ink_left = 0;        ///< first column with a set bit
+  int ink_top = 0;         ///< first row with a set bit
+  int ink_right = 0;       ///< one past the last column with a set bit
+  int ink_bottom = 0;      ///< one past the last row with a set bit
 };
 
 /// The bitmap of `character`; characters outside printable ASCII (32..126) have no pixels

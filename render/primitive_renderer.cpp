@@ -21,14 +21,17 @@ namespace {
 // Half extents so large that a rectangle's coverage is 1 everywhere (polygon fills).
 constexpr float kSolidExtent = 1.0e6f;
 // Pixels around a primitive's edge that its sprite or quad covers: anti-aliased coverage
-// reaches half a pixel beyond the edge, and the rest is slack for rasterisation rules.
-constexpr float kMargin = 1.0f;
+// reaches half a pixel beyond every edge and is 0 from there on.
+constexpr float kMargin = 0.5f;
 // Sprites up to this many pixels across are always points. Larger ones are points only
 // while their square is at most kMaxSpriteWaste times the primitive's own rectangle;
-// otherwise (a long or diagonal line) a quad hugs the primitive, so the rasteriser shades
-// fewer empty 4x4 blocks. Chosen by instruction counts (callgrind, LP_NUM_THREADS=0) of a
-// 1000-body all-overlay frame: 6 and 2.5 gave 329 M a frame; 16 and 2, 461 M; always
-// points, 431 M; always quads, 361 M (the single-quad renderer before: 440 M).
+// otherwise (a long or diagonal line) a quad hugs the primitive. llvmpipe's cost follows
+// the 4x4 pixel blocks a primitive touches far more than the primitive count or the
+// fragment shader's length. Chosen by instruction counts (callgrind, LP_NUM_THREADS=0) of
+// the 1000-body all-overlay frame of bench_render, with a 1-pixel margin: 6 and 2.5 gave
+// 335 M a frame; 16 and 2, 461 M; always points, 431 M; always quads, 361 M; one
+// enclosing triangle instead of a quad, 369 M (the renderer with a quad per primitive and
+// ten per character: 440 M). A half-pixel margin then gave 299 M.
 constexpr float kSmallSprite = 6.0f;
 constexpr float kMaxSpriteWaste = 2.5f;
 
@@ -59,10 +62,8 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
 
   glGenVertexArrays(1, &vertex_array_);
   glGenBuffers(1, &vertex_buffer_);
-  glGenBuffers(1, &index_buffer_);
   glBindVertexArray(vertex_array_);
   glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);  // recorded in the vertex array
   const GLsizei stride = sizeof(Vertex);
   const auto attribute = [stride](GLuint location, GLint size, GLenum type, std::size_t offset) {
     glEnableVertexAttribArray(location);
@@ -85,7 +86,6 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
 }
 
 PrimitiveRenderer::~PrimitiveRenderer() {
-  glDeleteBuffers(1, &index_buffer_);
   glDeleteBuffers(1, &vertex_buffer_);
   glDeleteVertexArrays(1, &vertex_array_);
 }
@@ -125,22 +125,6 @@ void PrimitiveRenderer::finish(Color background) {
       glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity_vertices_ * sizeof(Vertex)), nullptr,
                    GL_STREAM_DRAW);
     }
-    std::size_t quads = 0;
-    for (const Run& run : runs_) {
-      if (!run.points) quads = std::max(quads, run.count);
-    }
-    if (quads > capacity_quads_) {
-      // Two triangles per quad; each run of quads starts at its own base vertex.
-      capacity_quads_ = std::max(quads, 2 * capacity_quads_);
-      std::vector<GLuint> indices(capacity_quads_ * 6);
-      for (std::size_t q = 0; q < capacity_quads_; ++q) {
-        const GLuint first = static_cast<GLuint>(4 * q);
-        const GLuint quad[6] = {first, first + 1, first + 2, first, first + 2, first + 3};
-        std::copy(quad, quad + 6, indices.begin() + static_cast<std::ptrdiff_t>(6 * q));
-      }
-      glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
-                   indices.data(), GL_STATIC_DRAW);
-    }
     glEnable(GL_BLEND);
     // Premultiplied "over" (the fragment stage multiplies coverage and alpha into the
     // colour); alpha stays at the cleared 1.0, so frames are opaque.
@@ -150,12 +134,8 @@ void PrimitiveRenderer::finish(Color background) {
     glUniform2f(viewport_location_, static_cast<float>(camera_.width()), static_cast<float>(camera_.height()));
     glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vertices_.size() * sizeof(Vertex)), vertices_.data());
     for (const Run& run : runs_) {
-      if (run.points) {
-        glDrawArrays(GL_POINTS, static_cast<GLint>(run.first_vertex), static_cast<GLsizei>(run.count));
-      } else {
-        glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(run.count * 6), GL_UNSIGNED_INT, nullptr,
-                                 static_cast<GLint>(run.first_vertex));
-      }
+      glDrawArrays(run.points ? GL_POINTS : GL_TRIANGLES, static_cast<GLint>(run.first_vertex),
+                   static_cast<GLsizei>(run.vertices));
     }
     glBindVertexArray(0);
   }
@@ -166,23 +146,18 @@ void PrimitiveRenderer::finish(Color background) {
   }
 }
 
-void PrimitiveRenderer::add_to_run(bool points, std::size_t vertices) {
-  ++primitive_count_;
-  if (!runs_.empty() && runs_.back().points == points) {
-    ++runs_.back().count;
-  } else {
-    runs_.push_back(Run{points, vertices_.size() - vertices, 1});
-  }
+void PrimitiveRenderer::push_vertex(const Vertex& shape, vec2 position, float point_size, bool point) {
+  Vertex vertex = shape;
+  vertex.sprite[0] = position.x;
+  vertex.sprite[1] = position.y;
+  vertex.sprite[2] = point_size;
+  if (runs_.empty() || runs_.back().points != point) runs_.push_back(Run{point, vertices_.size(), 0});
+  ++runs_.back().vertices;
+  vertices_.push_back(vertex);
 }
 
-void PrimitiveRenderer::push_quad(const Vertex& shape, const vec2 (&corners)[4]) {
-  for (const vec2 corner : corners) {
-    Vertex vertex = shape;
-    vertex.sprite[0] = corner.x;
-    vertex.sprite[1] = corner.y;
-    vertices_.push_back(vertex);
-  }
-  add_to_run(false, 4);
+void PrimitiveRenderer::push_triangle(const Vertex& shape, vec2 a, vec2 b, vec2 c) {
+  for (const vec2 corner : {a, b, c}) push_vertex(shape, corner, 1.0f, false);
 }
 
 void PrimitiveRenderer::push_shape(const Vertex& shape, vec2 lower, vec2 upper) {
@@ -206,16 +181,13 @@ void PrimitiveRenderer::push_shape(const Vertex& shape, vec2 lower, vec2 upper) 
   // GL drops a whole point whose centre lies outside the viewport, so those are quads.
   const bool centre_visible = center.x >= 0.0f && center.y >= 0.0f && center.x <= static_cast<float>(camera_.width()) &&
                               center.y <= static_cast<float>(camera_.height());
+  ++primitive_count_;
   if (centre_visible && side <= max_point_size_ &&
       (side <= kSmallSprite || side * side <= kMaxSpriteWaste * area)) {
-    Vertex vertex = shape;
-    vertex.sprite[0] = center.x;
-    vertex.sprite[1] = center.y;
-    vertex.sprite[2] = side;
-    vertices_.push_back(vertex);
-    add_to_run(true, 1);
+    push_vertex(shape, center, side, true);
   } else {
-    push_quad(shape, corners);
+    push_triangle(shape, corners[0], corners[1], corners[2]);
+    push_triangle(shape, corners[0], corners[2], corners[3]);
   }
 }
 
@@ -293,7 +265,12 @@ void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text,
       shape.frame[1] = pen.y - half.y;
       shape.glyph[0] = static_cast<std::uint32_t>(glyph.bits);
       shape.glyph[1] = static_cast<std::uint32_t>(glyph.bits >> 32);
-      push_shape(shape, -half, half);
+      // The sprite or quad covers the glyph's ink only: the cell's other pixels stay clear.
+      const vec2 ink_lower(static_cast<float>(glyph.ink_left) * scale - half.x,
+                           half.y - static_cast<float>(glyph.ink_bottom) * scale);
+      const vec2 ink_upper(static_cast<float>(glyph.ink_right) * scale - half.x,
+                           half.y - static_cast<float>(glyph.ink_top) * scale);
+      push_shape(shape, ink_lower, ink_upper);
     }
     pen.x += static_cast<float>(glyph.advance) * scale;
   }
@@ -314,7 +291,9 @@ void PrimitiveRenderer::draw_solid_polygon(const vec2* vertices, int count, Colo
     const vec2 b = to_window(vertices[i]);
     const vec2 c = to_window(vertices[i + 1]);
     const vec2 d = i + 2 < count ? to_window(vertices[i + 2]) : c;
-    push_quad(solid, {first, b, c, d});
+    ++primitive_count_;
+    push_triangle(solid, first, b, c);
+    if (i + 2 < count) push_triangle(solid, first, c, d);
   }
   // Square ends half a line wide, so neighbouring edges meet without a notch at corners.
   for (int i = 0; i < count; ++i) {
@@ -362,7 +341,10 @@ void PrimitiveRenderer::draw_arrow(vec2 from, vec2 to, Color color) {
   shape.head[2] = head_half_width / side_length;  // outward normal of the upper side
   shape.head[3] = head_length / side_length;
   set_color(shape.fill, color);
-  const float half_height = std::max(half_line, head_half_width);
+  // The head's anti-aliased edge is mitred: at the base corners it reaches
+  // 0.5 (1 + normal.x) / normal.y pixels out from the head's side, more than the margin.
+  const float head_reach = head_half_width + 0.5f * (1.0f + shape.head[2]) / shape.head[3] - kMargin;
+  const float half_height = std::max(half_line, head_reach);
   push_shape(shape, vec2(-shaft_half, -half_height), vec2(tip_x, half_height));
 }
 

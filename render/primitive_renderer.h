@@ -83,16 +83,16 @@ class PrimitiveRenderer final : public DebugDraw {
     std::uint8_t line[4] = {0, 0, 0, 0};
     std::uint32_t glyph[2] = {0, 0};
   };
-  // Consecutive primitives drawn by one call: points, or quads (four vertices each).
+  // Consecutive vertices drawn by one call, as points or as triangles.
   struct Run {
     bool points = true;
     std::size_t first_vertex = 0;
-    std::size_t count = 0;  // points or quads
+    std::size_t vertices = 0;
   };
   vec2 to_window(vec2 world) const;
   void push_shape(const Vertex& shape, vec2 lower, vec2 upper);
-  void push_quad(const Vertex& shape, const vec2 (&corners)[4]);
-  void add_to_run(bool points, std::size_t vertices);
+  void push_vertex(const Vertex& shape, vec2 position, float point_size, bool point);
+  void push_triangle(const Vertex& shape, vec2 a, vec2 b, vec2 c);
   void push_segment(vec2 from, vec2 to, float extension_pixels, Color color);
   void push_disc(vec2 center, float radius_pixels, Color fill, float ring_radius_pixels, Color ring);
   void push_rect(vec2 lower_left, vec2 upper_right, Color color);
@@ -106,9 +106,7 @@ class PrimitiveRenderer final : public DebugDraw {
   int viewport_location_ = -1;
   unsigned int vertex_array_ = 0;
   unsigned int vertex_buffer_ = 0;
-  unsigned int index_buffer_ = 0;
   std::size_t capacity_vertices_ = 0;  // vertices the vertex buffer holds
-  std::size_t capacity_quads_ = 0;     // quads the index buffer holds
   std::size_t primitive_count_ = 0;
   std::vector<Vertex> vertices_;
   std::vector<Run> runs_;
