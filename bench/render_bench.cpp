@@ -3,19 +3,22 @@
 //
 //   bench_render [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba]
 //
-// Prints a Markdown table: render ms/frame; PNG encode ms/frame and size with stb's default
-// deflate (the baseline) and with the fast path (libdeflate level 1, no row filter); and
-// end-to-end frames/s of simulate+render+encode+write, first all on one thread with stb's
-// default encoder (the baseline), then with the fast encoder, on this thread and on writer
-// threads. Ratios are against the baselines measured in the same run. Frames go to DIR
-// (default: a temporary directory that is removed afterwards); --dump-frame saves the last
-// all-overlay frame as raw RGBA.
+// Prints a Markdown table: render ms/frame, wall-clock and CPU time of all threads (llvmpipe
+// rasterises on its own threads); PNG encode ms/frame and size with stb's default deflate
+// (the baseline) and with the fast path (libdeflate level 1, no row filter); and end-to-end
+// frames/s of simulate+render+encode+write, first all on one thread with stb's default
+// encoder (the baseline), then with the fast encoder, on this thread and on writer threads,
+// with the CPU time of all threads per frame for the last. On a machine shared with other
+// jobs the CPU times move much less than the wall-clock ones. Ratios are against the
+// baselines measured in the same run. Frames go to DIR (default: a temporary directory
+// that is removed afterwards); --dump-frame saves the last all-overlay frame as raw RGBA.
 #include "core/world.h"
 #include "render/camera.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
 #include "render/png_encoder.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -41,6 +44,16 @@ constexpr int kBodies = 1000;
 
 double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// CPU time used so far by every thread of this process (user + system), milliseconds.
+double process_cpu_milliseconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto ms = [](const timeval& t) {
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-3 * static_cast<double>(t.tv_usec);
+  };
+  return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
 
 // A 40 m wide bin with 1000 bodies (circles, oriented boxes, triangles and hexagons, in
@@ -153,14 +166,21 @@ double end_to_end_synchronous(World world, FrameRenderer& renderer, const Camera
   return 1000.0 * frames / milliseconds_since(start);
 }
 
+// Frames/s and CPU milliseconds per frame (all threads) of a run.
+struct Throughput {
+  double frames_per_second = 0.0;
+  double cpu_ms_per_frame = 0.0;
+};
+
 // The same with the writer's worker threads encoding while the next frame is made.
-double end_to_end_async(World world, FrameRenderer& renderer, const Camera& camera, const FrameOptions& options,
-                        int frames, const fs::path& directory, int workers) {
+Throughput end_to_end_async(World world, FrameRenderer& renderer, const Camera& camera, const FrameOptions& options,
+                            int frames, const fs::path& directory, int workers) {
   FrameWriterOptions writer_options;
   writer_options.directory = directory;
   writer_options.scene_name = "bin1000";
   writer_options.worker_threads = workers;
   writer_options.queue_capacity = 4;
+  const double cpu_start = process_cpu_milliseconds();
   const Clock::time_point start = Clock::now();
   AsyncFrameWriter writer(writer_options);
   for (int i = 0; i < frames; ++i) {
@@ -170,18 +190,20 @@ double end_to_end_async(World world, FrameRenderer& renderer, const Camera& came
     writer.submit(i, std::move(frame));
   }
   writer.finish();
-  return 1000.0 * frames / milliseconds_since(start);
+  return Throughput{1000.0 * frames / milliseconds_since(start),
+                    (process_cpu_milliseconds() - cpu_start) / static_cast<double>(frames)};
 }
 
 // Everything measured for one set of overlay flags.
 struct Measured {
   double render_ms = 0.0;
+  double render_cpu_ms = 0.0;
   EncodeResult stb;
   EncodeResult fast;
   double baseline_fps = 0.0;
   double fast_sync_fps = 0.0;
-  double async1_fps = 0.0;
-  double async2_fps = 0.0;
+  Throughput async1;
+  Throughput async2;
 };
 
 }  // namespace
@@ -218,12 +240,15 @@ int main(int argc, char** argv) {
     for (int i = 0; i < args.frames; ++i) {
       rendered.step();
       contacts += rendered.contacts().size();
+      const double cpu_start = process_cpu_milliseconds();
       start = Clock::now();
       renderer.render(rendered, camera, options, hud_for(i), frame);
       m.render_ms += milliseconds_since(start);
+      m.render_cpu_ms += process_cpu_milliseconds() - cpu_start;
       if (i < 20) frames.push_back(frame);
     }
     m.render_ms /= args.frames;
+    m.render_cpu_ms /= args.frames;
     if (!args.dump_frame.empty() && flags == draw_all) {
       std::ofstream(args.dump_frame, std::ios::binary)
           .write(reinterpret_cast<const char*>(frames.back().rgba.data()),
@@ -233,8 +258,8 @@ int main(int argc, char** argv) {
     m.fast = measure_encode(frames, PngEncoding::Fast);
     m.baseline_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, PngEncoding::StbDefault);
     m.fast_sync_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, PngEncoding::Fast);
-    m.async1_fps = end_to_end_async(world, renderer, camera, options, args.frames, out, 1);
-    m.async2_fps = end_to_end_async(world, renderer, camera, options, args.frames, out, 2);
+    m.async1 = end_to_end_async(world, renderer, camera, options, args.frames, out, 1);
+    m.async2 = end_to_end_async(world, renderer, camera, options, args.frames, out, 2);
     results.push_back(m);
   }
 
@@ -247,6 +272,7 @@ int main(int argc, char** argv) {
   const Measured& shapes = results[1];
   std::printf("| measure | all overlays | shapes only |\n|---|---|---|\n");
   std::printf("| render (draw + rasterise + read back), ms/frame | %.2f | %.2f |\n", all.render_ms, shapes.render_ms);
+  std::printf("| render, CPU of all threads, ms/frame | %.2f | %.2f |\n", all.render_cpu_ms, shapes.render_cpu_ms);
   std::printf("| PNG encode, stb default (baseline), ms/frame | %.2f (%.0f KB) | %.2f (%.0f KB) |\n",
               all.stb.milliseconds, all.stb.kilobytes, shapes.stb.milliseconds, shapes.stb.kilobytes);
   std::printf("| PNG encode, fast (libdeflate 1, no filter), ms/frame | %.2f (%.0f KB) | %.2f (%.0f KB) |\n",
@@ -261,8 +287,12 @@ int main(int argc, char** argv) {
   row("end to end, 1 thread, stb default (baseline)", all.baseline_fps, all.baseline_fps, shapes.baseline_fps,
       shapes.baseline_fps);
   row("end to end, 1 thread, fast PNG", all.fast_sync_fps, all.baseline_fps, shapes.fast_sync_fps, shapes.baseline_fps);
-  row("end to end, fast PNG on 1 writer thread", all.async1_fps, all.baseline_fps, shapes.async1_fps, shapes.baseline_fps);
-  row("end to end, fast PNG on 2 writer threads", all.async2_fps, all.baseline_fps, shapes.async2_fps, shapes.baseline_fps);
+  row("end to end, fast PNG on 1 writer thread", all.async1.frames_per_second, all.baseline_fps,
+      shapes.async1.frames_per_second, shapes.baseline_fps);
+  row("end to end, fast PNG on 2 writer threads", all.async2.frames_per_second, all.baseline_fps,
+      shapes.async2.frames_per_second, shapes.baseline_fps);
+  std::printf("| the same, CPU of all threads, ms/frame | %.1f | %.1f |\n", all.async2.cpu_ms_per_frame,
+              shapes.async2.cpu_ms_per_frame);
 
   if (temporary_output) fs::remove_all(out);
   return 0;
