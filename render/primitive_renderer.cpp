@@ -21,17 +21,17 @@ namespace {
 // Half extents so large that a rectangle's coverage is 1 everywhere (polygon fills).
 constexpr float kSolidExtent = 1.0e6f;
 // Pixels around a primitive's edge that its sprite or quad covers: anti-aliased coverage
-// reaches half a pixel beyond every edge and is 0 from there on.
+// reaches half a pixel beyond every edge and is 0 from there on (an arrow head's mitred
+// base corners reach further; draw_arrow widens its bounds for them).
 constexpr float kMargin = 0.5f;
 // Sprites up to this many pixels across are always points. Larger ones are points only
 // while their square is at most kMaxSpriteWaste times the primitive's own rectangle;
 // otherwise (a long or diagonal line) a quad hugs the primitive. llvmpipe's cost follows
-// the 4x4 pixel blocks a primitive touches far more than the primitive count or the
-// fragment shader's length. Chosen by instruction counts (callgrind, LP_NUM_THREADS=0) of
-// the 1000-body all-overlay frame of bench_render, with a 1-pixel margin: 6 and 2.5 gave
-// 335 M a frame; 16 and 2, 461 M; always points, 431 M; always quads, 361 M; one
-// enclosing triangle instead of a quad, 369 M (the renderer with a quad per primitive and
-// ten per character: 440 M). A half-pixel margin then gave 299 M.
+// the 4x4 pixel blocks a primitive touches more than the primitive count. Chosen by
+// instruction counts (callgrind, LP_NUM_THREADS=0, steady state) of the 1000-body
+// all-overlay frame of bench_render: 6 and 2.5 gave 271 M a frame; 10 and 3, 275 M; 4 and
+// 2, 284 M; always points, 375 M; always quads, 302 M; one enclosing triangle instead of
+// a quad, 297 M (docs/rendering.md).
 constexpr float kSmallSprite = 6.0f;
 constexpr float kMaxSpriteWaste = 2.5f;
 
