@@ -62,6 +62,9 @@ int run_cli(int argc, char** argv) {
                              "also write a video (.mp4 or .gif; needs ffmpeg)");
   render_command->add_option("--threads", render.threads, "PNG encoding threads")
       ->capture_default_str();
+  render_command->add_option("--trails", render.trails,
+                             "motion trails: 'dynamic' (every dynamic body) or body indices "
+                             "3,7,12 (as the ids overlay shows them)");
 
   TraceArguments trace;
   CLI::App* trace_command = app.add_subcommand(

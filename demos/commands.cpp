@@ -81,6 +81,7 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
   options.directory = arguments.out;
   if (arguments.threads < 1 || arguments.threads > 64) throw UsageError("--threads must be 1..64");
   options.writer_threads = arguments.threads;
+  if (arguments.trails) options.trails = parse_trails(*arguments.trails, "--trails");
   if (arguments.video) {
     check_video_output(*arguments.video);
     options.video = std::filesystem::path(*arguments.video);

@@ -29,6 +29,7 @@ struct RenderArguments {
   std::string out = "out";              ///< directory
   std::optional<std::string> video;     ///< .mp4 / .gif path
   int threads = 2;                      ///< PNG encoding threads
+  std::optional<std::string> trails;    ///< `dynamic` or body indices with motion trails
 };
 
 /// `impulse2d trace`.

@@ -10,6 +10,7 @@
 #include "demos/video_encoder.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
+#include "render/motion_trails.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -55,10 +56,19 @@ FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
   frame_options.theme = options.theme;
   render::HudInfo hud;
   hud.scene_name = scene_title(run.scene());
+  constexpr std::size_t trail_points = 240;  // 4 s of path at 60 steps per second
+  render::MotionTrails trails(trail_points);
+  if (!options.trails.empty()) {
+    frame_options.trails = &trails;
+    record_trails(options.trails, run.world(), trails);
+  }
 
   FrameSequenceResult result;
   for (const std::int64_t frame_step : plan.frames) {
-    while (run.step_count() < frame_step) run.step();
+    while (run.step_count() < frame_step) {
+      run.step();
+      if (!options.trails.empty()) record_trails(options.trails, run.world(), trails);
+    }
     hud.frame = frame_step;
     render::Frame frame = writer.take_spare_frame();
     renderer.render(run.world(), camera, frame_options, hud, frame);

@@ -11,6 +11,7 @@
 #include "core/debug_draw.h"
 #include "demos/frame_plan.h"
 #include "demos/scene_run.h"
+#include "demos/trail_selection.h"
 #include "render/palette.h"
 
 namespace impulse2d::demos {
@@ -24,6 +25,7 @@ struct FrameSequenceOptions {
   std::filesystem::path directory = "out";     ///< created if missing
   std::optional<std::filesystem::path> video;  ///< also encode an .mp4 / .gif here
   int writer_threads = 2;                      ///< PNG encoding threads
+  TrailSelection trails;                       ///< bodies whose recent path is drawn
 };
 
 /// What was written.

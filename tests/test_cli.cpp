@@ -152,6 +152,17 @@ TEST_F(CliTest, DiffSaysSameForTwoRendersAndWritesAReportForDifferentFrames) {
   EXPECT_NE(missing.err.find("nowhere.png"), std::string::npos) << missing.err;
 }
 
+TEST_F(CliTest, TrailsAddTheBodiesPathsToTheFrames) {
+  ASSERT_EQ(run("render tutorial --frames 120 --size 320x240 --out plain").status, 0);
+  const Result trails = run("render tutorial --frames 120 --size 320x240 --trails dynamic --out t");
+  ASSERT_EQ(trails.status, 0) << trails.err;
+  EXPECT_EQ(run("diff plain/tutorial_00120.png t/tutorial_00120.png").status, 1);
+  const Result bad = run("render tutorial --frames 120 --trails 3,x --out u");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--trails '3,x': 'x' is not a body index"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "u"));
+}
+
 TEST_F(CliTest, VideoIsEncodedWhenFfmpegIsInstalled) {
   if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) {
     GTEST_SKIP() << "ffmpeg is not installed (optional: apt-get install ffmpeg)";
