@@ -163,7 +163,7 @@ class Character {
   /// Draws the character's overlays: ground normal (green), wall normal (orange), a coyote
   /// bar (yellow) and a buffer bar (magenta) under the feet, a dot per extra jump left above
   /// the head and a label with the numbers. Shapes themselves are drawn by `World::draw`.
-  void draw(const World& world, DebugDraw& draw) const;
+  void draw(const World& world, DebugDraw& draw, Color label_color = Color{0.0f, 0.0f, 0.0f, 1.0f}) const;
 
  private:
   void sense_contacts(const World& world, vec2 up, float move_x);

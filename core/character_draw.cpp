@@ -16,7 +16,6 @@ constexpr Color coyote_color{0.95f, 0.80f, 0.10f, 1.0f};
 constexpr Color buffer_color{0.85f, 0.20f, 0.75f, 1.0f};
 constexpr Color empty_bar_color{0.30f, 0.30f, 0.30f, 0.5f};
 constexpr Color jump_dot_color{0.15f, 0.35f, 0.90f, 1.0f};
-constexpr Color label_color{0.0f, 0.0f, 0.0f, 1.0f};
 constexpr float normal_arrow_length = 0.6f;  // metres
 constexpr float jump_dot_pixels = 8.0f;
 
@@ -30,7 +29,7 @@ void draw_bar(DebugDraw& draw, vec2 left, float width, int left_steps, int windo
 
 }  // namespace
 
-void Character::draw(const World& world, DebugDraw& draw) const {
+void Character::draw(const World& world, DebugDraw& draw, Color label_color) const {
   const vec2 center = world.body(body_).transform.position;
   const float dt = world.settings().time_step;
   const int coyote_window = window_steps(settings_.coyote_time, dt);

@@ -57,6 +57,7 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
   frame_options.draw = options.draw;
   frame_options.theme = options.theme;
   frame_options.show_hud = false;  // the label strip says it
+  frame_options.extra_overlays = run.script_overlays();
   const render::ThemePalette palette = render::theme_palette(options.theme);
 
   // Render every tile first (the simulation runs forward once), remembering its label.

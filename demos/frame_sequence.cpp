@@ -54,6 +54,7 @@ FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
   render::FrameOptions frame_options;
   frame_options.draw = options.draw;
   frame_options.theme = options.theme;
+  frame_options.extra_overlays = run.script_overlays();
   render::HudInfo hud;
   hud.scene_name = scene_title(run.scene());
   constexpr std::size_t trail_points = 240;  // 4 s of path at 60 steps per second

@@ -96,4 +96,12 @@ void SceneRun::step() {
   world_.step();
 }
 
+std::function<void(DebugDraw&, const DebugDrawOptions&)> SceneRun::script_overlays() const {
+  return [this](DebugDraw& draw, const DebugDrawOptions& options) {
+    if (script_ && (options.flags & ~std::uint32_t{draw_shapes}) != 0) {
+      script_->draw(world_, draw, options);
+    }
+  };
+}
+
 }  // namespace impulse2d::demos

@@ -4,6 +4,7 @@
 /// events and per-step script.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -34,6 +35,11 @@ class SceneRun {
   /// world step and checks the shape kinds of any new body. Throws `UsageError` naming the
   /// event when it refers to a body that was removed.
   void step();
+
+  /// A drawing callback for `render::FrameOptions::extra_overlays`: the scene script's own
+  /// overlays (if it has any), drawn when the frame has any overlay on besides shapes.
+  /// Valid while this run lives.
+  std::function<void(DebugDraw&, const DebugDrawOptions&)> script_overlays() const;
 
  private:
   void apply_event(const SceneEvent& event);

@@ -9,6 +9,8 @@
 
 namespace impulse2d {
 class World;
+class DebugDraw;
+struct DebugDrawOptions;
 }
 
 namespace impulse2d::demos {
@@ -29,6 +31,14 @@ class StepScript {
     (void)world;
     (void)name;
     (void)pressed;
+  }
+  /// Draws the script's own overlays over the world's (e.g. a character's ground normal,
+  /// timers and jumps left), in world coordinates, with the frame's palette and scales.
+  /// Nothing by default.
+  virtual void draw(const World& world, DebugDraw& draw, const DebugDrawOptions& options) const {
+    (void)world;
+    (void)draw;
+    (void)options;
   }
 };
 

@@ -51,6 +51,7 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   context_->make_current();
   primitives_->begin(camera);
   world.draw(*primitives_, draw_options);
+  if (options.extra_overlays) options.extra_overlays(*primitives_, draw_options);
   const bool trails_on = options.trails != nullptr && !options.trails->empty();
   if (trails_on) options.trails->draw(*primitives_, palette.trail);
   if (options.show_hud || options.show_legend) {

@@ -42,6 +42,10 @@ struct FrameOptions {
   int text_scale = 1;          ///< integer magnification of HUD and legend text (1 = 7 px caps)
   /// Motion trails to draw over the overlays (not owned; nullptr for none).
   const MotionTrails* trails = nullptr;
+  /// Extra world-space drawing after the world's own overlays and before the trails, e.g. a
+  /// scene script's character overlays; empty for none. Given the frame's overlay options so
+  /// it can use the theme's palette and scales.
+  std::function<void(DebugDraw&, const DebugDrawOptions&)> extra_overlays;
 };
 
 /// Owns an offscreen GL context and the primitive batch, and renders frames of a fixed size.
@@ -67,8 +71,8 @@ class FrameRenderer {
   /// "GL_RENDERER | GL_VERSION" of the context, for golden-image sidecars.
   std::string fingerprint() const;
 
-  /// Draws `world` (via `World::draw`), then trails, HUD and legend, into `frame`. The camera
-  /// must have this renderer's size (else `RenderError`).
+  /// Draws `world` (via `World::draw`), then `extra_overlays`, trails, HUD and legend, into
+  /// `frame`. The camera must have this renderer's size (else `RenderError`).
   void render(const World& world, const Camera& camera, const FrameOptions& options,
               const HudInfo& hud, Frame& frame);
   /// As above, returning a new frame.

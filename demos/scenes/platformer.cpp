@@ -81,6 +81,10 @@ class PlayerController final : public StepScript {
     character_->update(world, CharacterInput{move, jump_, down_});
   }
 
+  void draw(const World& world, DebugDraw& draw, const DebugDrawOptions& options) const override {
+    if (character_) character_->draw(world, draw, options.palette.label);
+  }
+
  private:
   void start(World& world) {
     for (const BodyId id : world.body_ids()) {

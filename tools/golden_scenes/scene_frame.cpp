@@ -65,6 +65,7 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
   render::FrameOptions options;
   options.draw = scene.view.draw;
   if (spec.overlays != 0) options.draw.flags = spec.overlays;
+  options.extra_overlays = run.script_overlays();
   render::HudInfo hud;
   hud.scene_name = demos::scene_title(scene);
   hud.frame = spec.step;
