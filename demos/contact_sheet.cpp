@@ -66,7 +66,8 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
   for (const std::int64_t step : plan.frames) {
     while (run.step_count() < step) run.step();
     frame_options.show_legend = frames.empty();  // one legend, on the first tile
-    frames.push_back(tiles.render(run.world(), camera, frame_options, render::HudInfo{}));
+    frames.push_back(
+        tiles.render(run.world(), frame_camera(camera, run), frame_options, render::HudInfo{}));
     labels.push_back(step_label(step, run.world().time()));
   }
 

@@ -72,7 +72,7 @@ FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
     }
     hud.frame = frame_step;
     render::Frame frame = writer.take_spare_frame();
-    renderer.render(run.world(), camera, frame_options, hud, frame);
+    renderer.render(run.world(), frame_camera(camera, run), frame_options, hud, frame);
     if (video) video->add(frame);
     const std::filesystem::path file = writer.path_for(frame_step);
     guard.will_write_file(file);

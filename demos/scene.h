@@ -23,18 +23,23 @@ class World;
 
 namespace impulse2d::demos {
 
-/// Where the camera looks. It stays fixed for the whole run.
+/// Where the camera looks. It stays fixed for the whole run unless it follows a body.
 struct CameraSpec {
   /// How the view is chosen.
   enum class Mode {
     FitWorld,   ///< fit the bounds of every body as built (before the first step)
     FitBounds,  ///< fit `bounds`
     Centered,   ///< `center` at the image centre, `pixels_per_metre` zoom
+    /// Each frame centred on a body, `pixels_per_metre` zoom: the scene script's
+    /// `followed_body()` when it names one, else the body of creation index `follow_body`;
+    /// `center` until that body exists.
+    Follow,
   };
   Mode mode = Mode::FitWorld;      ///< which of the fields below apply
   Aabb bounds;                     ///< FitBounds: world rectangle shown whole, metres
-  vec2 center{0.0f, 0.0f};         ///< Centered: world point at the image centre, metres
-  float pixels_per_metre = 40.0f;  ///< Centered: zoom
+  vec2 center{0.0f, 0.0f};         ///< Centered (and Follow's start): image centre, metres
+  float pixels_per_metre = 40.0f;  ///< Centered, Follow: zoom
+  int follow_body = 0;             ///< Follow: creation index (the scene's bodies in order)
 };
 
 /// The defaults of a rendered run; the command line overrides each.

@@ -258,12 +258,21 @@ int read_body_reference(const JsonCursor& node, const BodyNames& names) {
   return static_cast<int>(node.integer(0, 1000000));
 }
 
-CameraSpec read_camera(const JsonCursor& node) {
-  node.allow_only({"bounds", "center", "pixels_per_metre"});
+CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
+  node.allow_only({"bounds", "center", "pixels_per_metre", "follow"});
   CameraSpec camera;
-  if (auto bounds = node.optional_field("bounds")) {
-    if (node.has("center"))
-      node.fail("give either \"bounds\" or \"center\" with \"pixels_per_metre\", not both");
+  const int ways = (node.has("bounds") ? 1 : 0) + (node.has("center") ? 1 : 0) +
+                   (node.has("follow") ? 1 : 0);
+  if (ways > 1) {
+    node.fail(
+        "give one of \"bounds\", \"center\" (with \"pixels_per_metre\") or \"follow\" (with "
+        "\"pixels_per_metre\")");
+  }
+  if (auto follow = node.optional_field("follow")) {
+    camera.mode = CameraSpec::Mode::Follow;
+    camera.follow_body = read_body_reference(*follow, names);
+    camera.pixels_per_metre = node.field("pixels_per_metre").positive();
+  } else if (auto bounds = node.optional_field("bounds")) {
     if (bounds->size() != 2) bounds->fail("expected [[min x, min y], [max x, max y]]");
     camera.mode = CameraSpec::Mode::FitBounds;
     camera.bounds.lower = bounds->element(0).vector();
@@ -412,7 +421,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     for (const BodySpawn& body : spawned) cover(body);
   }
 
-  if (auto field = root.optional_field("camera")) scene.view.camera = read_camera(*field);
+  if (auto field = root.optional_field("camera")) scene.view.camera = read_camera(*field, names);
   if (auto run = root.optional_field("run")) {
     run->allow_only({"steps", "frames"});
     if (auto steps = run->optional_field("steps")) scene.view.steps = steps->integer(1, 10000000);

@@ -96,6 +96,18 @@ void SceneRun::step() {
   world_.step();
 }
 
+std::optional<vec2> SceneRun::followed_position() const {
+  const CameraSpec& camera = scene_.view.camera;
+  if (camera.mode != CameraSpec::Mode::Follow) return std::nullopt;
+  std::optional<BodyId> body = script_ ? script_->followed_body() : std::nullopt;
+  if (!body && camera.follow_body >= 0 &&
+      static_cast<std::size_t>(camera.follow_body) < created_.size()) {
+    body = created_[static_cast<std::size_t>(camera.follow_body)];
+  }
+  if (!body || !world_.is_valid(*body)) return std::nullopt;
+  return world_.body(*body).transform.position;
+}
+
 std::function<void(DebugDraw&, const DebugDrawOptions&)> SceneRun::script_overlays() const {
   return [this](DebugDraw& draw, const DebugDrawOptions& options) {
     if (script_ && (options.flags & ~std::uint32_t{draw_shapes}) != 0) {

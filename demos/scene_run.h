@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/world.h"
@@ -35,6 +36,10 @@ class SceneRun {
   /// world step and checks the shape kinds of any new body. Throws `UsageError` naming the
   /// event when it refers to a body that was removed.
   void step();
+
+  /// Where a following camera looks now: the followed body's position, or nothing when the
+  /// scene's camera does not follow or the body does not exist (yet).
+  std::optional<vec2> followed_position() const;
 
   /// A drawing callback for `render::FrameOptions::extra_overlays`: the scene script's own
   /// overlays (if it has any), drawn when the frame has any overlay on besides shapes.

@@ -4,8 +4,11 @@
 /// buttons. Scripted events from data (`SceneEvent`) are applied by the run itself.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/body.h"
 
 namespace impulse2d {
 class World;
@@ -32,6 +35,9 @@ class StepScript {
     (void)name;
     (void)pressed;
   }
+  /// The body a following camera (`CameraSpec::Mode::Follow`) should keep centred, when the
+  /// script made it (e.g. the player's character); none by default.
+  virtual std::optional<BodyId> followed_body() const { return std::nullopt; }
   /// Draws the script's own overlays over the world's (e.g. a character's ground normal,
   /// timers and jumps left), in world coordinates, with the frame's palette and scales.
   /// Nothing by default.

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/world.h"
+#include "demos/scene_camera.h"
 #include "demos/scene_loader.h"
 #include "demos/scene_run.h"
 #include "demos/usage_error.h"
@@ -203,7 +204,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"BadOverlay", R"({"bodies": [], "overlays": ["sparkles"]})",
                 "overlays[0]: unknown overlay 'sparkles'"},
         BadFile{"BadCamera", R"({"bodies": [], "camera": {"bounds": [[1, 1], [0, 0]]}})",
-                "camera.bounds: the second corner must be above and right of the first"}),
+                "camera.bounds: the second corner must be above and right of the first"},
+        BadFile{"FollowUnknownBody",
+                R"({"bodies": [], "camera": {"follow": "hero", "pixels_per_metre": 40}})",
+                "camera.follow: no body is named \"hero\""},
+        BadFile{"FollowAndBounds",
+                R"({"bodies": [], "camera": {"follow": 0, "pixels_per_metre": 40,
+                                             "bounds": [[0, 0], [1, 1]]}})",
+                "camera: give one of \"bounds\""}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(SceneFile, ButtonsTheSceneDoesNotHaveAreRejectedBeforeTheRun) {
@@ -219,6 +227,29 @@ TEST(SceneFile, ButtonsTheSceneDoesNotHaveAreRejectedBeforeTheRun) {
               std::string::npos)
         << error.what();
   }
+}
+
+TEST(SceneFile, AFollowingCameraKeepsTheNamedBodyAtTheImageCentre) {
+  const Scene scene = parse_scene(
+      R"({"bodies": [{"type": "static", "shape": {"type": "box", "half_extents": [5, 0.5]},
+                      "position": [0, -1], "material": "Static"},
+                     {"name": "ball", "shape": {"type": "circle", "radius": 0.25},
+                      "position": [2, 8], "velocity": [3, 0]}],
+          "camera": {"follow": "ball", "pixels_per_metre": 20}})",
+      "follow.json");
+  ASSERT_EQ(scene.view.camera.mode, CameraSpec::Mode::Follow);
+  EXPECT_EQ(scene.view.camera.follow_body, 1);
+  SceneRun run(scene, Params(scene.params));
+  const render::Camera camera = scene_camera(scene.view.camera, run.world(), 200, 100);
+  for (int i = 0; i < 30; ++i) run.step();
+  const vec2 ball = run.world().body(run.world().body_ids()[1]).transform.position;
+  ASSERT_TRUE(run.followed_position().has_value());
+  EXPECT_EQ(*run.followed_position(), ball);
+  const render::Camera followed = frame_camera(camera, run);
+  const vec2 pixel = followed.world_to_pixel(ball);
+  EXPECT_NEAR(pixel.x, 100.0f, 1e-3f);
+  EXPECT_NEAR(pixel.y, 50.0f, 1e-3f);
+  EXPECT_FLOAT_EQ(followed.pixels_per_metre(), 20.0f);
 }
 
 TEST(SceneFile, AnUnreadableFileIsNamed) {

@@ -81,6 +81,11 @@ class PlayerController final : public StepScript {
     character_->update(world, CharacterInput{move, jump_, down_});
   }
 
+  std::optional<BodyId> followed_body() const override {
+    if (!character_) return std::nullopt;
+    return character_->body();
+  }
+
   void draw(const World& world, DebugDraw& draw, const DebugDrawOptions& options) const override {
     if (character_) character_->draw(world, draw, options.palette.label);
   }
@@ -146,8 +151,11 @@ Scene platformer() {
   scene.model.polygons = true;
   scene.model.rotation = false;
   scene.model.restitution = false;
-  scene.view.camera.mode = CameraSpec::Mode::FitBounds;
-  scene.view.camera.bounds = make_bounds({-3.0f, -1.0f}, {40.0f, 9.5f});
+  // The camera follows the character (the script's followed body), close enough to read its
+  // overlays while still showing the part of the level it is in.
+  scene.view.camera.mode = CameraSpec::Mode::Follow;
+  scene.view.camera.center = spawn;
+  scene.view.camera.pixels_per_metre = 32.0f;
   scene.view.steps = 1110;
   scene.view.frames = "::4";
   scene.view.draw.flags = draw_shapes | draw_contact_normals;

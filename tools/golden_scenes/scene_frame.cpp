@@ -69,7 +69,8 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
   render::HudInfo hud;
   hud.scene_name = demos::scene_title(scene);
   hud.frame = spec.step;
-  const render::Frame frame = renderer.render(run.world(), camera, options, hud);
+  const render::Frame frame =
+      renderer.render(run.world(), demos::frame_camera(camera, run), options, hud);
 
   ProducedFrame produced;
   produced.image = Image{frame.width, frame.height, frame.rgba};
