@@ -39,7 +39,8 @@ struct CameraSpec {
   Aabb bounds;                     ///< FitBounds: world rectangle shown whole, metres
   vec2 center{0.0f, 0.0f};         ///< Centered (and Follow's start): image centre, metres
   float pixels_per_metre = 40.0f;  ///< Centered, Follow: zoom
-  int follow_body = 0;             ///< Follow: creation index (the scene's bodies in order)
+  /// Follow: creation index (the scene's bodies in order); -1 for the script's body only.
+  int follow_body = 0;
 };
 
 /// The defaults of a rendered run; the command line overrides each.

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/material.h"
 #include "core/world.h"
+#include "demos/character_script.h"
 #include "demos/json_cursor.h"
 #include "demos/overlays.h"
 #include "demos/usage_error.h"
@@ -209,7 +210,7 @@ ReadShape read_shape(const JsonCursor& node) {
 BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   node.allow_only({"name", "type", "shape", "position", "angle", "velocity", "angular_velocity",
                    "gravity_scale", "linear_damping", "angular_damping", "fixed_rotation", "bullet",
-                   "layers", "material"});
+                   "layers", "material", "one_way"});
   BodySpawn body;
   BodyDef& def = body.def;
   if (auto field = node.optional_field("type")) {
@@ -231,6 +232,9 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
     def.angular_damping = field->non_negative();
   if (auto field = node.optional_field("fixed_rotation")) def.fixed_rotation = field->boolean();
   if (auto field = node.optional_field("bullet")) def.is_bullet = field->boolean();
+  if (auto field = node.optional_field("one_way")) {
+    if (field->boolean()) def.user_data = one_way_platform_tag;
+  }
   if (auto field = node.optional_field("layers")) {
     def.collision_layers = static_cast<std::uint32_t>(field->integer(0, 0xFFFFFFFFll));
   }
@@ -270,7 +274,10 @@ CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
   }
   if (auto follow = node.optional_field("follow")) {
     camera.mode = CameraSpec::Mode::Follow;
-    camera.follow_body = read_body_reference(*follow, names);
+    // "character" follows the file's character (the script's body); anything else names a body.
+    const bool character = follow->value().is_string() && follow->string() == "character" &&
+                           names.find("character") == names.end();
+    camera.follow_body = character ? -1 : read_body_reference(*follow, names);
     camera.pixels_per_metre = node.field("pixels_per_metre").positive();
   } else if (auto bounds = node.optional_field("bounds")) {
     if (bounds->size() != 2) bounds->fail("expected [[min x, min y], [max x, max y]]");
@@ -289,13 +296,46 @@ CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
   return camera;
 }
 
+/// The `character` object: a platformer character played from button events.
+CharacterDef read_character(const JsonCursor& node) {
+  node.allow_only({"position", "half_extents", "max_speed", "jump_height", "extra_jumps",
+                   "coyote_time", "jump_buffer_time", "max_slope_degrees"});
+  CharacterDef def;
+  def.position = node.field("position").vector();
+  if (auto field = node.optional_field("half_extents")) {
+    def.half_extents = field->vector();
+    if (!(def.half_extents.x > 0.0f && def.half_extents.y > 0.0f)) field->fail("must be > 0");
+  }
+  CharacterSettings& settings = def.settings;
+  if (auto field = node.optional_field("max_speed")) settings.max_speed = field->positive();
+  if (auto field = node.optional_field("jump_height")) settings.jump_height = field->positive();
+  if (auto field = node.optional_field("extra_jumps")) {
+    settings.extra_jumps = static_cast<int>(field->integer(0, 100));
+  }
+  if (auto field = node.optional_field("coyote_time")) settings.coyote_time = field->non_negative();
+  if (auto field = node.optional_field("jump_buffer_time")) {
+    settings.jump_buffer_time = field->non_negative();
+  }
+  if (auto field = node.optional_field("max_slope_degrees")) {
+    const float degrees = field->positive();
+    if (!(degrees < 90.0f)) field->fail("must be below 90");
+    settings.max_slope = degrees * 3.14159265f / 180.0f;
+  }
+  try {
+    validate_character_settings(settings);
+  } catch (const Error& error) {
+    node.fail(error.what());
+  }
+  return def;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& file) {
   const nlohmann::json document = parse_json_document(text, file);
   const JsonCursor root(document, file);
   root.allow_only({"name", "description", "caption", "settings", "model", "materials", "bodies",
-                   "events", "camera", "run", "overlays"});
+                   "events", "camera", "run", "overlays", "character"});
 
   Scene scene;
   scene.source = file;
@@ -422,6 +462,16 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   }
 
   if (auto field = root.optional_field("camera")) scene.view.camera = read_camera(*field, names);
+  if (auto field = root.optional_field("character")) {
+    const CharacterDef character = read_character(*field);
+    // The character is an axis-aligned box: an inferred model grows to include it, a declared
+    // one must already.
+    if (root.has("model") && !scene.model.boxes) {
+      field->fail("the character is a box: add \"box\" to model.shapes");
+    }
+    scene.model.boxes = true;
+    scene.script = [character](const Params&) { return std::make_unique<CharacterScript>(character); };
+  }
   if (auto run = root.optional_field("run")) {
     run->allow_only({"steps", "frames"});
     if (auto steps = run->optional_field("steps")) scene.view.steps = steps->integer(1, 10000000);

@@ -2,7 +2,10 @@
 // message naming the file, the JSON path and the reason.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "core/world.h"
@@ -250,6 +253,91 @@ TEST(SceneFile, AFollowingCameraKeepsTheNamedBodyAtTheImageCentre) {
   EXPECT_NEAR(pixel.x, 100.0f, 1e-3f);
   EXPECT_NEAR(pixel.y, 50.0f, 1e-3f);
   EXPECT_FLOAT_EQ(followed.pixels_per_metre(), 20.0f);
+}
+
+namespace {
+// A floor (top at y = 0), a one-way shelf whose top is at y = 2.3, and a character on the floor.
+std::string character_scene(const std::string& events) {
+  return R"({"bodies": [
+      {"type": "static", "shape": {"type": "box", "half_extents": [12, 0.5]},
+       "position": [0, -0.5], "material": "Static"},
+      {"type": "static", "shape": {"type": "box", "half_extents": [1.5, 0.1]},
+       "position": [0, 2.2], "material": "Static", "one_way": true}],
+    "character": {"position": [0, 0.5], "jump_height": 1.2},
+    "camera": {"follow": "character", "pixels_per_metre": 40},
+    "events": [)" + events + "]}";
+}
+}  // namespace
+
+TEST(SceneFile, ACharacterJumpsFromButtonEventsToItsJumpHeight) {
+  // A tap: jump pressed before step 10, released before step 11, so the first step of the
+  // flight is held (gravity scale 1/2) and the rest falls at g. The continuous apex of that
+  // schedule is Y = v0 dt - (g/2) dt^2 / 2 + v1^2 / (2 g) with v1 = v0 - (g/2) dt and
+  // v0 = sqrt(2 g h); semi-implicit Euler's discrete apex lies in
+  // [Y - v0 dt / 2, Y - v0 dt / 2 + g dt^2 / 8] (see tests/test_character_jump.cpp), give or
+  // take 1e-4 m of float rounding in the summed positions.
+  const Scene scene = parse_scene(
+      character_scene(R"({"step": 10, "type": "button", "button": "jump"},
+                         {"step": 11, "type": "button", "button": "jump", "pressed": false})"),
+      "character.json");
+  EXPECT_EQ(scene.view.camera.follow_body, -1);
+  SceneRun run(scene, Params(scene.params));
+  for (int i = 0; i < 10; ++i) run.step();
+  ASSERT_TRUE(run.followed_position().has_value());
+  const double take_off = run.followed_position()->y;
+  double apex = take_off;
+  for (int i = 0; i < 90; ++i) {
+    run.step();
+    apex = std::max(apex, static_cast<double>(run.followed_position()->y));
+  }
+  const double g = 9.81, h = 1.2, dt = run.world().settings().time_step;
+  const double v0 = std::sqrt(2 * g * h), v1 = v0 - g / 2 * dt;
+  const double continuous = v0 * dt - g / 2 * dt * dt / 2 + v1 * v1 / (2 * g);
+  EXPECT_GE(apex - take_off, continuous - v0 * dt / 2 - 1e-4);
+  EXPECT_LE(apex - take_off, continuous - v0 * dt / 2 + g * dt * dt / 8 + 1e-4);
+}
+
+TEST(SceneFile, ACharacterPassesUpThroughAOneWayBodyLandsOnItAndDropsThrough) {
+  const Scene scene = parse_scene(
+      character_scene(R"({"step": 10, "type": "button", "button": "jump"},
+                         {"step": 60, "type": "button", "button": "jump", "pressed": false},
+                         {"step": 120, "type": "button", "button": "down"},
+                         {"step": 120, "type": "button", "button": "jump"},
+                         {"step": 122, "type": "button", "button": "down", "pressed": false},
+                         {"step": 122, "type": "button", "button": "jump", "pressed": false})"),
+      "character.json");
+  SceneRun run(scene, Params(scene.params));
+  while (run.step_count() < 115) run.step();
+  const float slop = run.world().settings().slop;
+  EXPECT_NEAR(run.followed_position()->y, 2.3f + 0.5f, slop) << "standing on the shelf";
+  while (run.step_count() < 220) run.step();
+  EXPECT_NEAR(run.followed_position()->y, 0.5f, slop) << "dropped back to the floor";
+}
+
+TEST(SceneFile, ACharacterNeedsBoxesInADeclaredModel) {
+  EXPECT_NE(load_error(R"({"bodies": [], "model": {"shapes": ["circle"]},
+                          "character": {"position": [0, 1]}})")
+                .find("bad.json: character: the character is a box"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"bodies": [], "character": {"position": [0, 1], "jump_height": -1}})")
+                .find("bad.json: character.jump_height: must be > 0"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"bodies": [], "character": {"position": [0, 1], "wings": true}})")
+                .find("character"),
+            std::string::npos);
+}
+
+TEST(SceneFile, EveryExampleSceneFileLoadsAndRunsItsWholeLength) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(IMPULSE2D_SCENES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    ++files;
+    const Scene scene = load_scene_file(entry.path().string());
+    SceneRun run(scene, Params(scene.params));
+    while (run.step_count() < scene.view.steps) run.step();
+    EXPECT_TRUE(run.world().diverged_bodies().empty()) << entry.path();
+  }
+  EXPECT_GE(files, 3);  // projectile, seesaw_events, character
 }
 
 TEST(SceneFile, AnUnreadableFileIsNamed) {

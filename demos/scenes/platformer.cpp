@@ -4,9 +4,8 @@
 /// 30-degree slope, a coyote jump off a ledge followed by a double jump, a buffered jump on
 /// landing, a ride on a moving kinematic platform, and wall jumps up a shaft. The run is
 /// scripted with button events (left, right, jump, down), so it is the same every time.
-#include "core/character.h"
-#include "core/one_way_platform.h"
 #include "core/world.h"
+#include "demos/character_script.h"
 #include "demos/scene.h"
 #include "demos/scene_helpers.h"
 
@@ -16,7 +15,6 @@ namespace impulse2d::demos::scenes {
 namespace {
 
 // Tags in `BodyDef::user_data` by which the controller finds the bodies the builder made.
-constexpr std::uint64_t one_way_tag = 1;
 constexpr std::uint64_t moving_platform_tag = 2;
 
 constexpr vec2 spawn{-1.5f, 0.5f};          // character centre at the start, metres
@@ -40,7 +38,7 @@ BodyId add_tagged_box(World& world, BodyType type, vec2 lower, vec2 upper, std::
 void build(World& world, const Params&) {
   const Material course = course_material();
   add_tagged_box(world, BodyType::Static, {-3.0f, -1.0f}, {40.0f, 0.0f}, 0);    // floor
-  add_tagged_box(world, BodyType::Static, {1.5f, 2.0f}, {4.5f, 2.2f}, one_way_tag);
+  add_tagged_box(world, BodyType::Static, {1.5f, 2.0f}, {4.5f, 2.2f}, one_way_platform_tag);
   // 30-degree slope from (7, 0) up to the plateau at x = 12.
   const float slope_top = 5.0f * std::tan(radians(30.0f));
   const vec2 slope[3] = {{7.0f, 0.0f}, {12.0f, 0.0f}, {12.0f, slope_top}};
@@ -58,56 +56,34 @@ void build(World& world, const Params&) {
   add_tagged_box(world, BodyType::Static, {36.5f, 0.0f}, {40.0f, 6.3f}, 0);
 }
 
-/// Turns the buttons into the character's input each step, and drives the moving platform.
-class PlayerController final : public StepScript {
+/// The character from the buttons, plus the moving platform shuttling between its ends at
+/// constant speed (moved before the character reads its contacts).
+class PlatformerScript final : public CharacterScript {
  public:
-  std::vector<std::string> buttons() const override { return {"left", "right", "jump", "down"}; }
+  PlatformerScript() : CharacterScript(character_def()) {}
 
-  void button(World&, const std::string& name, bool pressed) override {
-    if (name == "left") left_ = pressed;
-    if (name == "right") right_ = pressed;
-    if (name == "jump") jump_ = pressed;
-    if (name == "down") down_ = pressed;
-  }
-
-  void before_step(World& world, std::int64_t) override {
-    if (!character_) start(world);
-    // The platform shuttles between its ends at constant speed, turning when it reaches one.
+  void before_step(World& world, std::int64_t step) override {
+    if (platform_.is_null()) {
+      for (const BodyId id : world.body_ids()) {
+        if (world.body(id).user_data == moving_platform_tag) platform_ = id;
+      }
+    }
     const float x = world.body(platform_).transform.position.x;
     if (x >= platform_right) platform_direction_ = -1.0f;
     if (x <= platform_left) platform_direction_ = 1.0f;
     world.set_linear_velocity(platform_, {platform_direction_ * platform_speed, 0.0f});
-    const float move = (right_ ? 1.0f : 0.0f) - (left_ ? 1.0f : 0.0f);
-    character_->update(world, CharacterInput{move, jump_, down_});
-  }
-
-  std::optional<BodyId> followed_body() const override {
-    if (!character_) return std::nullopt;
-    return character_->body();
-  }
-
-  void draw(const World& world, DebugDraw& draw, const DebugDrawOptions& options) const override {
-    if (character_) character_->draw(world, draw, options.palette.label);
+    CharacterScript::before_step(world, step);
   }
 
  private:
-  void start(World& world) {
-    for (const BodyId id : world.body_ids()) {
-      if (world.body(id).user_data == one_way_tag) one_way_.add(id);
-      if (world.body(id).user_data == moving_platform_tag) platform_ = id;
-    }
-    world.set_contact_filter(one_way_.filter());
+  static CharacterDef character_def() {
     CharacterDef def;
     def.position = spawn;
-    character_.emplace(world, def);
-    character_->set_one_way_platforms(&one_way_);
+    return def;
   }
 
-  OneWayPlatforms one_way_;
-  std::optional<Character> character_;
   BodyId platform_;
   float platform_direction_ = 1.0f;
-  bool left_ = false, right_ = false, jump_ = false, down_ = false;
 };
 
 /// The scripted run: (step, button, pressed) at 60 steps per second.
@@ -161,7 +137,7 @@ Scene platformer() {
   scene.view.draw.flags = draw_shapes | draw_contact_normals;
   scene.view.caption = "every move of the character, scripted";
   scene.build = build;
-  scene.script = [](const Params&) { return std::make_unique<PlayerController>(); };
+  scene.script = [](const Params&) { return std::make_unique<PlatformerScript>(); };
   for (const Press& press : run_script) {
     SceneEvent event;
     event.step = press.step;
