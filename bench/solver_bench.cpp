@@ -10,9 +10,9 @@
 //   depth  - deepest overlap left at the end (metres)
 //   error  - the worst box's distance out of place (sideways, or sunk beyond the slop its
 //            contacts may keep), metres: the accuracy axis of the speed/accuracy chart
-// With --sweep it instead runs the three solver families over iteration (and substep)
-// budgets and writes one CSV row per run (family,iterations,substeps,ms_per_step,error_m;
-// family is tutorial, cold, warm or substeps)
+// With --sweep it instead runs the solver families over iteration (and substep) budgets and
+// writes one CSV row per run (family,iterations,substeps,ms_per_step,error_m; family is
+// tutorial, cold, warm, substeps or soft)
 // for bench/chart_solver.sh to plot.
 // Usage: bench_solver [--steps N] [--rows R] [--csv FILE] [--sweep]
 #include "core/world.h"
@@ -73,6 +73,13 @@ std::vector<Method> methods() {
   substeps.substeps = 4;
   substeps.velocity_iterations = 2;
   list.push_back({"default, 4 substeps x 2 iterations", substeps});
+
+  // Box2D v3's solver with its defaults: 4 sub-steps of one soft pass and one relax pass.
+  WorldSettings soft;
+  soft.solver = SolverMethod::SoftStep;
+  soft.substeps = 4;
+  soft.velocity_iterations = 1;
+  list.push_back({"soft step, 4 substeps x 1 + 1 relax", soft});
   return list;
 }
 
@@ -157,6 +164,14 @@ void sweep(int rows, int steps, const std::string& csv_path) {
     std::printf("%-44s substeps %2d: %7.3f ms/step, error %.4f m\n", "default, substeps x 1 iteration", substeps,
                 r.median_ms, r.error);
   }
+  for (int substeps : {1, 2, 4, 8}) {
+    WorldSettings settings = all.back().settings;  // the soft step
+    settings.substeps = substeps;
+    const Result r = run(settings, rows, steps);
+    csv << "soft,1," << substeps << ',' << r.median_ms << ',' << r.error << '\n';
+    std::printf("%-44s substeps %2d: %7.3f ms/step, error %.4f m\n", "soft step, substeps x 1 + 1 relax", substeps,
+                r.median_ms, r.error);
+  }
 }
 
 }  // namespace
@@ -195,7 +210,7 @@ int main(int argc, char** argv) {
     sweep(rows, steps, csv_path);
     return 0;
   }
-  std::printf("pyramid of %d rows (%d boxes), %d steps of 1/60 s, 8 velocity iterations\n", rows,
+  std::printf("pyramid of %d rows (%d boxes), %d steps of 1/60 s, 8 velocity iterations unless named\n", rows,
               rows * (rows + 1) / 2, steps);
   std::printf("%-44s %9s %7s %8s %8s %6s %8s %8s\n", "method", "ms/step", "ratio", "sink m", "drift m", "moved",
               "depth m", "error m");

@@ -1,54 +1,15 @@
 #include "core/contact_solver.h"
 
-#include "core/integrate.h"
+#include "core/contact_solver_internal.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace impulse2d {
 
+using namespace contact_detail;
+
 namespace {
-
-// Effective inverse masses and inertias of a contact's two bodies.
-struct PairMass {
-  float inverse_mass_a;
-  float inverse_mass_b;
-  float inverse_inertia_a;
-  float inverse_inertia_b;
-};
-
-PairMass pair_mass(const Body& a, const Body& b, const WorldSettings& settings) {
-  return {a.inverse_mass, b.inverse_mass, effective_inverse_inertia(a, settings),
-          effective_inverse_inertia(b, settings)};
-}
-
-// Velocity of B's point relative to A's point.
-vec2 relative_velocity(const Body& a, const Body& b, const ContactPoint& point) {
-  const vec2 velocity_b = b.linear_velocity + cross(b.angular_velocity, point.anchor_b);
-  const vec2 velocity_a = a.linear_velocity + cross(a.angular_velocity, point.anchor_a);
-  return velocity_b - velocity_a;
-}
-
-// Applies `impulse` to B at its anchor and the opposite to A.
-void apply_impulse(Body& a, Body& b, const PairMass& mass, const ContactPoint& point, vec2 impulse) {
-  a.linear_velocity -= impulse * mass.inverse_mass_a;
-  a.angular_velocity -= mass.inverse_inertia_a * cross(point.anchor_a, impulse);
-  b.linear_velocity += impulse * mass.inverse_mass_b;
-  b.angular_velocity += mass.inverse_inertia_b * cross(point.anchor_b, impulse);
-}
-
-// 1 / (effective mass) along `direction` at a point: invA + invB + (rA x d)^2 invIA + ...
-float inverse_effective_mass(const PairMass& mass, const ContactPoint& point, vec2 direction) {
-  const float arm_a = cross(point.anchor_a, direction);
-  const float arm_b = cross(point.anchor_b, direction);
-  return mass.inverse_mass_a + mass.inverse_mass_b + arm_a * arm_a * mass.inverse_inertia_a +
-         arm_b * arm_b * mass.inverse_inertia_b;
-}
-
-bool is_solvable(const Contact& contact, const std::vector<Body>& bodies) {
-  return contact.enabled && (bodies[contact.body_a.index].inverse_mass > 0.0f ||
-                             bodies[contact.body_b.index].inverse_mass > 0.0f);
-}
 
 // Solves both normal impulses of a 2-point manifold at once: find x >= 0 with
 // v = K x + b >= 0 and x . v = 0 (a 2x2 linear complementarity problem) by trying the four
@@ -96,14 +57,11 @@ bool solve_normal_block(Body& a, Body& b, const PairMass& mass, Contact& contact
   return true;
 }
 
-vec2 tangent_of(vec2 normal) { return right_perpendicular(normal); }
-
 }  // namespace
 
 void prepare_contacts(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                       const WorldSettings& settings) {
-  const bool keep_impulses =
-      settings.solver == SolverMethod::AccumulatedImpulses && settings.warm_starting;
+  const bool keep_impulses = settings.solver != SolverMethod::PerIteration && settings.warm_starting;
   for (Contact& contact : contacts) {
     if (!contact.enabled) continue;
     const Body& a = bodies[contact.body_a.index];

@@ -25,6 +25,12 @@ void validate_settings(const WorldSettings& s) {
   require(finite(s.slop) && s.slop >= 0.0f, "slop", "must be finite and >= 0");
   require(finite(s.max_correction) && s.max_correction > 0.0f, "max_correction",
           "must be finite and > 0");
+  require(finite(s.contact_hertz) && s.contact_hertz > 0.0f, "contact_hertz",
+          "must be finite and > 0");
+  require(finite(s.contact_damping_ratio) && s.contact_damping_ratio >= 0.0f,
+          "contact_damping_ratio", "must be finite and >= 0");
+  require(finite(s.contact_push_max_speed) && s.contact_push_max_speed >= 0.0f,
+          "contact_push_max_speed", "must be finite and >= 0");
   require(finite(s.restitution_threshold) && s.restitution_threshold >= 0.0f,
           "restitution_threshold", "must be finite and >= 0");
   require(finite(s.sleep_linear_speed) && s.sleep_linear_speed >= 0.0f, "sleep_linear_speed",

@@ -18,6 +18,15 @@ enum class SolverMethod {
   /// Static/dynamic friction: the accumulated tangent impulse is clamped to mu_s * Pn while
   /// the point sticks, and to mu_d * Pn once it slides.
   AccumulatedImpulses,
+  /// Box2D v3's "soft step": collide once per step, then per sub-step integrate velocities,
+  /// warm start, solve with soft contacts (a spring-damper of `contact_hertz` and
+  /// `contact_damping_ratio` pushing out at most `contact_push_max_speed`, on the separation
+  /// recomputed from the current positions), integrate positions and relax (one solve pass
+  /// without the soft push-out); restitution is applied once at the end of the step.
+  /// Uses `substeps` sub-steps of `velocity_iterations` soft passes each; the soft push-out
+  /// replaces position correction, so `position_correction` and its parameters, `block_solver`
+  /// and `integrator` (always semi-implicit) are ignored. Friction as for AccumulatedImpulses.
+  SoftStep,
 };
 
 /// How overlap left after the velocity solve is removed.
@@ -60,6 +69,14 @@ struct WorldSettings {
   float correction_percent = 0.4f;  ///< fraction of overlap removed per pass (tutorial 0.2-0.8)
   float slop = 0.01f;               ///< metres of overlap allowed without correction
   float max_correction = 0.2f;      ///< metres a single NGS correction may move a point
+
+  /// SoftStep: stiffness of the soft contact, Hz (capped at a quarter of the sub-step rate;
+  /// contacts with a static or kinematic body use twice it).
+  float contact_hertz = 30.0f;
+  /// SoftStep: damping ratio of the soft contact (1 = critical; Box2D v3 uses 10).
+  float contact_damping_ratio = 10.0f;
+  /// SoftStep: fastest speed (m/s) at which the soft contact pushes overlapping bodies apart.
+  float contact_push_max_speed = 3.0f;
 
   /// Approach speed (m/s) below which a contact is treated as resting (restitution 0), so
   /// stacks settle. Set 0 to bounce at any speed.

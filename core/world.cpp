@@ -5,6 +5,7 @@
 #include "core/integrate.h"
 #include "core/narrow_phase.h"
 #include "core/position_correction.h"
+#include "core/soft_contact_solver.h"
 
 #include <algorithm>
 #include <chrono>
@@ -296,17 +297,10 @@ void World::step() {
     body.previous_angle = body.angle;
   }
   const float h = settings_.time_step / static_cast<float>(settings_.substeps);
-  for (int substep = 0; substep < settings_.substeps; ++substep) {
-    find_contacts();  // broad phase, then narrow phase through the jump table
-    Clock::time_point stage = Clock::now();
-    if (settings_.integrator == Integrator::ExplicitEuler) move_bodies(h);  // with the old velocity
-    integrate_velocities(bodies_, alive_, settings_, h);  // forces and gravity
-    stats_.integrate_ms += elapsed_ms(stage);
-    solve_velocities();  // contact impulses
-    stage = Clock::now();
-    if (settings_.integrator == Integrator::SemiImplicitEuler) move_bodies(h);  // with the new velocity
-    stats_.integrate_ms += elapsed_ms(stage);
-    correct_positions();  // remove the overlap left
+  if (settings_.solver == SolverMethod::SoftStep) {
+    soft_step(h);  // collides once, then sub-steps of soft contacts
+  } else {
+    impulse_step(h);  // per sub-step: collide, impulses, position correction
   }
   if (settings_.enable_sleeping) {
     sleep_islands_.update(bodies_, alive_, contacts_, settings_, settings_.time_step);
@@ -364,6 +358,52 @@ void World::solve_velocities() {
     }
   }
   update_sliding_state(contacts_, bodies_);
+  stats_.solver_ms += elapsed_ms(stage);
+}
+
+void World::impulse_step(float h) {
+  for (int substep = 0; substep < settings_.substeps; ++substep) {
+    find_contacts();  // broad phase, then narrow phase through the jump table
+    Clock::time_point stage = Clock::now();
+    if (settings_.integrator == Integrator::ExplicitEuler) move_bodies(h);  // with the old velocity
+    integrate_velocities(bodies_, alive_, settings_, h);  // forces and gravity
+    stats_.integrate_ms += elapsed_ms(stage);
+    solve_velocities();  // contact impulses
+    stage = Clock::now();
+    if (settings_.integrator == Integrator::SemiImplicitEuler) move_bodies(h);  // with the new velocity
+    stats_.integrate_ms += elapsed_ms(stage);
+    correct_positions();  // remove the overlap left
+  }
+}
+
+void World::soft_step(float h) {
+  find_contacts();  // once: the sub-steps track each point's separation through its anchors
+  Clock::time_point stage = Clock::now();
+  prepare_contacts(contacts_, bodies_, settings_);
+  stats_.solver_ms += elapsed_ms(stage);
+  for (int substep = 0; substep < settings_.substeps; ++substep) {
+    stage = Clock::now();
+    integrate_velocities(bodies_, alive_, settings_, h);  // forces and gravity
+    stats_.integrate_ms += elapsed_ms(stage);
+    stage = Clock::now();
+    if (settings_.warm_starting) warm_start_contacts(contacts_, bodies_, settings_);
+    for (int i = 0; i < settings_.velocity_iterations; ++i) {
+      solve_contacts_soft(contacts_, bodies_, settings_, h, /*use_bias=*/true);
+    }
+    stats_.solver_ms += elapsed_ms(stage);
+    stage = Clock::now();
+    move_bodies(h);
+    stats_.integrate_ms += elapsed_ms(stage);
+    stage = Clock::now();
+    for (int i = 0; i < settings_.velocity_iterations; ++i) {
+      solve_contacts_soft(contacts_, bodies_, settings_, h, /*use_bias=*/false);  // relax
+    }
+    stats_.solver_ms += elapsed_ms(stage);
+  }
+  stage = Clock::now();
+  break_static_friction(contacts_, bodies_, settings_);
+  update_sliding_state(contacts_, bodies_);
+  apply_restitution(contacts_, bodies_, settings_);
   stats_.solver_ms += elapsed_ms(stage);
 }
 

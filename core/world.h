@@ -142,6 +142,8 @@ class World {
   void move_bodies(float dt);
   void solve_velocities();
   void correct_positions();
+  void impulse_step(float h);  // PerIteration / AccumulatedImpulses: sub-steps of h seconds
+  void soft_step(float h);     // SoftStep: collide once, sub-steps of h seconds
   void restore_diverged_bodies();
 
   WorldSettings settings_;

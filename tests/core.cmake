@@ -16,3 +16,7 @@ impulse2d_add_test(test_physics
 impulse2d_add_test(test_step_allocations
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_step_allocations.cpp
   LIBS impulse2d_core)
+# Box2D v3's soft step against the same exact answers.
+impulse2d_add_test(test_soft_step
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_soft_step.cpp
+  LIBS impulse2d_core)

@@ -1,0 +1,65 @@
+#pragma once
+/// @file contact_solver_internal.h
+/// Helpers shared by the contact solvers only (not part of the public API): the two bodies'
+/// masses, relative velocity at a point, impulse application and effective mass.
+
+#include "core/body.h"
+#include "core/contact.h"
+#include "core/integrate.h"
+#include "core/settings.h"
+
+#include <vector>
+
+namespace impulse2d {
+namespace contact_detail {
+
+/// Inverse masses (1/kg) and inverse inertias (1/(kg m^2)) of a contact's two bodies.
+struct PairMass {
+  float inverse_mass_a;     ///< 1/kg
+  float inverse_mass_b;     ///< 1/kg
+  float inverse_inertia_a;  ///< 1/(kg m^2), 0 when A does not rotate
+  float inverse_inertia_b;  ///< 1/(kg m^2), 0 when B does not rotate
+};
+
+/// The pair's masses under the world's settings (rotation switches included).
+inline PairMass pair_mass(const Body& a, const Body& b, const WorldSettings& settings) {
+  return {a.inverse_mass, b.inverse_mass, effective_inverse_inertia(a, settings),
+          effective_inverse_inertia(b, settings)};
+}
+
+/// Velocity (m/s) of B's point relative to A's point, at the point's anchors.
+inline vec2 relative_velocity(const Body& a, const Body& b, const ContactPoint& point) {
+  const vec2 velocity_b = b.linear_velocity + cross(b.angular_velocity, point.anchor_b);
+  const vec2 velocity_a = a.linear_velocity + cross(a.angular_velocity, point.anchor_a);
+  return velocity_b - velocity_a;
+}
+
+/// Applies `impulse` (N s) to B at its anchor and the opposite to A.
+inline void apply_impulse(Body& a, Body& b, const PairMass& mass, const ContactPoint& point,
+                          vec2 impulse) {
+  a.linear_velocity -= impulse * mass.inverse_mass_a;
+  a.angular_velocity -= mass.inverse_inertia_a * cross(point.anchor_a, impulse);
+  b.linear_velocity += impulse * mass.inverse_mass_b;
+  b.angular_velocity += mass.inverse_inertia_b * cross(point.anchor_b, impulse);
+}
+
+/// 1 / (effective mass) along `direction` at a point, 1/kg:
+/// invA + invB + (rA x d)^2 invIA + (rB x d)^2 invIB.
+inline float inverse_effective_mass(const PairMass& mass, const ContactPoint& point, vec2 direction) {
+  const float arm_a = cross(point.anchor_a, direction);
+  const float arm_b = cross(point.anchor_b, direction);
+  return mass.inverse_mass_a + mass.inverse_mass_b + arm_a * arm_a * mass.inverse_inertia_a +
+         arm_b * arm_b * mass.inverse_inertia_b;
+}
+
+/// True when the contact is enabled and at least one of its bodies can move.
+inline bool is_solvable(const Contact& contact, const std::vector<Body>& bodies) {
+  return contact.enabled && (bodies[contact.body_a.index].inverse_mass > 0.0f ||
+                             bodies[contact.body_b.index].inverse_mass > 0.0f);
+}
+
+/// The fixed friction direction of a contact: the normal turned clockwise.
+inline vec2 tangent_of(vec2 normal) { return right_perpendicular(normal); }
+
+}  // namespace contact_detail
+}  // namespace impulse2d
