@@ -32,7 +32,8 @@ WorldSettings read_settings(const JsonCursor& node) {
                    "position_correction", "correction_percent", "slop", "max_correction",
                    "restitution_threshold", "friction_mixing", "restitution_mixing", "integrator",
                    "broad_phase", "sleep_linear_speed", "sleep_angular_speed", "time_to_sleep",
-                   "max_linear_speed"});
+                   "max_linear_speed", "contact_hertz", "contact_damping_ratio",
+                   "contact_push_max_speed"});
   WorldSettings settings;
   if (auto field = node.optional_field("gravity")) settings.gravity = field->vector();
   if (auto field = node.optional_field("time_step")) settings.time_step = field->positive();
@@ -41,7 +42,15 @@ WorldSettings read_settings(const JsonCursor& node) {
   if (auto field = node.optional_field("solver")) {
     settings.solver =
         field->choice<SolverMethod>({{"accumulated", SolverMethod::AccumulatedImpulses},
-                                     {"per_iteration", SolverMethod::PerIteration}});
+                                     {"per_iteration", SolverMethod::PerIteration},
+                                     {"soft_step", SolverMethod::SoftStep}});
+  }
+  if (auto field = node.optional_field("contact_hertz")) settings.contact_hertz = field->positive();
+  if (auto field = node.optional_field("contact_damping_ratio")) {
+    settings.contact_damping_ratio = field->non_negative();
+  }
+  if (auto field = node.optional_field("contact_push_max_speed")) {
+    settings.contact_push_max_speed = field->non_negative();
   }
   if (auto field = node.optional_field("warm_starting")) settings.warm_starting = field->boolean();
   if (auto field = node.optional_field("block_solver")) settings.block_solver = field->boolean();

@@ -340,6 +340,22 @@ TEST(SceneFile, EveryExampleSceneFileLoadsAndRunsItsWholeLength) {
   EXPECT_GE(files, 3);  // projectile, seesaw_events, character
 }
 
+TEST(SceneFile, TheSoftStepSolverAndItsSettingsCanBeChosen) {
+  const Scene scene = parse_scene(
+      R"({"settings": {"solver": "soft_step", "substeps": 4, "contact_hertz": 45,
+                       "contact_damping_ratio": 5, "contact_push_max_speed": 2},
+          "bodies": []})",
+      "soft.json");
+  EXPECT_EQ(scene.settings.solver, SolverMethod::SoftStep);
+  EXPECT_EQ(scene.settings.substeps, 4);
+  EXPECT_FLOAT_EQ(scene.settings.contact_hertz, 45.0f);
+  EXPECT_FLOAT_EQ(scene.settings.contact_damping_ratio, 5.0f);
+  EXPECT_FLOAT_EQ(scene.settings.contact_push_max_speed, 2.0f);
+  EXPECT_NE(load_error(R"({"settings": {"contact_hertz": 0}, "bodies": []})")
+                .find("bad.json: settings.contact_hertz: must be > 0"),
+            std::string::npos);
+}
+
 TEST(SceneFile, AnUnreadableFileIsNamed) {
   try {
     load_scene_file("/nonexistent/scene.json");
