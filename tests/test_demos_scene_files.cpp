@@ -194,7 +194,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "bodies[0].position: expected [x, y]"},
         BadFile{"BadSolver", R"({"settings": {"solver": "magic"}, "bodies": []})",
                 "settings.solver: unknown value \"magic\" (expected one of: accumulated, "
-                "per_iteration)"},
+                "per_iteration, soft_step)"},
         BadFile{"BadTimeStep", R"({"settings": {"time_step": 0}, "bodies": []})",
                 "settings.time_step: must be > 0"},
         BadFile{"UnknownEventBody",
