@@ -118,22 +118,7 @@ void solve_contacts_accumulated(std::vector<Contact>& contacts, std::vector<Body
     Body& b = bodies[contact.body_b.index];
     const PairMass mass = pair_mass(a, b, settings);
     const vec2 normal = contact.normal;
-    const vec2 tangent = tangent_of(normal);
-
-    if (settings.enable_friction) {
-      for (int i = 0; i < contact.point_count; ++i) {
-        ContactPoint& point = contact.points[i];
-        const float tangent_speed = glm::dot(relative_velocity(a, b, point), tangent);
-        const float unclamped = point.tangent_impulse - tangent_speed * point.tangent_mass;
-        const float limit =
-            (point.sliding ? contact.dynamic_friction : contact.static_friction) * point.normal_impulse;
-        const float accumulated = std::clamp(unclamped, -limit, limit);
-        point.friction_at_limit = accumulated != unclamped;
-        const float change = accumulated - point.tangent_impulse;
-        point.tangent_impulse = accumulated;
-        apply_impulse(a, b, mass, point, tangent * change);
-      }
-    }
+    if (settings.enable_friction) solve_friction_points(a, b, mass, contact);
 
     if (settings.block_solver && contact.point_count == 2 &&
         solve_normal_block(a, b, mass, contact)) {

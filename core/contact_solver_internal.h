@@ -8,6 +8,7 @@
 #include "core/integrate.h"
 #include "core/settings.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace impulse2d {
@@ -60,6 +61,25 @@ inline bool is_solvable(const Contact& contact, const std::vector<Body>& bodies)
 
 /// The fixed friction direction of a contact: the normal turned clockwise.
 inline vec2 tangent_of(vec2 normal) { return right_perpendicular(normal); }
+
+// One pass of Coulomb friction over a contact's points with accumulated impulses: the
+// accumulated tangent impulse is clamped to mu_s * Pn while the point sticks and mu_d * Pn once
+// it slides; `friction_at_limit` records whether the clamp acted.
+inline void solve_friction_points(Body& a, Body& b, const PairMass& mass, Contact& contact) {
+  const vec2 tangent = tangent_of(contact.normal);
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    const float tangent_speed = glm::dot(relative_velocity(a, b, point), tangent);
+    const float unclamped = point.tangent_impulse - tangent_speed * point.tangent_mass;
+    const float limit =
+        (point.sliding ? contact.dynamic_friction : contact.static_friction) * point.normal_impulse;
+    const float accumulated = std::clamp(unclamped, -limit, limit);
+    point.friction_at_limit = accumulated != unclamped;
+    const float change = accumulated - point.tangent_impulse;
+    point.tangent_impulse = accumulated;
+    apply_impulse(a, b, mass, point, tangent * change);
+  }
+}
 
 }  // namespace contact_detail
 }  // namespace impulse2d

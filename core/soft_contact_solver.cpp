@@ -63,20 +63,7 @@ void solve_contacts_soft(std::vector<Contact>& contacts, std::vector<Body>& bodi
       apply_impulse(a, b, mass, point, normal * change);
     }
 
-    if (!settings.enable_friction) continue;
-    const vec2 tangent = tangent_of(normal);
-    for (int i = 0; i < contact.point_count; ++i) {
-      ContactPoint& point = contact.points[i];
-      const float tangent_speed = glm::dot(relative_velocity(a, b, point), tangent);
-      const float unclamped = point.tangent_impulse - tangent_speed * point.tangent_mass;
-      const float limit =
-          (point.sliding ? contact.dynamic_friction : contact.static_friction) * point.normal_impulse;
-      const float accumulated = std::clamp(unclamped, -limit, limit);
-      point.friction_at_limit = accumulated != unclamped;
-      const float change = accumulated - point.tangent_impulse;
-      point.tangent_impulse = accumulated;
-      apply_impulse(a, b, mass, point, tangent * change);
-    }
+    if (settings.enable_friction) solve_friction_points(a, b, mass, contact);
   }
 }
 
