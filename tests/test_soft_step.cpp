@@ -1,8 +1,9 @@
 // SolverMethod::SoftStep (Box2D v3's soft step) against the same exact answers as the other
 // solvers. Settings are Box2D v3's: 4 sub-steps of one soft pass and one relax pass each,
 // contact hertz 30, damping ratio 10, push-out at most 3 m/s.
-#include "core/soft_contact_solver.h"
+#include "bounce_apexes.h"
 #include "core/error.h"
+#include "core/soft_contact_solver.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -229,45 +230,6 @@ TEST(SoftStep, SlidesAtTheDynamicFrictionAcceleration) {
   EXPECT_NEAR(measured, expected, 1e-3f * expected);
 }
 
-namespace {
-
-// Drops a ball of restitution e from h0 onto a floor and returns its first `bounces` apexes.
-std::vector<double> soft_apexes(float e, float h0, float dt, int bounces) {
-  WorldSettings settings = soft_settings();
-  settings.time_step = dt;
-  settings.restitution_threshold = 0.0f;
-  settings.enable_friction = false;
-  World world(settings);
-  BodyDef ground;
-  ground.type = BodyType::Static;
-  ground.material = Material{"Floor", 0.0f, e, 0.0f, 0.0f};
-  ground.position = {0.0f, -1.0f};
-  world.create_body(ground, make_box({5.0f, 1.0f}));
-  const float radius = 0.25f;
-  BodyDef ball;
-  ball.material = Material{"Ball", 1.0f, e, 0.0f, 0.0f};
-  ball.position = {0.0f, radius + h0};
-  const BodyId id = world.create_body(ball, make_circle(radius));
-  std::vector<double> apexes;
-  double highest = -1.0;
-  bool rising = false;
-  for (int step = 0; step < 200000 && static_cast<int>(apexes.size()) < bounces; ++step) {
-    world.step();
-    const Body& body = world.body(id);
-    const double height = body.transform.position.y - radius;
-    if (body.linear_velocity.y > 0.0f) {
-      rising = true;
-      highest = std::max(highest, height);
-    } else if (rising) {
-      apexes.push_back(std::max(highest, height));
-      rising = false;
-      highest = -1.0;
-    }
-  }
-  return apexes;
-}
-
-}  // namespace
 
 TEST(SoftStep, BounceStepLeavesExactlyETimesTheApproachSpeed) {
   // Restitution is applied once, at the end of the step that found the contact, to the normal
@@ -298,23 +260,20 @@ TEST(SoftStep, BounceStepLeavesExactlyETimesTheApproachSpeed) {
 class SoftBounce : public ::testing::TestWithParam<float> {};
 
 TEST_P(SoftBounce, ApexHeightsFollowESquaredPowers) {
-  // Error model per bounce i of impact speed v_i = e^(i-1) sqrt(2 g h0), step dt: the contact
-  // is found up to a step late and restitution uses the speed at the step's start (<= g dt
-  // off, <= v_i dt of apex); the ball is up to v_i dt inside the floor when it reflects and is
-  // pushed back out (<= 2 v_i dt); each error is scaled by e^2 per later bounce; apexes are
-  // sampled at step times (<= g dt^2).
+  // The error bound of bounce_apexes.h holds here too: restitution uses the speed at the
+  // step's start (<= g dt off) and soft contacts push the ball back out of the floor.
   const float e = GetParam();
   const double h0 = 2.0, gd = 9.81;
   const float dt = 1.0f / 240.0f;
   const int bounces = 4;
-  const std::vector<double> apexes = soft_apexes(e, static_cast<float>(h0), dt, bounces);
+  WorldSettings settings = soft_settings();
+  settings.time_step = dt;
+  const std::vector<double> apexes = bounce_test::bounce_apexes(settings, e, static_cast<float>(h0), bounces);
   ASSERT_EQ(apexes.size(), static_cast<std::size_t>(bounces));
   for (int k = 1; k <= bounces; ++k) {
-    double tolerance = gd * dt * dt;
-    for (int i = 1; i <= k; ++i) {
-      tolerance += std::pow(e, 2 * (k - i)) * 3 * std::pow(e, i - 1) * std::sqrt(2 * gd * h0) * dt;
-    }
-    EXPECT_NEAR(apexes[static_cast<std::size_t>(k - 1)], std::pow(e, 2 * k) * h0, tolerance) << "bounce " << k;
+    EXPECT_NEAR(apexes[static_cast<std::size_t>(k - 1)], std::pow(e, 2 * k) * h0,
+                bounce_test::bounce_apex_tolerance(e, h0, gd, dt, k))
+        << "bounce " << k;
   }
 }
 
