@@ -217,6 +217,24 @@ void World::set_gravity_scale(BodyId id, float scale) {
   checked_body(id, "World::set_gravity_scale").gravity_scale = scale;
 }
 
+void World::set_material(BodyId id, const Material& material) {
+  validate_material(material, "World::set_material: material");
+  Body& body = checked_body(id, "World::set_material");
+  if (body.type == BodyType::Dynamic) {
+    if (!(material.density > 0.0f)) {
+      throw Error("World::set_material: a dynamic body needs material density > 0 (got " +
+                  std::to_string(material.density) + ")");
+    }
+    const MassData mass = compute_mass(body.shape, material.density);
+    body.mass = mass.mass;
+    body.inverse_mass = 1.0f / mass.mass;
+    body.inertia = mass.inertia;
+    body.inverse_inertia = (!body.fixed_rotation && mass.inertia > 0.0f) ? 1.0f / mass.inertia : 0.0f;
+  }
+  body.material = material;
+  body.awake = true;
+}
+
 void World::apply_force(BodyId id, vec2 force, vec2 world_point) {
   require_finite(force, "World::apply_force", "force");
   require_finite(world_point, "World::apply_force", "world_point");

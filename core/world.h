@@ -70,6 +70,10 @@ class World {
   void set_angular_velocity(BodyId id, float angular_velocity);
   /// Sets the gravity scale of a body.
   void set_gravity_scale(BodyId id, float scale);
+  /// Replaces a body's material (validated; throws `Error` naming the field). A dynamic body's
+  /// mass and inertia follow the new density (which must stay > 0); contacts mix the new
+  /// coefficients from the next step on.
+  void set_material(BodyId id, const Material& material);
   /// Adds a force (N) at a world point (metres) for the next step; it also makes a torque.
   void apply_force(BodyId id, vec2 force, vec2 world_point);
   /// Adds a force (N) at the centre of mass for the next step.

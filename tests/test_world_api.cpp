@@ -130,6 +130,24 @@ TEST(Misuse, DivergedBodyIsReportedAndRestored) {
   EXPECT_TRUE(std::isfinite(world.body(body).linear_velocity.x));
 }
 
+TEST(Materials, SetMaterialChangesMassAndFrictionAndValidates) {
+  World world;
+  BodyDef def;
+  def.material = materials::wood();
+  const BodyId body = world.create_body(def, make_circle(0.5f));
+  const float wood_mass = world.body(body).mass;
+  Material heavy = materials::metal();  // density 1.2 vs wood's 0.3
+  world.set_material(body, heavy);
+  EXPECT_FLOAT_EQ(world.body(body).mass, wood_mass * 4.0f);
+  EXPECT_FLOAT_EQ(world.body(body).inverse_inertia,
+                  1.0f / (0.5f * world.body(body).mass * 0.25f));
+  EXPECT_EQ(world.body(body).material.name, "Metal");
+  heavy.static_friction = 0.1f;  // below dynamic: invalid
+  EXPECT_THROW(world.set_material(body, heavy), Error);
+  EXPECT_THROW(world.set_material(body, materials::static_ground()), Error);  // density 0
+  EXPECT_EQ(world.body(body).material.name, "Metal");  // unchanged by the failed calls
+}
+
 TEST(Forces, AngularImpulseChangesSpinByRCrossJOverI) {
   World world(WorldSettings{});
   BodyDef def;
