@@ -59,21 +59,21 @@ bool solve_normal_block(Body& a, Body& b, Contact& contact) {
   return true;
 }
 
-// One pass over every contact: friction, then the normal impulses.
+// One pass over every contact: the normal impulses, then friction against the limit they
+// set (Box2D v3's order: the Coulomb limit is never a pass out of date).
 void solve_pass(std::vector<Contact>& contacts, std::vector<Body>& bodies,
                 const SolverContext& context) {
   for (Contact& contact : contacts) {
     if (!is_solvable(contact)) continue;
     Body& a = bodies[contact.body_a.index];
     Body& b = bodies[contact.body_b.index];
+    if (!(context.block_solver && contact.point_count == 2 && solve_normal_block(a, b, contact))) {
+      for (int i = 0; i < contact.point_count; ++i) {
+        ContactPoint& point = contact.points[i];
+        push_normal_to(a, b, contact, point, point.velocity_bias);
+      }
+    }
     if (context.friction) solve_friction_points(a, b, contact);
-    if (context.block_solver && contact.point_count == 2 && solve_normal_block(a, b, contact)) {
-      continue;
-    }
-    for (int i = 0; i < contact.point_count; ++i) {
-      ContactPoint& point = contact.points[i];
-      push_normal_to(a, b, contact, point, point.velocity_bias);
-    }
   }
 }
 

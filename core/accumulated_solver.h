@@ -10,8 +10,8 @@
 namespace impulse2d {
 
 /// Per (sub-)step: collide, prepare, integrate velocities, plan targets, warm start,
-/// `velocity_iterations` passes (friction, then the normal impulses: the 2x2 block for
-/// two-point manifolds when `block_solver` is on), switch friction state, integrate
+/// `velocity_iterations` passes (the normal impulses: the 2x2 block for two-point manifolds
+/// when `block_solver` is on; then friction), switch friction state, integrate
 /// positions, bounce, correct positions.
 class AccumulatedSolver final : public StepSolver {
  public:
