@@ -51,7 +51,9 @@ void solve_contacts_soft(std::vector<Contact>& contacts, std::vector<Body>& bodi
       apply_impulse(a, b, contact.mass, point, normal * change);
     }
 
-    if (context.friction) solve_friction_points(a, b, contact);
+    // Friction in the relax pass only (as Box2D v3 does): against the normal impulses without
+    // the soft push-out, so the push-out never raises the Coulomb limit.
+    if (context.friction && !use_bias) solve_friction_points(a, b, contact);
   }
 }
 

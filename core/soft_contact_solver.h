@@ -19,8 +19,8 @@ namespace impulse2d {
 /// `use_bias` is pushed out softly at min(bias_rate |s|, push_max_speed) (twice as stiff
 /// against a static or kinematic body); without `use_bias` (relaxing) the constraint is rigid
 /// and adds no push-out speed, and points still apart are left alone. A point bouncing in this sub-step keeps the rigid target of its
-/// bounce (`contact_bounce.h`). Normal impulses stay >= 0; friction follows, clamped to
-/// mu_s * Pn while the contact sticks and mu_d * Pn once it slides.
+/// bounce (`contact_bounce.h`). Normal impulses stay >= 0. In the relax pass friction follows,
+/// clamped to mu_s * Pn while the contact sticks and mu_d * Pn once it slides.
 void solve_contacts_soft(std::vector<Contact>& contacts, std::vector<Body>& bodies,
                          const SolverContext& context, bool use_bias);
 

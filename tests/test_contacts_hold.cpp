@@ -164,6 +164,17 @@ TEST(PushedBox, ThresholdIsMuSWeightAndThenAccelerationIsDynamic) {
 INSTANTIATE_TEST_SUITE_P(Iterations, StaticFriction,
                          ::testing::Values(WorldSettings{}.velocity_iterations, 4));
 
+TEST(SoftStepStaticFriction, BisectedHoldingSlopeIsMuSWithinOnePercent) {
+  // Box2D v3's configuration: 4 sub-steps of one soft and one relax pass.
+  WorldSettings settings = settings_with_iterations(1);
+  settings.solver = SolverMethod::SoftStep;
+  settings.substeps = 4;
+  const float threshold = bisect_threshold(0.4f, 0.6f, [&](float slope) {
+    return std::fabs(incline_drift(settings, slope)) < hold_drift;
+  });
+  EXPECT_NEAR(threshold, mu_s, 0.01f * mu_s);
+}
+
 TEST(StickSlip, SlidingBoxStopsAfterV0SquaredOverTwoAAndHolds) {
   // tan(theta) = 0.2 < mu_d: a box launched down the slope at v0 decelerates at
   // a = g (mu_d cos - sin), stops after v0^2 / (2 a), then sticks (static friction holds it).
