@@ -12,6 +12,8 @@
 #include "bench/lab/lab_peers.h"
 #include "bench/lab/lab_sweep.h"
 #include "bench/lab/lab_tune.h"
+#include "bench/lab/stability_map.h"
+#include <filesystem>
 #include "demos/scene_registry.h"
 #include "demos/progress.h"
 #include "demos/usage_error.h"
@@ -77,6 +79,64 @@ void draw_charts_if_possible(const std::vector<LabResult>& results, const std::s
   }
   const std::vector<std::string> charts = draw_lab_charts(results, directory);
   out << "wrote " << charts.size() << " charts to " << directory << "/\n";
+}
+
+/// Runs the stability map; writes stability.csv, stability.png and boundary contact sheets.
+void run_stability(bool quick, bool charts, const std::string& directory, std::ostream& out) {
+  const std::vector<Stressor> list = stressors(quick);
+  const std::vector<LabMethod> methods = stability_methods(quick);
+  std::unique_ptr<demos::Progress> bar;
+  const auto progress = [&](int done, int total) {
+    if (!bar) bar = std::make_unique<demos::Progress>("stability map", total, stderr,
+                                                      demos::is_terminal(stderr), "cells");
+    bar->update(done);
+  };
+  const std::vector<StabilityCell> cells = run_stability_map(list, methods, quick ? 0 : 4, progress);
+  if (bar) bar->finish();
+  write_file_atomically(directory + "/stability.csv", stability_csv(cells));
+  out << "wrote the stability map (" << methods.size() << " methods x " << list.size()
+      << " stressors) to " << directory << "/stability.csv\n";
+  for (const StabilityCell& cell : cells) {
+    char line[400];
+    if (!cell.any_pass) {
+      std::snprintf(line, sizeof line, "  %-22s %-16s fails the easiest (%s)\n",
+                    method_label(cell.method).c_str(), cell.stressor.c_str(), cell.fail_reason.c_str());
+    } else if (cell.all_pass) {
+      std::snprintf(line, sizeof line, "  %-22s %-16s passes every value up to %.4g %s\n",
+                    method_label(cell.method).c_str(), cell.stressor.c_str(), cell.last_pass,
+                    cell.unit.c_str());
+    } else {
+      std::snprintf(line, sizeof line, "  %-22s %-16s passes %.4g, fails %.4g %s (%s)\n",
+                    method_label(cell.method).c_str(), cell.stressor.c_str(), cell.last_pass,
+                    cell.first_fail, cell.unit.c_str(), cell.fail_reason.c_str());
+    }
+    out << line;
+  }
+  if (!charts) return;
+  if (gnuplot_available()) {
+    draw_stability_heat_map(cells, list, directory + "/stability.png");
+    out << "wrote " << directory << "/stability.png\n";
+  }
+  // Contact sheets of a few boundaries: the final frame on each side.
+  const std::vector<std::pair<std::string, std::string>> boundaries = {
+      {"acc 8i", "stack_height"}, {"iter 10i linpc", "stack_height"},
+      {"acc 8i noccd", "bullet_speed"}, {"acc 8i", "mass_ratio"},
+      {"soft 4s x1i", "initial_overlap"}};
+  std::filesystem::create_directories(directory + "/stability_sheets");
+  for (const auto& [label, stressor_name] : boundaries) {
+    for (const StabilityCell& cell : cells) {
+      if (method_label(cell.method) != label || cell.stressor != stressor_name) continue;
+      if (!cell.any_pass || cell.all_pass || cell.method.engine != Engine::Impulse2d) continue;
+      for (const Stressor& stressor : list) {
+        if (stressor.name != stressor_name) continue;
+        std::string file = label + "_" + stressor_name;
+        for (char& c : file) c = (c == ' ' || c == '/') ? '_' : c;
+        const std::string path = directory + "/stability_sheets/" + file + ".png";
+        draw_boundary_sheet(stressor, cell, path);
+        out << "wrote " << path << "\n";
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -151,6 +211,7 @@ void run_lab(const LabArguments& arguments, std::ostream& out) {
       << csv_path << "\n";
   summarise(results, out);
   if (arguments.charts && shard_count == 1) draw_charts_if_possible(results, arguments.out + "/charts", out);
+  if (arguments.stability && shard_count == 1) run_stability(arguments.quick, arguments.charts, arguments.out, out);
 }
 
 void merge_lab(const MergeArguments& arguments, std::ostream& out) {

@@ -267,6 +267,43 @@ class RestTracker : public TrackerBase {
   double error_ = 0.0;
 };
 
+class TunnelTracker : public TrackerBase {
+ public:
+  TunnelTracker(const MetricSpec& spec, const std::vector<BodyState>& start)
+      : body_(spec.bodies.at(0)), wall_(start.at(static_cast<std::size_t>(spec.surface)).position) {
+    const vec2 velocity = start.at(static_cast<std::size_t>(body_)).velocity;
+    const double speed = std::hypot(velocity.x, velocity.y);
+    direction_ = speed > 0.0 ? vec2{static_cast<float>(velocity.x / speed),
+                                    static_cast<float>(velocity.y / speed)}
+                             : vec2{1.0f, 0.0f};
+  }
+  void observe_finite(double, const std::vector<BodyState>& states) override {
+    const vec2 at = states[static_cast<std::size_t>(body_)].position;
+    beyond_ = std::max(0.0, static_cast<double>((at.x - wall_.x) * direction_.x +
+                                                (at.y - wall_.y) * direction_.y));
+  }
+  double finite_error() const override { return beyond_; }
+
+ private:
+  int body_;
+  vec2 wall_;
+  vec2 direction_{1.0f, 0.0f};
+  double beyond_ = 0.0;
+};
+
+class PeakSpeedTracker : public TrackerBase {
+ public:
+  void observe_finite(double, const std::vector<BodyState>& states) override {
+    for (const BodyState& state : states) {
+      if (state.dynamic) peak_ = std::max(peak_, static_cast<double>(std::hypot(state.velocity.x, state.velocity.y)));
+    }
+  }
+  double finite_error() const override { return peak_; }
+
+ private:
+  double peak_ = 0.0;
+};
+
 }  // namespace
 
 std::unique_ptr<MetricTracker> make_metric_tracker(const MetricSpec& spec,
@@ -290,6 +327,10 @@ std::unique_ptr<MetricTracker> make_metric_tracker(const MetricSpec& spec,
       return std::make_unique<EnergyTracker>(simulation.gravity(), start);
     case MetricKind::Rest:
       return std::make_unique<RestTracker>(spec, start);
+    case MetricKind::Tunnel:
+      return std::make_unique<TunnelTracker>(spec, start);
+    case MetricKind::PeakSpeed:
+      return std::make_unique<PeakSpeedTracker>();
   }
   return nullptr;
 }
@@ -303,6 +344,8 @@ const char* metric_kind_name(MetricKind kind) {
     case MetricKind::Cradle: return "cradle";
     case MetricKind::Energy: return "energy";
     case MetricKind::Rest: return "rest";
+    case MetricKind::Tunnel: return "tunnel";
+    case MetricKind::PeakSpeed: return "peak_speed";
   }
   return "?";
 }

@@ -36,6 +36,13 @@ enum class MetricKind {
   /// Nothing moves (resting stacks, pyramid): error is the largest distance of any dynamic
   /// body from where it started, m.
   Rest,
+  /// A body flying at a wall (`surface`) must not pass it: error is how far the body's centre
+  /// ends beyond the wall's centre, along the body's initial velocity (0 when it stays on its
+  /// side), m.
+  Tunnel,
+  /// Overlapping bodies are separated without being thrown apart: error is the largest speed
+  /// any dynamic body reaches during the run, m/s.
+  PeakSpeed,
 };
 
 /// A scenario's metric as declared in its file.

@@ -35,7 +35,9 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
                                                      {"collision_1d", MetricKind::Collision1d},
                                                      {"cradle", MetricKind::Cradle},
                                                      {"energy", MetricKind::Energy},
-                                                     {"rest", MetricKind::Rest}});
+                                                     {"rest", MetricKind::Rest},
+                                                     {"tunnel", MetricKind::Tunnel},
+                                                     {"peak_speed", MetricKind::PeakSpeed}});
   if (auto field = node.optional_field("body")) spec.bodies.push_back(body_index(*field, scene_bodies));
   if (auto field = node.optional_field("bodies")) {
     for (std::size_t i = 0; i < field->size(); ++i)
@@ -65,8 +67,13 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
     case MetricKind::Cradle:
       if (spec.bodies.size() < 2) node.fail("metric needs \"bodies\": the row, at least two");
       break;
+    case MetricKind::Tunnel:
+      need(1, "\"body\"");
+      if (spec.surface < 0) node.fail("metric needs \"surface\" (the wall)");
+      break;
     case MetricKind::Energy:
-    case MetricKind::Rest: break;
+    case MetricKind::Rest:
+    case MetricKind::PeakSpeed: break;
   }
   return spec;
 }
@@ -78,7 +85,11 @@ LabScenario load_lab_scenario(const std::string& path) {
   if (!file) throw demos::UsageError(path + ": cannot read the scenario file");
   std::ostringstream text;
   text << file.rdbuf();
-  const nlohmann::json document = demos::parse_json_document(text.str(), path);
+  return parse_lab_scenario(text.str(), path);
+}
+
+LabScenario parse_lab_scenario(const std::string& text, const std::string& path) {
+  const nlohmann::json document = demos::parse_json_document(text, path);
   const demos::JsonCursor root(document, path);
   root.expect_object();
   root.allow_only({"description", "answer", "duration", "metric", "scene"});

@@ -8,8 +8,8 @@
 ///                 "meaning": "largest distance from the exact trajectory"},
 ///      "scene": { ...a scene file, as `impulse2d render` reads... }}
 ///
-/// Metric fields by kind: `body` (free_flight, slope_motion, bounce_apexes), `surface`
-/// (slope_motion), `rolls` (slope_motion), `ground`, `apexes`, `rest_height` (bounce_apexes),
+/// Metric fields by kind: `body` (free_flight, slope_motion, bounce_apexes, tunnel), `surface`
+/// (slope_motion, tunnel: the wall), `rolls` (slope_motion), `ground`, `apexes`, `rest_height` (bounce_apexes),
 /// `bodies` (collision_1d: two; cradle: the row in order; rest: optional, default every dynamic
 /// body). Bodies are named by their `name` in the scene.
 
@@ -35,6 +35,10 @@ struct LabScenario {
 /// Reads and validates a scenario file. Throws `demos::UsageError` "<file>: <json path>:
 /// <reason>" for anything wrong, including a metric naming a body the scene does not have.
 LabScenario load_lab_scenario(const std::string& path);
+
+/// As `load_lab_scenario`, from text already read; `file` names it in messages and gives the
+/// scenario's name (its stem).
+LabScenario parse_lab_scenario(const std::string& text, const std::string& file);
 
 /// Every `*.json` scenario in `directory`, sorted by file name. Throws `demos::UsageError` when
 /// the directory cannot be read or has no scenario.
