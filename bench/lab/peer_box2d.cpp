@@ -47,15 +47,25 @@ class Box2dSimulation : public LabSimulation {
           fixture.shape = &circle;
           break;
         case ShapeType::Box:
-          polygon.SetAsBox(body.shape.box.half_extents.x, body.shape.box.half_extents.y);
+          // Box2D rounds every polygon by b2_polygonRadius: shrink it by that skin so the
+          // rounded outline has the scene's size (else every contact rests 2 skins apart).
+          polygon.SetAsBox(body.shape.box.half_extents.x - b2_polygonRadius,
+                           body.shape.box.half_extents.y - b2_polygonRadius);
           fixture.shape = &polygon;
           break;
         case ShapeType::Polygon: {
           b2Vec2 vertices[b2_maxPolygonVertices];
-          const int count = std::min(body.shape.polygon.count, int{b2_maxPolygonVertices});
+          const Polygon& source = body.shape.polygon;
+          const int count = std::min(source.count, int{b2_maxPolygonVertices});
           for (int i = 0; i < count; ++i) {
-            vertices[i].Set(body.shape.polygon.vertices[static_cast<std::size_t>(i)].x,
-                            body.shape.polygon.vertices[static_cast<std::size_t>(i)].y);
+            // Each edge moved inward by the skin: the vertex moves along the sum of its two edge
+            // normals, scaled so both edges move by exactly b2_polygonRadius.
+            const vec2 before = source.normals[static_cast<std::size_t>((i + count - 1) % count)];
+            const vec2 after = source.normals[static_cast<std::size_t>(i)];
+            const float scale = b2_polygonRadius / (1.0f + before.x * after.x + before.y * after.y);
+            const vec2 vertex = source.vertices[static_cast<std::size_t>(i)];
+            vertices[i].Set(vertex.x - scale * (before.x + after.x),
+                            vertex.y - scale * (before.y + after.y));
           }
           polygon.Set(vertices, count);
           fixture.shape = &polygon;

@@ -187,7 +187,7 @@ std::vector<Stressor> stressors(bool quick) {
   Stressor angle;
   angle.name = "friction_angle";
   angle.question = "a box (mu_s 0.5, mu_d 0.3) built 1 mm into a ramp holds at atan(mu_s) - d "
-                   "and slides as predicted at atan(mu_s) + d (within 2 cm over 2 s)";
+                   "(within 1 cm over 2 s) and slides as predicted at atan(mu_s) + d (within 15 cm)";
   angle.unit = "degrees";
   angle.ladder = {8, 4, 2, 1, 0.5, 0.25, 0.1};
   angle.scenarios = [](double value) {
@@ -206,10 +206,14 @@ std::vector<Stressor> stressors(bool quick) {
            {{"name", "block"}, {"shape", {{"type", "oriented_box"}, {"half_extents", {0.25, 0.25}}}},
             {"position", {local_x * c - local_y * s, local_x * s + local_y * c}},
             {"angle", theta}, {"material", grip}}});
+      // Holding: within 1 cm. Sliding: semi-implicit Euler at 1/60 s already errs by a T dt / 2
+      // (5 cm here) and a contact found one step late by a T dt more; 15 cm allows both and is
+      // still far below the metres a held (or wrongly sliding) box is off by.
+      const double threshold = degrees < critical ? 0.01 : 0.15;
       pair.push_back(scenario(
           "friction_angle", 2.0,
           {{"kind", "slope_motion"}, {"body", "block"}, {"surface", "ramp"}, {"unit", "m"},
-           {"threshold", 0.02}, {"meaning", "distance along the ramp from the exact position"}},
+           {"threshold", threshold}, {"meaning", "distance along the ramp from the exact position"}},
           {{"model", {{"shapes", {"polygon"}}, {"rotation", true}, {"friction", true},
                       {"restitution", false}}},
            {"bodies", bodies}}));
