@@ -12,3 +12,8 @@ impulse2d_add_test(test_lab_cli
   LIBS impulse2d_lab)
 target_compile_definitions(test_lab_cli PRIVATE IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>")
 add_dependencies(test_lab_cli impulse2d)
+# The whole lab in its --quick form (every scenario, a smaller method space, 2 repeats, the
+# short stability map, charts): under a minute on two cores.
+add_test(NAME lab_quick
+         COMMAND impulse2d lab --quick --out ${CMAKE_BINARY_DIR}/lab_quick)
+set_tests_properties(lab_quick PROPERTIES TIMEOUT 300)
