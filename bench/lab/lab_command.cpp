@@ -278,13 +278,19 @@ void run_tune(const TuneArguments& arguments, std::ostream& out) {
         << " m of the reference: keep the scene's method or loosen --max-error\n";
     return;
   }
+  const double versus_own =
+      result.scene_default.us_per_simulated_second / result.chosen.us_per_simulated_second;
+  const double versus_reference =
+      result.reference.us_per_simulated_second / result.chosen.us_per_simulated_second;
   std::snprintf(line, sizeof line,
-                "cheapest within the bound: %s: error %.4g m, %.0f us/s: %.2fx cheaper than the "
-                "scene's own method, %.2fx cheaper than the reference\n",
+                "cheapest within the bound: %s: error %.4g m, %.0f us/s: %.2fx %s than the "
+                "scene's own method (which is %s the bound), %.2fx cheaper than the reference\n",
                 method_label(result.chosen.method).c_str(), result.chosen.error,
                 result.chosen.us_per_simulated_second,
-                result.scene_default.us_per_simulated_second / result.chosen.us_per_simulated_second,
-                result.reference.us_per_simulated_second / result.chosen.us_per_simulated_second);
+                versus_own >= 1.0 ? versus_own : 1.0 / versus_own,
+                versus_own >= 1.0 ? "cheaper" : "dearer",
+                result.scene_default.error <= options.max_error ? "within" : "outside",
+                versus_reference);
   out << line << "{\n" << tuned_settings_json(result.chosen.method, scene.model) << "\n}\n";
 }
 

@@ -163,7 +163,7 @@ void draw_stability_heat_map(const std::vector<StabilityCell>& cells,
   std::ostringstream gp;
   gp << "set terminal pngcairo size " << width << "," << height << " font 'DejaVu Sans,9' noenhanced\n"
      << "set output OUTPUT\n"
-     << "set lmargin at screen " << 200.0 / width << "\nset rmargin at screen " << 1.0 - 90.0 / width
+     << "set lmargin at screen " << 200.0 / width << "\nset rmargin at screen " << 1.0 - 120.0 / width
      << "\nset bmargin at screen " << 20.0 / height << "\nset tmargin at screen "
      << 1.0 - 130.0 / height << "\n"
      << "set title \"Stability map: how far each method gets along each stressor before it "
@@ -174,8 +174,8 @@ void draw_stability_heat_map(const std::vector<StabilityCell>& cells,
      << ":-0.5]\n"
      << "set x2tics (";
   for (std::size_t i = 0; i < stressors.size(); ++i) {
-    gp << (i ? ", " : "") << "\"" << gnuplot_text(stressors[i].name + "\\n(" + stressors[i].unit + ")")
-       << "\" " << i;
+    gp << (i ? ", " : "") << "\"" << gnuplot_text(stressors[i].name) << "\\n("
+       << gnuplot_text(stressors[i].unit) << ")\" " << i;
   }
   gp << ")\nunset xtics\nset x2tics scale 0\nset ytics (";
   for (std::size_t i = 0; i < rows.size(); ++i) gp << (i ? ", " : "") << "\"" << gnuplot_text(rows[i]) << "\" " << i;
