@@ -151,6 +151,8 @@ int run_cli(int argc, char** argv) {
   tune_command->add_flag("--quick", tune_arguments.quick, "a smaller search space");
   tune_command->add_option("--repeats", tune_arguments.repeats, "timed repeats per candidate")
       ->capture_default_str();
+  tune_command->add_option("--out,-d", tune_arguments.out,
+                           "also write the answer and its figures to this .json file");
 
   try {
     app.parse(argc, argv);

@@ -243,6 +243,8 @@ void run_tune(const TuneArguments& arguments, std::ostream& out) {
   for (const std::string& assignment : arguments.params) params.set_assignment(assignment);
   if (!(arguments.max_error > 0.0)) throw demos::UsageError("--max-error must be > 0 (metres)");
   if (arguments.repeats < 1 || arguments.repeats > 100) throw demos::UsageError("--repeats must be 1..100");
+  if (!arguments.out.empty() && std::filesystem::path(arguments.out).extension() != ".json")
+    throw demos::UsageError("--out " + arguments.out + ": must end in .json");
   TuneOptions options;
   options.max_error = arguments.max_error;
   if (arguments.metric == "final") {
@@ -292,6 +294,24 @@ void run_tune(const TuneArguments& arguments, std::ostream& out) {
                 result.scene_default.error <= options.max_error ? "within" : "outside",
                 versus_reference);
   out << line << "{\n" << tuned_settings_json(result.chosen.method, scene.model) << "\n}\n";
+  if (!arguments.out.empty()) {
+    char figures[600];
+    std::snprintf(figures, sizeof figures,
+                  "{\n\"scene\": \"%s\", \"max_error\": %.6g, \"metric\": \"%s\", "
+                  "\"duration\": %.6g,\n\"method\": \"%s\", \"error\": %.6g, "
+                  "\"us_per_simulated_second\": %.6g,\n\"scene_own_method\": \"%s\", "
+                  "\"scene_own_error\": %.6g, \"scene_own_us_per_simulated_second\": %.6g,\n"
+                  "\"reference_method\": \"%s\", \"reference_us_per_simulated_second\": %.6g,\n",
+                  scene.name.c_str(), options.max_error, arguments.metric.c_str(), options.duration,
+                  method_label(result.chosen.method).c_str(), result.chosen.error,
+                  result.chosen.us_per_simulated_second,
+                  method_label(result.scene_default.method).c_str(), result.scene_default.error,
+                  result.scene_default.us_per_simulated_second,
+                  method_label(result.reference.method).c_str(),
+                  result.reference.us_per_simulated_second);
+    write_file_atomically(arguments.out, figures + tuned_settings_json(result.chosen.method, scene.model) + "\n}\n");
+    out << "wrote " << arguments.out << "\n";
+  }
 }
 
 }  // namespace impulse2d::lab

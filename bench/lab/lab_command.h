@@ -40,6 +40,7 @@ struct TuneArguments {
   std::optional<double> duration;   ///< seconds simulated (default: the scene's run)
   bool quick = false;               ///< a smaller search space
   int repeats = 3;                  ///< timed repeats per candidate
+  std::string out;                  ///< also write the answer as a JSON file here ("" = no)
 };
 
 /// Runs the sweep (and the stability map), writes CSVs and charts; prints where they went.

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "bench/lab/engine_simulation.h"
@@ -12,9 +13,11 @@
 namespace impulse2d::lab {
 namespace {
 
-/// Positions of every body at each sample time.
+/// Positions of every living body at each sample time, by world slot (bodies spawned or removed
+/// by a scene's script or events are compared slot by slot; a slot empty in either run is
+/// skipped).
 struct Trajectory {
-  std::vector<std::vector<vec2>> samples;
+  std::vector<std::vector<std::optional<vec2>>> samples;
   bool diverged = false;
 };
 
@@ -31,12 +34,14 @@ Trajectory record(const demos::Scene& scene, const demos::Params& params, const 
   const long steps_per_sample = std::lround(interval / method.time_step);
   const long sample_count = std::max(1L, static_cast<long>(std::floor(duration / interval + 1e-9)));
   Trajectory trajectory;
-  std::vector<BodyState> states;
   for (long sample = 0; sample < sample_count; ++sample) {
     for (long step = 0; step < steps_per_sample; ++step) simulation.step();
-    simulation.read_states(states);
-    std::vector<vec2> positions;
-    for (const BodyState& state : states) positions.push_back(state.position);
+    const World& world = simulation.world();
+    std::vector<std::optional<vec2>> positions;
+    for (const BodyId id : world.body_ids()) {
+      if (positions.size() <= id.index) positions.resize(id.index + 1);
+      positions[id.index] = world.body(id).transform.position;
+    }
     trajectory.samples.push_back(positions);
   }
   trajectory.diverged = simulation.diverged();
@@ -48,10 +53,11 @@ double compare(const Trajectory& run, const Trajectory& reference, TuneMetric me
   double worst = 0.0;
   const std::size_t first = metric == TuneMetric::Final ? run.samples.size() - 1 : 0;
   for (std::size_t sample = first; sample < run.samples.size(); ++sample) {
-    const std::vector<vec2>& a = run.samples[sample];
-    const std::vector<vec2>& b = reference.samples[sample];
-    for (std::size_t body = 0; body < std::min(a.size(), b.size()); ++body) {
-      const double distance = std::hypot(a[body].x - b[body].x, a[body].y - b[body].y);
+    const std::vector<std::optional<vec2>>& a = run.samples[sample];
+    const std::vector<std::optional<vec2>>& b = reference.samples[sample];
+    for (std::size_t slot = 0; slot < std::min(a.size(), b.size()); ++slot) {
+      if (!a[slot] || !b[slot]) continue;
+      const double distance = std::hypot(a[slot]->x - b[slot]->x, a[slot]->y - b[slot]->y);
       if (!std::isfinite(distance)) return std::numeric_limits<double>::infinity();
       worst = std::max(worst, distance);
     }
