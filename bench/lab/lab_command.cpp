@@ -278,6 +278,18 @@ void run_tune(const TuneArguments& arguments, std::ostream& out) {
   if (!result.found) {
     out << "no candidate stays within " << options.max_error
         << " m of the reference: keep the scene's method or loosen --max-error\n";
+    if (!arguments.out.empty()) {
+      char record[600];
+      std::snprintf(record, sizeof record,
+                    "{\n\"scene\": \"%s\", \"max_error\": %.6g, \"metric\": \"%s\", "
+                    "\"duration\": %.6g, \"found\": false,\n\"scene_own_method\": \"%s\", "
+                    "\"scene_own_error\": %.6g, \"candidates\": %zu\n}\n",
+                    scene.name.c_str(), options.max_error, arguments.metric.c_str(),
+                    options.duration, method_label(result.scene_default.method).c_str(),
+                    result.scene_default.error, result.candidates.size());
+      write_file_atomically(arguments.out, record);
+      out << "wrote " << arguments.out << "\n";
+    }
     return;
   }
   const double versus_own =
@@ -298,7 +310,7 @@ void run_tune(const TuneArguments& arguments, std::ostream& out) {
     char figures[600];
     std::snprintf(figures, sizeof figures,
                   "{\n\"scene\": \"%s\", \"max_error\": %.6g, \"metric\": \"%s\", "
-                  "\"duration\": %.6g,\n\"method\": \"%s\", \"error\": %.6g, "
+                  "\"duration\": %.6g, \"found\": true,\n\"method\": \"%s\", \"error\": %.6g, "
                   "\"us_per_simulated_second\": %.6g,\n\"scene_own_method\": \"%s\", "
                   "\"scene_own_error\": %.6g, \"scene_own_us_per_simulated_second\": %.6g,\n"
                   "\"reference_method\": \"%s\", \"reference_us_per_simulated_second\": %.6g,\n",
