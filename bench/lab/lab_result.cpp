@@ -94,7 +94,13 @@ void mark_fronts(std::vector<LabResult>& results) {
         row->pareto = true;
         best_error = row->error;
       }
-      if (!recommended && row->pass && row->method.engine == Engine::Impulse2d) recommended = row;
+      // Mixing rules change the physics (and with it the exact answer), so a method that
+      // passes by mixing differently is not a cheaper way to the same answer.
+      const LabMethod defaults;
+      const bool same_model = row->method.friction_mixing == defaults.friction_mixing &&
+                              row->method.restitution_mixing == defaults.restitution_mixing;
+      if (!recommended && row->pass && same_model && row->method.engine == Engine::Impulse2d)
+        recommended = row;
     }
     if (recommended) recommended->recommended = true;
   }

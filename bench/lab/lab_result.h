@@ -28,7 +28,8 @@ struct LabResult {
   bool pass = false;          ///< error <= threshold, finite, deterministic
   std::string failure;        ///< why it failed ("" when it passed)
   bool pareto = false;        ///< on the scenario's Pareto front (no other point cheaper and better)
-  bool recommended = false;   ///< the cheapest impulse2d method that passes on this scenario
+  /// The cheapest impulse2d method that passes on this scenario with the default mixing rules.
+  bool recommended = false;
 };
 
 /// Marks `pareto` and `recommended` per scenario over `results` (cost:
