@@ -335,19 +335,4 @@ std::unique_ptr<MetricTracker> make_metric_tracker(const MetricSpec& spec,
   return nullptr;
 }
 
-const char* metric_kind_name(MetricKind kind) {
-  switch (kind) {
-    case MetricKind::FreeFlight: return "free_flight";
-    case MetricKind::SlopeMotion: return "slope_motion";
-    case MetricKind::BounceApexes: return "bounce_apexes";
-    case MetricKind::Collision1d: return "collision_1d";
-    case MetricKind::Cradle: return "cradle";
-    case MetricKind::Energy: return "energy";
-    case MetricKind::Rest: return "rest";
-    case MetricKind::Tunnel: return "tunnel";
-    case MetricKind::PeakSpeed: return "peak_speed";
-  }
-  return "?";
-}
-
 }  // namespace impulse2d::lab

@@ -74,7 +74,4 @@ class MetricTracker {
 std::unique_ptr<MetricTracker> make_metric_tracker(const MetricSpec& spec,
                                                    const LabSimulation& simulation);
 
-/// "free_flight", "slope_motion", ... as written in scenario files.
-const char* metric_kind_name(MetricKind kind);
-
 }  // namespace impulse2d::lab
