@@ -102,7 +102,7 @@ void run_stability(bool quick, bool charts, const std::string& directory, std::o
       std::snprintf(line, sizeof line, "  %-22s %-16s fails the easiest (%s)\n",
                     method_label(cell.method).c_str(), cell.stressor.c_str(), cell.fail_reason.c_str());
     } else if (cell.all_pass) {
-      std::snprintf(line, sizeof line, "  %-22s %-16s passes every value up to %.4g %s\n",
+      std::snprintf(line, sizeof line, "  %-22s %-16s passes every value, to %.4g %s\n",
                     method_label(cell.method).c_str(), cell.stressor.c_str(), cell.last_pass,
                     cell.unit.c_str());
     } else {

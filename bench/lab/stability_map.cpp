@@ -167,7 +167,7 @@ void draw_stability_heat_map(const std::vector<StabilityCell>& cells,
      << "\nset bmargin at screen " << 20.0 / height << "\nset tmargin at screen "
      << 1.0 - 130.0 / height << "\n"
      << "set title \"Stability map: how far each method gets along each stressor before it "
-        "fails (value = hardest passed; 'x' = fails the easiest; '>= v' = passes all)\" offset 0,4\n"
+        "fails (value = hardest passed; 'x' = fails the easiest; '>= v' or '<= v' = passes all)\" offset 0,4\n"
      << "set palette defined (0 '#D55E00', 0.5 '#F0E442', 1 '#009E73')\nset cbrange [0:1]\n"
      << "set cblabel 'share of the ladder passed'\n"
      << "set xrange [-0.5:" << stressors.size() - 0.5 << "]\nset yrange [" << rows.size() - 0.5
@@ -187,8 +187,10 @@ void draw_stability_heat_map(const std::vector<StabilityCell>& cells,
     std::size_t column = 0;
     while (column < stressors.size() && stressors[column].name != cell.stressor) ++column;
     gp << column << " " << row << " " << cell.level << "\n";
+    // Ladders run from easy to hard; a descending one (the friction angle) is passed "down to".
+    const bool descending = stressors[column].ladder.front() > stressors[column].ladder.back();
     const std::string text = !cell.any_pass ? "x"
-                             : cell.all_pass ? ">= " + value_text(cell.last_pass)
+                             : cell.all_pass ? (descending ? "<= " : ">= ") + value_text(cell.last_pass)
                                              : value_text(cell.last_pass);
     labels.push_back("set label \"" + gnuplot_text(text) + "\" at " + std::to_string(column) + "," +
                      std::to_string(row) + " center front font ',10'");
