@@ -124,6 +124,8 @@ int run_cli(int argc, char** argv) {
   lab_command->add_flag("!--no-peers", lab_arguments.peers, "skip Box2D and Chipmunk");
   lab_command->add_flag("!--no-charts", lab_arguments.charts, "write the CSVs only");
   lab_command->add_flag("!--no-stability", lab_arguments.stability, "skip the stability map");
+  lab_command->add_flag("!--no-sweep", lab_arguments.sweep,
+                        "skip the method sweep: run the stability map only");
   lab::MergeArguments merge_arguments;
   CLI::App* merge_command = lab_command->add_subcommand(
       "merge", "join shard CSVs of `lab --shard K/N` into one lab.csv and draw the charts");

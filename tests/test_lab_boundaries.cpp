@@ -104,7 +104,8 @@ LabMethod no_warm_start() {
 
 /// A measured boundary: `method` passes `stressor` at `holds` and fails at `breaks`. The values
 /// sit a margin outside the thresholds measured by `impulse2d lab` (in the comments); when a
-/// solver change moves a boundary on purpose, re-measure and update this table.
+/// solver change moves a boundary on purpose, re-measure (`impulse2d lab --no-sweep`, 10 s) and
+/// update this table.
 struct Boundary {
   const char* name;
   LabMethod (*method)();

@@ -179,6 +179,11 @@ void run_lab(const LabArguments& arguments, std::ostream& out) {
     if (arguments.peers && !note.empty()) std::fprintf(stderr, "impulse2d lab: %s\n", note.c_str());
   }
 
+  if (!arguments.sweep) {
+    if (!arguments.stability) throw demos::UsageError("--no-sweep with --no-stability leaves nothing to run");
+    run_stability(arguments.quick, arguments.charts, arguments.out, out);
+    return;
+  }
   SweepOptions options;
   options.quick = arguments.quick;
   options.repeats = arguments.repeats > 0 ? arguments.repeats : (arguments.quick ? 2 : 3);

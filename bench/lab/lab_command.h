@@ -22,6 +22,7 @@ struct LabArguments {
   bool peers = true;                    ///< run Box2D and Chipmunk when compiled in
   bool charts = true;                   ///< draw the PNG charts (needs gnuplot)
   bool stability = true;                ///< also run the stability map
+  bool sweep = true;                    ///< run the method sweep (off: the stability map only)
 };
 
 /// `impulse2d lab merge`.
