@@ -102,10 +102,15 @@ std::string method_label(const LabMethod& method) {
   return text.str();
 }
 
+const std::vector<SolverMethod>& solver_methods() {
+  static const std::vector<SolverMethod> solvers{
+      SolverMethod::PerIteration, SolverMethod::AccumulatedImpulses, SolverMethod::SoftStep};
+  return solvers;
+}
+
 std::vector<LabMethod> method_space(bool quick) {
   std::vector<LabMethod> methods;
-  const std::vector<SolverMethod> solvers{SolverMethod::PerIteration,
-                                          SolverMethod::AccumulatedImpulses, SolverMethod::SoftStep};
+  const std::vector<SolverMethod>& solvers = solver_methods();
   const std::vector<int> iterations =
       quick ? std::vector<int>{1, 4, 16} : std::vector<int>{1, 2, 4, 8, 16, 32};
   const std::vector<int> substeps = quick ? std::vector<int>{4} : std::vector<int>{2, 4, 8};

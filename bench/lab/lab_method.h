@@ -58,6 +58,10 @@ demos::Scene apply_method(const LabMethod& method, const demos::Scene& scene);
 /// The method the scene itself declares (its settings with its model applied).
 LabMethod scene_method(const demos::Scene& scene);
 
+/// Every solver method of `core/settings.h`, in sweep order (a new solver is added here, in
+/// `solver_name` and in `method_label`).
+const std::vector<SolverMethod>& solver_methods();
+
 /// Names as in scene files: "accumulated", "nonlinear_gauss_seidel", "geometric_mean", ...
 const char* engine_name(Engine engine);
 const char* solver_name(SolverMethod solver);                        ///< see engine_name

@@ -62,10 +62,10 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return fields;
 }
 
-template <typename T, typename Namer>
-T parse_name(const std::string& text, std::initializer_list<T> values, Namer name,
-             const std::string& where) {
-  for (const T value : values) {
+template <typename Values, typename Namer>
+typename Values::value_type parse_name(const std::string& text, const Values& values, Namer name,
+                                       const std::string& where) {
+  for (const typename Values::value_type value : values) {
     if (text == name(value)) return value;
   }
   throw demos::UsageError(where + ": unknown value \"" + text + "\"");
@@ -175,27 +175,26 @@ std::vector<LabResult> parse_csv(const std::string& text, const std::string& fil
     LabMethod& m = r.method;
     r.job = integer(0);
     r.scenario = f[1];
-    m.engine = parse_name(f[2], {Engine::Impulse2d, Engine::Box2d, Engine::Chipmunk}, engine_name,
-                          field_where(2));
-    m.solver = parse_name(f[4], {SolverMethod::PerIteration, SolverMethod::AccumulatedImpulses,
-                                 SolverMethod::SoftStep}, solver_name, field_where(4));
+    m.engine = parse_name(f[2], std::vector<Engine>{Engine::Impulse2d, Engine::Box2d, Engine::Chipmunk},
+                          engine_name, field_where(2));
+    m.solver = parse_name(f[4], solver_methods(), solver_name, field_where(4));
     m.velocity_iterations = static_cast<int>(integer(5));
     m.position_iterations = static_cast<int>(integer(6));
     m.substeps = static_cast<int>(integer(7));
-    m.position_correction = parse_name(f[8], {PositionCorrection::None,
+    m.position_correction = parse_name(f[8], std::vector<PositionCorrection>{PositionCorrection::None,
                                               PositionCorrection::LinearProjection,
                                               PositionCorrection::NonlinearGaussSeidel},
                                        correction_name, field_where(8));
-    m.integrator = parse_name(f[9], {Integrator::ExplicitEuler, Integrator::SemiImplicitEuler},
+    m.integrator = parse_name(f[9], std::vector<Integrator>{Integrator::ExplicitEuler, Integrator::SemiImplicitEuler},
                               integrator_name, field_where(9));
     m.time_step = static_cast<float>(real(10));
     m.continuous = integer(11) != 0;
-    m.friction_mixing = parse_name(f[12], {FrictionMixing::RootSumSquares,
+    m.friction_mixing = parse_name(f[12], std::vector<FrictionMixing>{FrictionMixing::RootSumSquares,
                                            FrictionMixing::GeometricMean, FrictionMixing::Product,
                                            FrictionMixing::Average, FrictionMixing::Minimum,
                                            FrictionMixing::Maximum},
                                    friction_mixing_name, field_where(12));
-    m.restitution_mixing = parse_name(f[13], {RestitutionMixing::Minimum,
+    m.restitution_mixing = parse_name(f[13], std::vector<RestitutionMixing>{RestitutionMixing::Minimum,
                                               RestitutionMixing::Maximum,
                                               RestitutionMixing::Average},
                                       restitution_mixing_name, field_where(13));
