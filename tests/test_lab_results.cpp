@@ -35,6 +35,7 @@ TEST(LabResults, CsvRoundTripKeepsEveryField) {
   result.method.time_step = 1.0f / 120.0f;
   result.method.friction_mixing = FrictionMixing::Product;
   result.method.continuous = false;
+  result.method.speculative_margin = 0.05f;
   result.failure = "error 0.0123 m > 0.01 m, \"quoted\"";
   result.steps = 600;
   result.bodies = 21;
@@ -52,7 +53,7 @@ TEST(LabResults, CsvErrorsNameFileLineAndField) {
     parse_csv(csv_header() + "\n1,s,impulse2d\n", "x.csv");
     FAIL();
   } catch (const demos::UsageError& error) {
-    EXPECT_EQ(std::string(error.what()), "x.csv:2: expected 30 fields, got 3");
+    EXPECT_EQ(std::string(error.what()), "x.csv:2: expected 31 fields, got 3");
   }
   try {
     parse_csv("a,b\n", "y.csv");

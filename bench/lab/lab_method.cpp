@@ -94,6 +94,10 @@ std::string method_label(const LabMethod& method) {
       if (!method.block_solver) text << " noblock";
     }
     if (!method.continuous) text << " noccd";
+    if (method.speculative_margin != base.speculative_margin) {
+      if (method.speculative_margin == 0.0f) text << " nospec";
+      else text << " spec" << method.speculative_margin;
+    }
     if (method.friction_mixing != base.friction_mixing)
       text << " f:" << friction_mixing_name(method.friction_mixing);
     if (method.restitution_mixing != base.restitution_mixing)
@@ -132,7 +136,8 @@ std::vector<LabMethod> method_space(bool quick) {
       }
     }
   }
-  // One setting at a time from the default (accumulated, 8 iterations, NGS, semi-implicit).
+  // One setting at a time from the default (WorldSettings': accumulated, 16 iterations, NGS,
+  // semi-implicit Euler, speculative margin 2 cm).
   const auto vary = [&](auto change) {
     LabMethod method;
     change(method);
@@ -145,6 +150,8 @@ std::vector<LabMethod> method_space(bool quick) {
                                          : std::vector<float>{1.0f / 30.0f, 1.0f / 120.0f, 1.0f / 240.0f};
   for (const float step : steps) vary([step](LabMethod& m) { m.time_step = step; });
   vary([](LabMethod& m) { m.continuous = false; });
+  vary([](LabMethod& m) { m.speculative_margin = 0.0f; });
+  if (!quick) vary([](LabMethod& m) { m.speculative_margin = 0.1f; });
   vary([](LabMethod& m) { m.warm_starting = false; });
   if (!quick) {
     vary([](LabMethod& m) { m.block_solver = false; });
@@ -185,6 +192,7 @@ demos::Scene apply_method(const LabMethod& method, const demos::Scene& scene) {
   settings.restitution_mixing = method.restitution_mixing;
   settings.warm_starting = method.warm_starting;
   settings.block_solver = method.block_solver;
+  settings.speculative_margin = method.speculative_margin;
   result.model.velocity_iterations = method.velocity_iterations;
   result.model.position_iterations = method.position_iterations;
   result.model.ccd = method.continuous;
@@ -203,6 +211,7 @@ LabMethod scene_method(const demos::Scene& scene) {
   method.restitution_mixing = settings.restitution_mixing;
   method.warm_starting = settings.warm_starting;
   method.block_solver = settings.block_solver;
+  method.speculative_margin = settings.speculative_margin;
   method.velocity_iterations = scene.model.velocity_iterations;
   method.position_iterations = scene.model.position_iterations;
   method.continuous = scene.model.ccd;

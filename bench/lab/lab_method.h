@@ -19,31 +19,35 @@ enum class Engine {
   Chipmunk,   ///< Chipmunk 7.0.3 (Debian's libchipmunk-dev, a debug build): iterations
 };
 
-/// One configuration of the sweep.
+/// One configuration of the sweep. The defaults are `WorldSettings`' own, so the lab's
+/// "default" follows core/settings.h.
 struct LabMethod {
   Engine engine = Engine::Impulse2d;  ///< which engine runs it
-  SolverMethod solver = SolverMethod::AccumulatedImpulses;  ///< impulse scheme
-  int velocity_iterations = 8;        ///< passes per (sub)step
-  int position_iterations = 3;        ///< NGS passes (Box2D: its position iterations)
-  int substeps = 1;                   ///< sub-steps per step
-  PositionCorrection position_correction = PositionCorrection::NonlinearGaussSeidel;  ///< method
-  Integrator integrator = Integrator::SemiImplicitEuler;  ///< motion integration
-  float time_step = 1.0f / 60.0f;     ///< seconds per step
-  bool continuous = true;             ///< CCD for bodies marked bullet
-  FrictionMixing friction_mixing = FrictionMixing::GeometricMean;      ///< friction rule
-  RestitutionMixing restitution_mixing = RestitutionMixing::Maximum;   ///< restitution rule
-  bool warm_starting = true;          ///< accumulated impulses carried over
-  bool block_solver = true;           ///< 2-point block solver
+  SolverMethod solver = WorldSettings{}.solver;  ///< impulse scheme
+  int velocity_iterations = WorldSettings{}.velocity_iterations;  ///< passes per (sub)step
+  int position_iterations = WorldSettings{}.position_iterations;  ///< NGS (Box2D: position) passes
+  int substeps = WorldSettings{}.substeps;  ///< sub-steps per step
+  PositionCorrection position_correction = WorldSettings{}.position_correction;  ///< method
+  Integrator integrator = WorldSettings{}.integrator;  ///< motion integration
+  float time_step = WorldSettings{}.time_step;  ///< seconds per step
+  bool continuous = WorldSettings{}.enable_continuous;  ///< CCD for bodies marked bullet
+  /// Speculative contact margin, metres (0: contacts only between overlapping shapes).
+  float speculative_margin = WorldSettings{}.speculative_margin;
+  FrictionMixing friction_mixing = WorldSettings{}.friction_mixing;  ///< friction rule
+  RestitutionMixing restitution_mixing = WorldSettings{}.restitution_mixing;  ///< restitution rule
+  bool warm_starting = WorldSettings{}.warm_starting;  ///< accumulated impulses carried over
+  bool block_solver = WorldSettings{}.block_solver;  ///< 2-point block solver
 };
 
-/// A short label naming the method by what differs from the default, e.g. "acc 8i",
-/// "soft 4s x1i", "acc 8i dt1/120", "box2d 8/3".
+/// A short label naming the method by what differs from the default, e.g. "acc 16i",
+/// "soft 4s x1i", "acc 16i dt1/120", "acc 16i nospec", "box2d 8/3".
 std::string method_label(const LabMethod& method);
 
 /// The configurations swept by `impulse2d lab`: every solver at 1, 2, 4, 8, 16, 32 velocity
 /// iterations, 2, 4, 8 substeps at 1, 2, 4 iterations, and, one at a time from the default,
-/// each position correction, integrator, time step 1/30..1/240, CCD off, every friction and
-/// restitution mixing rule, warm starting and the block solver off. `quick` keeps a subset
+/// each position correction, integrator, time step 1/30..1/240, CCD off, speculative contacts
+/// off and at a wider margin, every friction and restitution mixing rule, warm starting and the
+/// block solver off. `quick` keeps a subset
 /// (for CI). In a fixed order.
 std::vector<LabMethod> method_space(bool quick);
 

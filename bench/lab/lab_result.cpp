@@ -18,7 +18,7 @@ namespace {
 const char* const header_fields[] = {
     "job", "scenario", "engine", "method", "solver", "velocity_iterations",
     "position_iterations", "substeps", "position_correction", "integrator", "time_step",
-    "continuous", "friction_mixing", "restitution_mixing", "warm_starting", "block_solver",
+    "continuous", "speculative_margin", "friction_mixing", "restitution_mixing", "warm_starting", "block_solver",
     "steps", "bodies", "repeats", "ns_per_step", "ns_per_step_body", "us_per_simulated_second",
     "instructions_per_step", "error", "unit", "threshold", "pass", "pareto", "recommended",
     "failure_reason"};
@@ -120,6 +120,7 @@ std::string csv_line(const LabResult& r) {
        << m.position_iterations << ',' << m.substeps << ','
        << correction_name(m.position_correction) << ',' << integrator_name(m.integrator) << ','
        << number(m.time_step) << ',' << (m.continuous ? 1 : 0) << ','
+       << number(m.speculative_margin) << ','
        << friction_mixing_name(m.friction_mixing) << ','
        << restitution_mixing_name(m.restitution_mixing) << ',' << (m.warm_starting ? 1 : 0)
        << ',' << (m.block_solver ? 1 : 0) << ',' << r.steps << ',' << r.bodies << ','
@@ -189,31 +190,32 @@ std::vector<LabResult> parse_csv(const std::string& text, const std::string& fil
                               integrator_name, field_where(9));
     m.time_step = static_cast<float>(real(10));
     m.continuous = integer(11) != 0;
-    m.friction_mixing = parse_name(f[12], std::vector<FrictionMixing>{FrictionMixing::RootSumSquares,
+    m.speculative_margin = static_cast<float>(real(12));
+    m.friction_mixing = parse_name(f[13], std::vector<FrictionMixing>{FrictionMixing::RootSumSquares,
                                            FrictionMixing::GeometricMean, FrictionMixing::Product,
                                            FrictionMixing::Average, FrictionMixing::Minimum,
                                            FrictionMixing::Maximum},
-                                   friction_mixing_name, field_where(12));
-    m.restitution_mixing = parse_name(f[13], std::vector<RestitutionMixing>{RestitutionMixing::Minimum,
+                                   friction_mixing_name, field_where(13));
+    m.restitution_mixing = parse_name(f[14], std::vector<RestitutionMixing>{RestitutionMixing::Minimum,
                                               RestitutionMixing::Maximum,
                                               RestitutionMixing::Average},
-                                      restitution_mixing_name, field_where(13));
-    m.warm_starting = integer(14) != 0;
-    m.block_solver = integer(15) != 0;
-    r.steps = integer(16);
-    r.bodies = static_cast<int>(integer(17));
-    r.repeats = static_cast<int>(integer(18));
-    r.ns_per_step = real(19);
-    r.ns_per_step_body = real(20);
-    r.us_per_simulated_second = real(21);
-    r.instructions_per_step = real(22);
-    r.error = real(23);
-    r.unit = f[24];
-    r.threshold = real(25);
-    r.pass = integer(26) != 0;
-    r.pareto = integer(27) != 0;
-    r.recommended = integer(28) != 0;
-    r.failure = f[29];
+                                      restitution_mixing_name, field_where(14));
+    m.warm_starting = integer(15) != 0;
+    m.block_solver = integer(16) != 0;
+    r.steps = integer(17);
+    r.bodies = static_cast<int>(integer(18));
+    r.repeats = static_cast<int>(integer(19));
+    r.ns_per_step = real(20);
+    r.ns_per_step_body = real(21);
+    r.us_per_simulated_second = real(22);
+    r.instructions_per_step = real(23);
+    r.error = real(24);
+    r.unit = f[25];
+    r.threshold = real(26);
+    r.pass = integer(27) != 0;
+    r.pareto = integer(28) != 0;
+    r.recommended = integer(29) != 0;
+    r.failure = f[30];
     results.push_back(r);
   }
   if (line_number == 0) throw demos::UsageError(file + ": empty file, expected a lab CSV");

@@ -203,7 +203,8 @@ std::string tuned_settings_json(const LabMethod& method, const demos::SceneModel
   json << "\"settings\": {\"solver\": \"" << solver_name(method.solver) << "\", \"time_step\": "
        << number(method.time_step) << ", \"substeps\": " << method.substeps
        << ", \"position_correction\": \"" << correction_name(method.position_correction)
-       << "\", \"integrator\": \"" << integrator_name(method.integrator)
+       << "\", \"speculative_margin\": " << number(method.speculative_margin)
+       << ", \"integrator\": \"" << integrator_name(method.integrator)
        << "\", \"warm_starting\": " << (method.warm_starting ? "true" : "false")
        << ", \"block_solver\": " << (method.block_solver ? "true" : "false")
        << ", \"friction_mixing\": \"" << friction_mixing_name(method.friction_mixing)

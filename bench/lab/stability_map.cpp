@@ -66,6 +66,10 @@ std::vector<LabMethod> stability_methods(bool quick) {
     m.velocity_iterations = 1;
   });
   add([](LabMethod& m) { m.continuous = false; });
+  add([](LabMethod& m) {
+    m.continuous = false;
+    m.speculative_margin = 0.0f;
+  });
   for (const LabMethod& peer : peer_methods(1.0f / 60.0f)) {
     if (engine_available(peer.engine)) methods.push_back(peer);
   }
