@@ -118,10 +118,10 @@ void run_stability(bool quick, bool charts, const std::string& directory, std::o
     out << "wrote " << directory << "/stability.png\n";
   }
   // Contact sheets of a few boundaries: the final frame on each side.
+  const std::string standard = method_label(LabMethod{});
   const std::vector<std::pair<std::string, std::string>> boundaries = {
-      {"acc 8i", "stack_height"}, {"iter 10i linpc", "stack_height"},
-      {"acc 8i noccd", "bullet_speed"}, {"acc 8i", "mass_ratio"},
-      {"soft 4s x1i", "initial_overlap"}};
+      {standard, "stack_height"}, {standard, "mass_ratio"}, {standard, "elastic_pile"},
+      {standard + " noccd nospec", "bullet_speed"}, {"soft 4s x1i", "friction_angle"}};
   std::filesystem::create_directories(directory + "/stability_sheets");
   for (const auto& [label, stressor_name] : boundaries) {
     for (const StabilityCell& cell : cells) {
