@@ -43,6 +43,15 @@ struct ContactPoint {
   bool bouncing = false;
   /// Separating speed (m/s) a bouncing point leaves the step with.
   float bounce_speed = 0.0f;
+  /// True once the point's bounce was applied: its accumulated impulses are a collision's, not
+  /// a resting contact's, so they are not warm-started into the next (sub-)step.
+  bool bounced = false;
+  /// True when the point is elastic (restitution > 0) and, at the start of the (sub-)step,
+  /// neither approaches, overlaps by more than the slop, nor carries impulse from the last
+  /// step: it sits out this
+  /// step's solve, so an impact travels along a touching elastic row one contact per step
+  /// (Newton's cradle) instead of being shared by the whole row at once.
+  bool waiting = false;
   bool friction_at_limit = false;   ///< the last friction pass was clamped by the Coulomb limit
 };
 

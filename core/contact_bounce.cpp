@@ -8,6 +8,21 @@ namespace impulse2d {
 
 using namespace contact_detail;
 
+namespace {
+
+// Target speed (m/s) of a waiting point: so far below any real velocity that the clamped
+// impulse stays 0, yet finite so the block solver's arithmetic stays finite.
+constexpr float waiting_target_speed = -1.0e9f;
+
+}  // namespace
+
+void forget_bounce(ContactPoint& point) {
+  if (!point.bounced) return;
+  point.normal_impulse = 0.0f;
+  point.tangent_impulse = 0.0f;
+  point.bounced = false;
+}
+
 BouncePlan plan_bounce(float approach_speed, float gap, float approach_acceleration,
                        float restitution, float threshold, float h) {
   BouncePlan plan;
@@ -41,17 +56,23 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
     const Body& b = bodies[contact.body_b.index];
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
+      forget_bounce(point);
       const float gap = current_separation(a, b, contact, point);
       BouncePlan plan;
+      float approach_speed = 0.0f;
       if (may_bounce) {
-        const float approach_speed = -glm::dot(relative_velocity(a, b, point), contact.normal);
+        approach_speed = -glm::dot(relative_velocity(a, b, point), contact.normal);
         plan = plan_bounce(approach_speed, gap, contact.approach_acceleration, contact.restitution,
                            context.restitution_threshold, h);
       }
       point.bouncing = plan.bouncing;
       point.bounce_speed = plan.leave_speed;
+      point.waiting = may_bounce && !plan.bouncing && gap >= -context.slop &&
+                      approach_speed <= 0.0f && point.normal_impulse == 0.0f;
       if (plan.bouncing) {
         point.velocity_bias = plan.solve_speed;
+      } else if (point.waiting) {
+        point.velocity_bias = waiting_target_speed;
       } else if (!bounces_only) {
         point.velocity_bias = gap > 0.0f ? -gap * inverse_h : 0.0f;
       }
@@ -69,6 +90,7 @@ void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies) {
       if (!point.bouncing) continue;
       push_normal_to(a, b, contact, point, point.bounce_speed);
       point.bouncing = false;
+      point.bounced = true;
     }
   }
 }

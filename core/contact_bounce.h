@@ -38,7 +38,8 @@ BouncePlan plan_bounce(float approach_speed, float gap, float approach_accelerat
 
 /// Sets every point's `velocity_bias` for a (sub-)step of `h` seconds from its current gap
 /// (recomputed from the transforms) and relative velocity: -gap/h while apart, 0 when
-/// touching, or a bounce from `plan_bounce`. With `bounces_only`, points that do not bounce
+/// touching, or a bounce from `plan_bounce`; an elastic point that neither approaches,
+/// overlaps nor carries last step's impulse is marked `waiting` (left out of the solve). With `bounces_only`, points that do not bounce
 /// are left as they are (the soft solver computes their targets itself).
 void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                          const SolverContext& context, float h, bool bounces_only);
@@ -46,6 +47,10 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
 /// After positions moved: raises each bouncing point's relative normal velocity to its
 /// `bounce_speed` (accumulated impulse kept >= 0), and ends its bounce.
 void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies);
+
+/// Drops the accumulated impulses of a point whose bounce was applied, so the collision's
+/// impulse is not warm-started as if it were a resting load.
+void forget_bounce(ContactPoint& point);
 
 /// Current separation (m) of a prepared point, from its local anchors: > 0 apart.
 float current_separation(const Body& a, const Body& b, const Contact& contact,

@@ -35,6 +35,8 @@ void carry_over_impulses(const Contact& old_contact, Contact& contact) {
     for (int k = 0; k < old_contact.point_count; ++k) {
       const ContactPoint& old_point = old_contact.points[k];
       if (old_point.feature_id == point.feature_id) {
+        // A collision's impulse is not a load to warm-start (see ContactPoint::bounced).
+        if (old_point.bounced) break;
         point.normal_impulse = old_point.normal_impulse;
         point.tangent_impulse = old_point.tangent_impulse;
         break;

@@ -20,7 +20,9 @@ void correct_positions_linear(const std::vector<Contact>& contacts, std::vector<
     Body& a = bodies[contact.body_a.index];
     Body& b = bodies[contact.body_b.index];
     float depth = 0.0f;
-    for (int i = 0; i < contact.point_count; ++i) depth = std::max(depth, contact.points[i].depth);
+    for (int i = 0; i < contact.point_count; ++i) {
+      if (!contact.points[i].waiting) depth = std::max(depth, contact.points[i].depth);
+    }
     const float inverse_mass_sum = a.inverse_mass + b.inverse_mass;
     const vec2 correction = contact.normal * (std::max(depth - settings.slop, 0.0f) /
                                               inverse_mass_sum * settings.correction_percent);
@@ -43,6 +45,7 @@ float correct_positions_nonlinear(const std::vector<Contact>& contacts, std::vec
       const vec2 normal = contact.normal;
       for (int i = 0; i < contact.point_count; ++i) {
         const ContactPoint& point = contact.points[i];
+        if (point.waiting) continue;  // sat out this step's solve: its overlap is next step's
         const vec2 surface_a = a.transform.apply(point.local_anchor_a);
         const vec2 surface_b = b.transform.apply(point.local_anchor_b);
         const float separation = glm::dot(surface_b - surface_a, normal);

@@ -25,7 +25,9 @@ void solve_contacts_soft(std::vector<Contact>& contacts, std::vector<Body>& bodi
       float target_speed = 0.0f;  // smallest relative normal velocity allowed, m/s
       float mass_scale = 1.0f;
       float impulse_scale = 0.0f;
-      if (point.bouncing) {
+      if (point.waiting) {
+        continue;  // an elastic point that neither approaches nor touches sits this step out
+      } else if (point.bouncing) {
         target_speed = point.velocity_bias;
       } else {
         const float separation = current_separation(a, b, contact, point);

@@ -17,6 +17,7 @@ SolverContext resolve_solver_context(const WorldSettings& settings) {
   context.friction = settings.enable_friction;
   context.restitution = settings.enable_restitution;
   context.restitution_threshold = settings.restitution_threshold;
+  context.slop = settings.slop;
   context.explicit_euler = settings.integrator == Integrator::ExplicitEuler;
   // A spring stiffer than a quarter of the sub-step rate would be under-resolved in time.
   const float hertz = std::min(settings.contact_hertz, 0.25f / context.substep);

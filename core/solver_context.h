@@ -21,6 +21,7 @@ struct SolverContext {
   bool friction = true;            ///< tangent impulses on
   bool restitution = true;         ///< bounces on
   float restitution_threshold = 0.0f;  ///< m/s: slower impacts do not bounce
+  float slop = 0.0f;               ///< m: overlap position correction leaves alone
   bool explicit_euler = false;     ///< positions move before velocities change
   /// Soft contact between two moving bodies over one sub-step (SoftStep).
   Softness dynamic_softness;

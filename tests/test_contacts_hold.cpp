@@ -324,3 +324,42 @@ TEST_P(Stack, RotatingBoxesStandForThirtySeconds) {
 INSTANTIATE_TEST_SUITE_P(Heights, Stack, ::testing::Values(10, 20, 30));
 
 }  // namespace
+
+namespace {
+
+TEST(NewtonsCradle, OnlyTheLastBallLeavesAndEnergyIsKept) {
+  // Five unit-mass discs in a touching row, e = 1, no gravity, the first striking at 4 m/s.
+  // Speculative contacts make the touching row one rigid body unless elastic points that
+  // neither approach nor overlap sit the step out (ContactPoint::waiting); with that, the
+  // impact travels one contact per step and only the last ball leaves, at the striker's speed.
+  WorldSettings settings;
+  settings.gravity = {0.0f, 0.0f};
+  settings.restitution_threshold = 0.0f;
+  settings.enable_friction = false;
+  World world(settings);
+  const Material steel{"Elastic", 1.0f / (3.14159265f * 0.25f), 1.0f, 0.0f, 0.0f};
+  std::vector<BodyId> balls;
+  for (int i = 0; i < 5; ++i) {
+    BodyDef def;
+    def.material = steel;
+    def.position = {i == 0 ? -2.0f : static_cast<float>(i), 0.0f};
+    def.linear_velocity = {i == 0 ? 4.0f : 0.0f, 0.0f};
+    balls.push_back(world.create_body(def, make_circle(0.5f)));
+  }
+  auto energy = [&] {
+    double sum = 0.0;
+    for (const BodyId id : balls) {
+      sum += 0.5 * world.body(id).mass * length_squared(world.body(id).linear_velocity);
+    }
+    return sum;
+  };
+  const double start_energy = energy();
+  for (int i = 0; i < 180; ++i) world.step();
+  for (std::size_t i = 0; i + 1 < balls.size(); ++i) {
+    EXPECT_LT(std::fabs(world.body(balls[i]).linear_velocity.x), 0.01f * 4.0f) << "ball " << i;
+  }
+  EXPECT_NEAR(world.body(balls.back()).linear_velocity.x, 4.0f, 0.01f * 4.0f);
+  EXPECT_NEAR(energy(), start_energy, 1e-4 * start_energy);
+}
+
+}  // namespace

@@ -139,9 +139,11 @@ const Boundary boundaries[] = {
     // wrong at 0.158.
     {"accumulated", [] { return LabMethod{}; }, "friction_angle", 0.1, -1},
     {"soft step", soft_step, "friction_angle", 0.25, 0.1},
-    // Elastic pile under gravity, energy within 5 % for 10 s: the soft step keeps 7 discs and
-    // not 8; accumulated impulses 2 and not 3.
-    {"soft step", soft_step, "elastic_pile", 4, 8},
+    // Elastic pile under gravity, energy within 5 % for 10 s (not monotonic in the count: pinned
+    // where the map measured it): the soft step keeps 14 discs and
+    // not 15 (7 and not 8 before bounces stopped warm-starting their collision impulse and
+    // elastic rows waited their turn); accumulated impulses 2 and not 3.
+    {"soft step", soft_step, "elastic_pile", 14, 15},
     {"accumulated", [] { return LabMethod{}; }, "elastic_pile", 2, 4},
 };
 
