@@ -260,7 +260,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{
             "NegativeRadius",
             R"({"bodies": [{"shape": {"type": "circle", "radius": -0.5}, "position": [0, 0]}]})",
-            "render bad.json", 2, "bad.json: bodies[0].shape.radius: must be > 0, got -0.5"},
+            "render bad.json", 2, "bad.json: bodies[0].shape.radius: must be in 0.001..1000 (m; below 1 mm"},
         BadInput{
             "NegativeDensity",
             R"({"materials": {"Foam": {"density": -1, "restitution": 0, "static_friction": 0, "dynamic_friction": 0}},
