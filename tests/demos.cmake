@@ -19,3 +19,8 @@ target_compile_definitions(test_bad_input_catalogue PRIVATE
   IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>"
   IMPULSE2D_CATALOGUE="${CMAKE_CURRENT_SOURCE_DIR}/bad_inputs/catalogue.json")
 add_dependencies(test_bad_input_catalogue impulse2d)
+# Determinism across compilers: pinned final state hashes of long runs (checked in the GCC
+# build and in scripts/test.sh's Clang build).
+impulse2d_add_test(test_cross_build_hash
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cross_build_hash.cpp
+  LIBS impulse2d_demos)
