@@ -329,7 +329,7 @@ TEST_F(CliTest, SignalsStopARenderAndRemoveWhatItCreated) {
     fs::create_directories(dir_ / "frames");
     write_file(dir_ / "frames" / "other_00000.png", "keep");
     const std::string command =
-        "cd '" + dir_.string() + "' && ('" IMPULSE2D_CLI "' render tutorial --steps 100000 "
+        "cd '" + dir_.string() + "' && ('" IMPULSE2D_CLI "' render tutorial --steps 50000 "
         "--frames ::1 --size 320x240 --out frames/new > out.txt 2> err.txt & pid=$!; sleep 1.5; "
         "kill -" + signal + " $pid; wait $pid; echo $? > status.txt)";
     ASSERT_EQ(std::system(command.c_str()), 0);
