@@ -44,6 +44,10 @@ struct BodyDef {
   float angular_damping = 0.0f;          ///< 1/s; w *= 1 / (1 + dt * damping) each step
   bool fixed_rotation = false;           ///< infinite inertia: contacts never spin it
   bool is_bullet = false;                ///< swept against other bodies each step (no tunnelling)
+  /// Speculative contacts for this body's pairs (see `WorldSettings::speculative_margin`);
+  /// false: its contacts exist only while overlapping (as a controller that senses contacts
+  /// by overlap expects).
+  bool speculative = true;
   std::uint32_t collision_layers = 1;    ///< collides with bodies whose layers share a bit
   Material material = materials::wood(); ///< density, restitution, friction
   std::uint64_t user_data = 0;           ///< any value the caller wants back
@@ -77,6 +81,7 @@ struct Body {
   float angular_damping = 0.0f;  ///< 1/s
   bool fixed_rotation = false;   ///< inertia treated as infinite
   bool is_bullet = false;        ///< swept against other bodies each step (no tunnelling)
+  bool speculative = true;       ///< its pairs get speculative contacts
   std::uint32_t collision_layers = 1;  ///< bitmask
   std::uint64_t user_data = 0;   ///< the caller's value
 

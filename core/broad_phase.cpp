@@ -15,7 +15,8 @@ bool bodies_can_collide(const Body& a, const Body& b) {
 }
 
 void BroadPhase::find_pairs(const std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                            BroadPhaseMethod method, std::vector<BodyPair>& pairs) {
+                            const std::vector<Aabb>& bounds, BroadPhaseMethod method,
+                            std::vector<BodyPair>& pairs) {
   pairs.clear();
   const auto slot_count = static_cast<std::uint32_t>(bodies.size());
   if (method == BroadPhaseMethod::BruteForce) {
@@ -23,7 +24,7 @@ void BroadPhase::find_pairs(const std::vector<Body>& bodies, const std::vector<s
       if (!alive[i]) continue;
       for (std::uint32_t j = i + 1; j < slot_count; ++j) {
         if (!alive[j]) continue;
-        if (bodies[i].aabb.overlaps(bodies[j].aabb) && bodies_can_collide(bodies[i], bodies[j])) {
+        if (bounds[i].overlaps(bounds[j]) && bodies_can_collide(bodies[i], bodies[j])) {
           pairs.emplace_back(i, j);
         }
       }
@@ -37,17 +38,17 @@ void BroadPhase::find_pairs(const std::vector<Body>& bodies, const std::vector<s
   }
   // Ties on lower.x are broken by slot so the order never depends on the sort's internals.
   std::sort(sorted_slots_.begin(), sorted_slots_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const float ax = bodies[a].aabb.lower.x;
-    const float bx = bodies[b].aabb.lower.x;
+    const float ax = bounds[a].lower.x;
+    const float bx = bounds[b].lower.x;
     return ax < bx || (ax == bx && a < b);
   });
   const std::size_t count = sorted_slots_.size();
   for (std::size_t i = 0; i < count; ++i) {
-    const Body& first = bodies[sorted_slots_[i]];
+    const std::uint32_t first = sorted_slots_[i];
     for (std::size_t j = i + 1; j < count; ++j) {
-      const Body& second = bodies[sorted_slots_[j]];
-      if (second.aabb.lower.x > first.aabb.upper.x) break;
-      if (first.aabb.overlaps(second.aabb) && bodies_can_collide(first, second)) {
+      const std::uint32_t second = sorted_slots_[j];
+      if (bounds[second].lower.x > bounds[first].upper.x) break;
+      if (bounds[first].overlaps(bounds[second]) && bodies_can_collide(bodies[first], bodies[second])) {
         pairs.emplace_back(std::min(sorted_slots_[i], sorted_slots_[j]),
                            std::max(sorted_slots_[i], sorted_slots_[j]));
       }

@@ -21,11 +21,13 @@ bool bodies_can_collide(const Body& a, const Body& b);
 /// Broad phase with reusable scratch buffers (no allocation once warmed up).
 class BroadPhase {
  public:
-  /// Fills `pairs` with every pair of living slots whose AABBs overlap and that
+  /// Fills `pairs` with every pair of living slots whose `bounds` (one box per slot) overlap
+  /// and that
   /// `bodies_can_collide`, each once as (smaller slot, larger slot), sorted ascending.
   /// `method` picks brute force (O(n^2)) or sort-and-sweep on the x axis (O(n log n + k)).
   void find_pairs(const std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                  BroadPhaseMethod method, std::vector<BodyPair>& pairs);
+                  const std::vector<Aabb>& bounds, BroadPhaseMethod method,
+                  std::vector<BodyPair>& pairs);
 
  private:
   std::vector<std::uint32_t> sorted_slots_;  // living slots ordered by (aabb.lower.x, slot)

@@ -99,6 +99,10 @@ Character::Character(World& world, const CharacterDef& def) : settings_(def.sett
   body_def.material = def.material;
   body_def.collision_layers = def.collision_layers;
   body_def.user_data = def.user_data;
+  // The controller senses ground, walls and steps from overlapping contacts and lets a step
+  // through before the solver acts on it; a speculative contact would stop the walk at a
+  // step's face a step earlier than the controller can see it.
+  body_def.speculative = false;
   body_ = world.create_body(body_def, make_box(def.half_extents));
   half_extents_ = def.half_extents;
   jumps_left_ = settings_.extra_jumps;

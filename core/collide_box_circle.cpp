@@ -28,7 +28,7 @@ int box_corner(vec2 direction) {
 }  // namespace
 
 Manifold collide_box_circle(const Box& a, const Transform& xa, const Circle& b,
-                            const Transform& xb) {
+                            const Transform& xb, float margin) {
   Manifold manifold;
   const vec2 extents = a.half_extents;
   const float radius = b.radius;
@@ -37,8 +37,10 @@ Manifold collide_box_circle(const Box& a, const Transform& xa, const Circle& b,
   const vec2 closest = glm::clamp(centre, -extents, extents);
   const vec2 outside_offset = centre - closest;
   const float distance_squared = length_squared(outside_offset);
-  // Strict test: a circle that only touches the box (zero depth) makes no contact.
-  if (!(radius * radius > distance_squared)) return manifold;
+  // Strict test: a circle further from the box than the margin (or, with no margin, that only
+  // touches it) makes no contact.
+  const float reach = radius + margin;
+  if (!(reach * reach > distance_squared)) return manifold;
 
   vec2 normal{0.0f, 0.0f};
   vec2 surface_a{0.0f, 0.0f};  // the box's surface point, relative to its centre

@@ -22,8 +22,8 @@ Polygon box_as_polygon(const Box& box) {
 }
 
 Manifold collide_box_polygon(const Box& a, const Transform& xa, const Polygon& b,
-                             const Transform& xb) {
-  return collide_polygons(box_as_polygon(a), collide_detail::box_transform(xa), b, xb);
+                             const Transform& xb, float margin) {
+  return collide_polygons(box_as_polygon(a), collide_detail::box_transform(xa), b, xb, margin);
 }
 
 }  // namespace impulse2d

@@ -28,17 +28,27 @@ FaceCorners face_corners(int axis, bool positive) {
 
 }  // namespace
 
-Manifold collide_boxes(const Box& a, const Transform& xa, const Box& b, const Transform& xb) {
+Manifold collide_boxes(const Box& a, const Transform& xa, const Box& b, const Transform& xb,
+                       float margin) {
   Manifold manifold;
   const vec2 offset = xb.position - xa.position;
   // Penetration along each axis: how far B must move along it to separate.
   const vec2 overlap = a.half_extents + b.half_extents - glm::abs(offset);
-  // Strict test: boxes that only touch (zero overlap) make no contact.
-  if (!(overlap.x > 0.0f && overlap.y > 0.0f)) return manifold;
+  // Strict test: boxes further apart than the margin (or, with no margin, that only touch)
+  // make no contact.
+  if (!(overlap.x > -margin && overlap.y > -margin)) return manifold;
 
-  // Resolve along the axis of least overlap; ties go to y (the usual resting case).
+  // Resolve along the axis of least overlap (a gap is a negative overlap, so a separated pair
+  // resolves along the axis that separates it); ties go to y (the usual resting case).
   const int axis = overlap.x < overlap.y ? 0 : 1;
   const int tangent_axis = 1 - axis;
+  // Boxes apart on both axes (corner towards corner) have no faces facing each other. Apart
+  // along the normal, faces that overlap by less than a centimetre along the tangent are a
+  // corner grazing a corner (a box sliding along a floor made of boxes meets the next one's
+  // side): no speculative contact there, or it would stop the slide at the seam.
+  constexpr float graze_overlap = 0.01f;  // metres
+  const float needed_face_overlap = overlap[axis] > 0.0f ? 0.0f : graze_overlap;
+  if (!(overlap[tangent_axis] > needed_face_overlap)) return manifold;
   const bool positive = offset[axis] >= 0.0f;
   const float sign = positive ? 1.0f : -1.0f;
   manifold.normal[axis] = sign;

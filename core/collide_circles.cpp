@@ -9,13 +9,15 @@
 namespace impulse2d {
 
 Manifold collide_circles(const Circle& a, const Transform& xa, const Circle& b,
-                         const Transform& xb) {
+                         const Transform& xb, float margin) {
   Manifold manifold;
   const vec2 offset = xb.position - xa.position;
   const float distance_squared = length_squared(offset);
   const float radius_sum = a.radius + b.radius;
-  // Strict test: circles that only touch (zero depth) make no contact.
-  if (!(radius_sum * radius_sum > distance_squared)) return manifold;
+  // Strict test: circles further apart than the margin (or, with no margin, that only
+  // touch) make no contact.
+  const float reach = radius_sum + margin;
+  if (!(reach * reach > distance_squared)) return manifold;
 
   // Coincident centres (or a distance so small its square underflows): fixed normal +y, and
   // the depth is how far B must move along it to separate.

@@ -9,7 +9,7 @@
 namespace impulse2d {
 
 Manifold collide_polygon_circle(const Polygon& a, const Transform& xa, const Circle& b,
-                                const Transform& xb) {
+                                const Transform& xb, float margin) {
   Manifold manifold;
   const float radius = b.radius;
   // Work in the polygon's frame.
@@ -25,8 +25,10 @@ Manifold collide_polygon_circle(const Polygon& a, const Transform& xa, const Cir
       face = i;
     }
   }
-  // Strict test: a circle that only touches the polygon (zero depth) makes no contact.
-  if (!(separation < radius)) return manifold;
+  // Strict test: a circle further from the polygon than the margin (or, with no margin, that
+  // only touches it) makes no contact.
+  const float reach = radius + margin;
+  if (!(separation < reach)) return manifold;
 
   const vec2 start = a.vertices[face];
   const vec2 end = a.vertices[collide_detail::next_vertex(face, a.count)];
@@ -41,7 +43,7 @@ Manifold collide_polygon_circle(const Polygon& a, const Transform& xa, const Cir
       const vec2 vertex = before_start ? start : end;
       const vec2 offset = centre - vertex;
       const float distance_squared = length_squared(offset);
-      if (!(radius * radius > distance_squared)) return manifold;
+      if (!(reach * reach > distance_squared)) return manifold;
       // distance >= separation > 0, so the division is safe.
       normal = offset / std::sqrt(distance_squared);
       surface_a = vertex;

@@ -11,6 +11,7 @@
 #include "core/collide_internal.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace impulse2d {
 
@@ -20,11 +21,11 @@ using collide_detail::next_vertex;
 using collide_detail::vertex_feature;
 
 /// Keep A's face as the reference unless B's separation is clearly larger:
-/// flip when sepB > relative_tolerance * sepA + absolute_tolerance. Separations are negative
-/// when overlapping, so relative_tolerance * sepA lies above sepA: B must beat A by 5% of the
-/// depth plus a millimetre. The bias keeps the choice (and so the feature ids) from
-/// flickering between steps when both faces are almost equally good, e.g. box on box.
-constexpr float relative_tolerance = 0.95f;
+/// flip when sepB > sepA + relative_tolerance * |sepA| + absolute_tolerance, so B must beat A
+/// by 5% of the depth (or gap) plus a millimetre. The bias keeps the choice (and so the
+/// feature ids) from flickering between steps when both faces are almost equally good, e.g.
+/// box on box; for overlapping pairs it is PHYSICS.md's sepB > 0.95 sepA + 0.001.
+constexpr float relative_tolerance = 0.05f;
 constexpr float absolute_tolerance = 0.001f;  // metres
 
 /// A polygon's vertices and edge normals in some shared frame.
@@ -81,7 +82,7 @@ struct ClipPoint {
 /// returns is in that frame with the normal pointing from A to B (`reference_is_b` says which
 /// of A and B is the reference).
 Manifold clip_incident_face(const PolygonView& reference, int reference_face,
-                            const PolygonView& incident, bool reference_is_b) {
+                            const PolygonView& incident, bool reference_is_b, float margin) {
   const int reference_start = reference_face;
   const int reference_end = next_vertex(reference_face, reference.count);
   const vec2 origin = reference.vertices[reference_start];
@@ -128,8 +129,9 @@ Manifold clip_incident_face(const PolygonView& reference, int reference_face,
   for (int i = 0; i < candidate_count; ++i) {
     const ClipPoint& candidate = candidates[i];
     const float separation = glm::dot(candidate.position - origin, normal);
-    // Strict: a point exactly on the reference face (zero depth) is not a contact.
-    if (!(separation < 0.0f)) continue;
+    // Strict: a point further out than the margin (or, with no margin, exactly on the
+    // reference face) is not a contact.
+    if (!(separation < margin)) continue;
     ManifoldPoint& point = manifold.points[manifold.point_count++];
     point.depth = -separation;
     // Midway between the incident vertex and its projection on the reference face.
@@ -145,7 +147,7 @@ Manifold clip_incident_face(const PolygonView& reference, int reference_face,
 }  // namespace
 
 Manifold collide_polygons(const Polygon& a, const Transform& xa, const Polygon& b,
-                          const Transform& xb) {
+                          const Transform& xb, float margin) {
   // Work in A's frame. Composing the relative rotation first (rather than going through world
   // space) keeps B's edges exactly parallel to A's when both have the same angle.
   const Rotation relative_rotation{
@@ -162,16 +164,19 @@ Manifold collide_polygons(const Polygon& a, const Transform& xa, const Polygon& 
   const PolygonView view_a{a.vertices.data(), a.normals.data(), a.count};
   const PolygonView view_b{b_vertices, b_normals, b.count};
 
-  // Strict: polygons that only touch (zero separation) make no contact.
+  // Strict: polygons further apart than the margin (or, with no margin, that only touch)
+  // make no contact.
   const FaceSeparation separation_a = max_face_separation(view_a, view_b);
-  if (!(separation_a.separation < 0.0f)) return Manifold{};
+  if (!(separation_a.separation < margin)) return Manifold{};
   const FaceSeparation separation_b = max_face_separation(view_b, view_a);
-  if (!(separation_b.separation < 0.0f)) return Manifold{};
+  if (!(separation_b.separation < margin)) return Manifold{};
 
-  const bool reference_is_b =
-      separation_b.separation > relative_tolerance * separation_a.separation + absolute_tolerance;
-  Manifold manifold = reference_is_b ? clip_incident_face(view_b, separation_b.face, view_a, true)
-                                     : clip_incident_face(view_a, separation_a.face, view_b, false);
+  const float sep_a = separation_a.separation;
+  const bool reference_is_b = separation_b.separation >
+                              sep_a + relative_tolerance * std::fabs(sep_a) + absolute_tolerance;
+  Manifold manifold =
+      reference_is_b ? clip_incident_face(view_b, separation_b.face, view_a, true, margin)
+                     : clip_incident_face(view_a, separation_a.face, view_b, false, margin);
 
   manifold.normal = xa.rotation.rotate(manifold.normal);
   for (int i = 0; i < manifold.point_count; ++i) {

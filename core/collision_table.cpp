@@ -26,43 +26,43 @@ Manifold flipped(Manifold manifold) {
 }
 
 Manifold circle_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
-                          const Transform& xb) {
-  return collide_circles(a.circle, xa, b.circle, xb);
+                          const Transform& xb, float margin) {
+  return collide_circles(a.circle, xa, b.circle, xb, margin);
 }
 
-Manifold circle_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
-  return flipped(collide_box_circle(b.box, xb, a.circle, xa));
+Manifold circle_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return flipped(collide_box_circle(b.box, xb, a.circle, xa, margin));
 }
 
 Manifold circle_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
-                           const Transform& xb) {
-  return flipped(collide_polygon_circle(b.polygon, xb, a.circle, xa));
+                           const Transform& xb, float margin) {
+  return flipped(collide_polygon_circle(b.polygon, xb, a.circle, xa, margin));
 }
 
-Manifold box_vs_circle(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
-  return collide_box_circle(a.box, xa, b.circle, xb);
+Manifold box_vs_circle(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return collide_box_circle(a.box, xa, b.circle, xb, margin);
 }
 
-Manifold box_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
-  return collide_boxes(a.box, xa, b.box, xb);
+Manifold box_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return collide_boxes(a.box, xa, b.box, xb, margin);
 }
 
-Manifold box_vs_polygon(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
-  return collide_box_polygon(a.box, xa, b.polygon, xb);
+Manifold box_vs_polygon(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return collide_box_polygon(a.box, xa, b.polygon, xb, margin);
 }
 
 Manifold polygon_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
-                           const Transform& xb) {
-  return collide_polygon_circle(a.polygon, xa, b.circle, xb);
+                           const Transform& xb, float margin) {
+  return collide_polygon_circle(a.polygon, xa, b.circle, xb, margin);
 }
 
-Manifold polygon_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
-  return flipped(collide_box_polygon(b.box, xb, a.polygon, xa));
+Manifold polygon_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return flipped(collide_box_polygon(b.box, xb, a.polygon, xa, margin));
 }
 
 Manifold polygon_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
-                            const Transform& xb) {
-  return collide_polygons(a.polygon, xa, b.polygon, xb);
+                            const Transform& xb, float margin) {
+  return collide_polygons(a.polygon, xa, b.polygon, xb, margin);
 }
 
 /// Rows: type of A; columns: type of B; in `ShapeType` order (circle, box, polygon).
@@ -87,8 +87,9 @@ CollideFunction collide_function(ShapeType a, ShapeType b) {
   return collision_table[table_index(a, "a")][table_index(b, "b")];
 }
 
-Manifold collide(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb) {
-  return collide_function(a.type, b.type)(a, xa, b, xb);
+Manifold collide(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                 float margin) {
+  return collide_function(a.type, b.type)(a, xa, b, xb, margin);
 }
 
 }  // namespace impulse2d

@@ -9,31 +9,45 @@
 
 namespace impulse2d {
 
+/// Inverse masses (1/kg) and inverse inertias (1/(kg m^2)) of a contact's two bodies, with the
+/// world's rotation switches applied; resolved once per step when the contact is prepared.
+struct PairMass {
+  float inverse_mass_a = 0.0f;     ///< 1/kg
+  float inverse_mass_b = 0.0f;     ///< 1/kg
+  float inverse_inertia_a = 0.0f;  ///< 1/(kg m^2), 0 when A does not rotate
+  float inverse_inertia_b = 0.0f;  ///< 1/(kg m^2), 0 when B does not rotate
+};
+
 /// The solver's state for one manifold point.
 struct ContactPoint {
-  vec2 point{0.0f, 0.0f};      ///< world position, metres
+  vec2 point{0.0f, 0.0f};      ///< world position, metres, midway between the two surfaces
   vec2 anchor_a{0.0f, 0.0f};   ///< point relative to A's centre of mass, metres
   vec2 anchor_b{0.0f, 0.0f};   ///< point relative to B's centre of mass, metres
-  vec2 local_anchor_a{0.0f, 0.0f};  ///< A's surface point in A's frame (position correction, SoftStep's separation)
-  vec2 local_anchor_b{0.0f, 0.0f};  ///< B's surface point in B's frame (position correction, SoftStep's separation)
-  float depth = 0.0f;          ///< penetration at detection, metres
+  vec2 local_anchor_a{0.0f, 0.0f};  ///< A's surface point in A's frame, metres
+  vec2 local_anchor_b{0.0f, 0.0f};  ///< B's surface point in B's frame, metres
+  /// Penetration at detection, metres: positive when overlapping, negative for a speculative
+  /// point (the gap the bodies may still close).
+  float depth = 0.0f;
   std::uint32_t feature_id = 0;     ///< identifies the point across steps
   float normal_impulse = 0.0f;      ///< accumulated (or last) normal impulse, N s
   float tangent_impulse = 0.0f;     ///< accumulated (or last) friction impulse, N s
-  float normal_mass = 0.0f;         ///< 1 / effective mass along the normal, 1/kg
-  float tangent_mass = 0.0f;        ///< 1 / effective mass along the tangent, 1/kg
-  /// Target separating speed from restitution, m/s: -e times the relative normal velocity at
-  /// prepare when that approach is faster than the restitution threshold, else 0.
+  float normal_mass = 0.0f;         ///< effective mass along the normal, kg
+  float tangent_mass = 0.0f;        ///< effective mass along the tangent, kg
+  /// The smallest relative normal velocity (m/s) the velocity solve allows: -gap/h for a
+  /// speculative point (it may close its gap, no more), 0 for a touching one, and for a point
+  /// that bounces in this (sub-)step the speed that leaves it where the bounce would have
+  /// put it at the end of the step (see `contact_bounce.h`).
   float velocity_bias = 0.0f;
-  /// SoftStep: the largest normal impulse increment applied this step, N s; restitution is
-  /// applied only to points that pushed.
-  float max_normal_impulse = 0.0f;
-  bool sliding = false;             ///< true once friction switched to the dynamic coefficient
+  /// True when the point bounces in this (sub-)step: after positions move, its relative normal
+  /// velocity is raised to `bounce_speed`.
+  bool bouncing = false;
+  /// Separating speed (m/s) a bouncing point leaves the step with.
+  float bounce_speed = 0.0f;
   bool friction_at_limit = false;   ///< the last friction pass was clamped by the Coulomb limit
-  bool matched = false;             ///< true when warm-started from the previous step
 };
 
-/// A touching pair of bodies. Body A has the smaller slot index.
+/// A touching (or, with a speculative margin, nearly touching) pair of bodies. Body A has the
+/// smaller slot index.
 struct Contact {
   BodyId body_a;   ///< first body (smaller index)
   BodyId body_b;   ///< second body
@@ -43,8 +57,24 @@ struct Contact {
   float static_friction = 0.0f;   ///< mixed coefficient
   float dynamic_friction = 0.0f;  ///< mixed coefficient
   float restitution = 0.0f;       ///< mixed coefficient
-  /// False when a contact filter rejected the pair; the decision is kept while the shapes
-  /// keep touching (so one-way platforms do not pop bodies through).
+  /// Coulomb state of the contact as a whole: false while it sticks (friction limit
+  /// mu_s * Pn), true once the friction it needed reached the static limit at every point
+  /// (limit mu_d * Pn) or when it began with its surfaces slipping; back to false when its
+  /// relative tangential speed returns to rest.
+  bool sliding = false;
+  /// Relative acceleration (m/s^2) with which applied forces and gravity drive the bodies
+  /// together along the normal (positive: closing); used to time a bounce within the step.
+  float approach_acceleration = 0.0f;
+  /// Mean relative tangential velocity (m/s, along the normal turned clockwise) of the points
+  /// at prepare, before this step's forces: slip the contact carried into the step.
+  float start_slip = 0.0f;
+  /// Consecutive steps (0..2) that ended with every point at the static limit and the slip
+  /// growing; the contact breaks loose at 2 (one such step can be a cold-started solve).
+  std::uint8_t steps_at_static_limit = 0;
+  PairMass mass;  ///< the two bodies' inverse masses, resolved at prepare
+  /// False when a contact filter (or `World::set_contact_enabled`) rejected the pair; the
+  /// decision is kept while the shapes overlap (so one-way platforms do not pop bodies
+  /// through) and taken afresh once they are more than a millimetre apart.
   bool enabled = true;
 };
 

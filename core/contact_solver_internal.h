@@ -1,32 +1,17 @@
 #pragma once
 /// @file contact_solver_internal.h
-/// Helpers shared by the contact solvers only (not part of the public API): the two bodies'
-/// masses, relative velocity at a point, impulse application and effective mass.
+/// Helpers shared by the contact solvers only (not part of the public API): relative velocity
+/// at a point, impulse application, effective mass, and the accumulated normal and friction
+/// updates of one point.
 
 #include "core/body.h"
 #include "core/contact.h"
-#include "core/integrate.h"
-#include "core/settings.h"
 
 #include <algorithm>
 #include <vector>
 
 namespace impulse2d {
 namespace contact_detail {
-
-/// Inverse masses (1/kg) and inverse inertias (1/(kg m^2)) of a contact's two bodies.
-struct PairMass {
-  float inverse_mass_a;     ///< 1/kg
-  float inverse_mass_b;     ///< 1/kg
-  float inverse_inertia_a;  ///< 1/(kg m^2), 0 when A does not rotate
-  float inverse_inertia_b;  ///< 1/(kg m^2), 0 when B does not rotate
-};
-
-/// The pair's masses under the world's settings (rotation switches included).
-inline PairMass pair_mass(const Body& a, const Body& b, const WorldSettings& settings) {
-  return {a.inverse_mass, b.inverse_mass, effective_inverse_inertia(a, settings),
-          effective_inverse_inertia(b, settings)};
-}
 
 /// Velocity (m/s) of B's point relative to A's point, at the point's anchors.
 inline vec2 relative_velocity(const Body& a, const Body& b, const ContactPoint& point) {
@@ -54,30 +39,42 @@ inline float inverse_effective_mass(const PairMass& mass, const ContactPoint& po
 }
 
 /// True when the contact is enabled and at least one of its bodies can move.
-inline bool is_solvable(const Contact& contact, const std::vector<Body>& bodies) {
-  return contact.enabled && (bodies[contact.body_a.index].inverse_mass > 0.0f ||
-                             bodies[contact.body_b.index].inverse_mass > 0.0f);
+inline bool is_solvable(const Contact& contact) {
+  return contact.enabled &&
+         (contact.mass.inverse_mass_a > 0.0f || contact.mass.inverse_mass_b > 0.0f);
 }
 
 /// The fixed friction direction of a contact: the normal turned clockwise.
 inline vec2 tangent_of(vec2 normal) { return right_perpendicular(normal); }
 
-// One pass of Coulomb friction over a contact's points with accumulated impulses: the
-// accumulated tangent impulse is clamped to mu_s * Pn while the point sticks and mu_d * Pn once
-// it slides; `friction_at_limit` records whether the clamp acted.
-inline void solve_friction_points(Body& a, Body& b, const PairMass& mass, Contact& contact) {
+/// Raises the point's accumulated normal impulse (kept >= 0) so that its relative normal
+/// velocity reaches `target_speed` (m/s), and applies the change.
+inline void push_normal_to(Body& a, Body& b, const Contact& contact, ContactPoint& point,
+                           float target_speed) {
+  const float normal_speed = glm::dot(relative_velocity(a, b, point), contact.normal);
+  const float accumulated =
+      std::max(point.normal_impulse - (normal_speed - target_speed) * point.normal_mass, 0.0f);
+  const float change = accumulated - point.normal_impulse;
+  point.normal_impulse = accumulated;
+  apply_impulse(a, b, contact.mass, point, contact.normal * change);
+}
+
+/// One pass of Coulomb friction over a contact's points with accumulated impulses: the
+/// accumulated tangent impulse is clamped to mu_s * Pn while the contact sticks and mu_d * Pn
+/// once it slides; `friction_at_limit` records whether the clamp acted.
+inline void solve_friction_points(Body& a, Body& b, Contact& contact) {
   const vec2 tangent = tangent_of(contact.normal);
+  const float coefficient = contact.sliding ? contact.dynamic_friction : contact.static_friction;
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
     const float tangent_speed = glm::dot(relative_velocity(a, b, point), tangent);
     const float unclamped = point.tangent_impulse - tangent_speed * point.tangent_mass;
-    const float limit =
-        (point.sliding ? contact.dynamic_friction : contact.static_friction) * point.normal_impulse;
+    const float limit = coefficient * point.normal_impulse;
     const float accumulated = std::clamp(unclamped, -limit, limit);
     point.friction_at_limit = accumulated != unclamped;
     const float change = accumulated - point.tangent_impulse;
     point.tangent_impulse = accumulated;
-    apply_impulse(a, b, mass, point, tangent * change);
+    apply_impulse(a, b, contact.mass, point, tangent * change);
   }
 }
 

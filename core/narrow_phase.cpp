@@ -1,10 +1,32 @@
 #include "core/narrow_phase.h"
 
 #include "core/collide.h"
+#include "core/contact_friction_state.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace impulse2d {
 
 namespace {
+
+// Gap (metres) beyond which a pair counts as apart again for a kept contact decision.
+constexpr float separated_gap = 1.0e-3f;
+
+// The largest depth (metres) of a manifold's points.
+float deepest_depth(const Manifold& manifold) {
+  float deepest = manifold.points[0].depth;
+  for (int i = 1; i < manifold.point_count; ++i) deepest = std::max(deepest, manifold.points[i].depth);
+  return deepest;
+}
+
+// Relative tangential speed (m/s) of B against A at the contact's first point.
+float tangential_speed(const Body& a, const Body& b, const Contact& contact) {
+  const vec2 point = contact.points[0].point;
+  const vec2 velocity_b = b.linear_velocity + cross(b.angular_velocity, point - b.transform.position);
+  const vec2 velocity_a = a.linear_velocity + cross(a.angular_velocity, point - a.transform.position);
+  return glm::dot(velocity_b - velocity_a, right_perpendicular(contact.normal));
+}
 
 // Copies last step's impulses into points whose feature ids match.
 void carry_over_impulses(const Contact& old_contact, Contact& contact) {
@@ -15,8 +37,6 @@ void carry_over_impulses(const Contact& old_contact, Contact& contact) {
       if (old_point.feature_id == point.feature_id) {
         point.normal_impulse = old_point.normal_impulse;
         point.tangent_impulse = old_point.tangent_impulse;
-        point.sliding = old_point.sliding;
-        point.matched = true;
         break;
       }
     }
@@ -26,7 +46,8 @@ void carry_over_impulses(const Contact& old_contact, Contact& contact) {
 }  // namespace
 
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
-                    const WorldSettings& settings, const ContactFilter& filter,
+                    const std::vector<float>& reach, const WorldSettings& settings,
+                    const ContactFilter& filter,
                     const std::vector<Contact>& previous, std::vector<Contact>& contacts) {
   contacts.clear();
   int point_total = 0;
@@ -34,7 +55,10 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
   for (const BodyPair& pair : pairs) {
     const Body& a = bodies[pair.first];
     const Body& b = bodies[pair.second];
-    const Manifold manifold = collide(a.shape, a.transform, b.shape, b.transform);
+    const float margin = settings.speculative_margin > 0.0f && a.speculative && b.speculative
+                             ? settings.speculative_margin + reach[pair.first] + reach[pair.second]
+                             : 0.0f;
+    const Manifold manifold = collide(a.shape, a.transform, b.shape, b.transform, margin);
     if (manifold.point_count == 0) continue;
 
     Contact contact;
@@ -70,9 +94,20 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
                                 previous[old_index].body_b == b.id;
     if (touched_before) {
       contact.enabled = previous[old_index].enabled;
+      // A disabled pair stays disabled while its shapes overlap (re-enabling then would pop a
+      // body through a one-way platform); once they are apart again, with speculative contacts
+      // still inside the margin, the decision is taken afresh.
+      if (!contact.enabled && deepest_depth(manifold) < -separated_gap) {
+        contact.enabled = filter ? filter(a, b, manifold) : true;
+      }
+      contact.sliding = previous[old_index].sliding;
+      contact.steps_at_static_limit = previous[old_index].steps_at_static_limit;
       carry_over_impulses(previous[old_index], contact);
-    } else if (filter) {
-      contact.enabled = filter(a, b, manifold);
+    } else {
+      // A contact that begins with its surfaces already slipping past each other slides
+      // (kinetic friction) until it comes to rest; one that begins at rest sticks.
+      contact.sliding = std::fabs(tangential_speed(a, b, contact)) > sticking_speed;
+      if (filter) contact.enabled = filter(a, b, manifold);
     }
     point_total += contact.point_count;
     contacts.push_back(contact);

@@ -12,10 +12,13 @@
 
 namespace impulse2d {
 
-/// Builds `contacts` (sorted by pair) from `pairs`. `previous` holds last step's contacts,
-/// sorted by pair. `filter` may be empty. Returns the number of manifold points made.
+/// Builds `contacts` (sorted by pair) from `pairs`, each pair collided with the speculative
+/// margin `settings.speculative_margin + reach[a] + reach[b]` (metres; `reach` per slot, see
+/// `speculative_reach.h`). `previous` holds last step's contacts, sorted by pair. `filter`
+/// may be empty. Returns the number of manifold points made.
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
-                    const WorldSettings& settings, const ContactFilter& filter,
+                    const std::vector<float>& reach, const WorldSettings& settings,
+                    const ContactFilter& filter,
                     const std::vector<Contact>& previous, std::vector<Contact>& contacts);
 
 }  // namespace impulse2d

@@ -19,6 +19,8 @@ void validate_settings(const WorldSettings& s) {
           "must be in 0..1000");
   require(s.position_iterations >= 0 && s.position_iterations <= 1000, "position_iterations",
           "must be in 0..1000");
+  require(finite(s.speculative_margin) && s.speculative_margin >= 0.0f, "speculative_margin",
+          "must be finite and >= 0");
   require(finite(s.correction_percent) && s.correction_percent >= 0.0f &&
               s.correction_percent <= 1.0f,
           "correction_percent", "must be in [0, 1]");

@@ -54,15 +54,24 @@ enum class BroadPhaseMethod {
 struct WorldSettings {
   vec2 gravity{0.0f, -9.81f};  ///< m/s^2
   float time_step = 1.0f / 60.0f;  ///< seconds per step
-  int substeps = 1;                ///< each step is split into this many equal sub-steps
+  int substeps = 1;  ///< each step is split into this many equal sub-steps
 
   SolverMethod solver = SolverMethod::AccumulatedImpulses;  ///< impulse scheme
-  int velocity_iterations = 8;  ///< passes over all contacts per (sub)step
+  /// Passes over all contacts per (sub)step. 16 holds a 30-box stack of rotating boxes that 8
+  /// lets fall (README, "Measured figures: physics").
+  int velocity_iterations = 16;
   bool warm_starting = true;    ///< carry accumulated impulses over (AccumulatedImpulses only)
   /// Solve the two normal impulses of a 2-point manifold together as a 2x2 linear
   /// complementarity problem (Box2D's block solver) instead of one after the other, which keeps
   /// stacks from rocking (AccumulatedImpulses only).
   bool block_solver = true;
+
+  /// Speculative contacts: pairs closer than this (metres), plus the distance their bodies can
+  /// cover in the coming step, already get contact points with a negative depth (the gap), and
+  /// the solvers let them approach by at most that gap per step, so a landing body is caught at
+  /// the surface and touching bodies never free-fall for a step. 0 turns speculation off (only
+  /// overlapping shapes make contacts).
+  float speculative_margin = 0.02f;
 
   PositionCorrection position_correction = PositionCorrection::NonlinearGaussSeidel;  ///< method
   int position_iterations = 3;      ///< passes for NonlinearGaussSeidel

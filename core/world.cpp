@@ -1,11 +1,10 @@
 #include "core/world.h"
 
-#include "core/contact_solver.h"
 #include "core/error.h"
 #include "core/integrate.h"
 #include "core/narrow_phase.h"
 #include "core/position_correction.h"
-#include "core/soft_contact_solver.h"
+#include "core/speculative_reach.h"
 
 #include <algorithm>
 #include <chrono>
@@ -133,6 +132,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   body.angular_damping = def.angular_damping;
   body.fixed_rotation = !rotates;
   body.is_bullet = def.is_bullet;
+  body.speculative = def.speculative;
   body.collision_layers = def.collision_layers;
   body.user_data = def.user_data;
   body.aabb = compute_aabb(body.shape, body.transform);
@@ -314,12 +314,15 @@ void World::step() {
     body.previous_position = body.transform.position;
     body.previous_angle = body.angle;
   }
-  const float h = settings_.time_step / static_cast<float>(settings_.substeps);
-  if (settings_.solver == SolverMethod::SoftStep) {
-    soft_step(h);  // collides once, then sub-steps of soft contacts
-  } else {
-    impulse_step(h);  // per sub-step: collide, impulses, position correction
+  if (!solver_ || solver_method_ != settings_.solver) {
+    solver_ = make_step_solver(settings_.solver);
+    solver_method_ = settings_.solver;
   }
+  const Clock::time_point solve_start = Clock::now();
+  solver_->step(*this, resolve_solver_context(settings_));
+  // Whatever the stages did not time themselves is the solver's own work.
+  stats_.solver_ms = elapsed_ms(solve_start) - stats_.broad_phase_ms - stats_.narrow_phase_ms -
+                     stats_.integrate_ms - stats_.position_ms;
   if (settings_.enable_sleeping) {
     sleep_islands_.update(bodies_, alive_, contacts_, settings_, settings_.time_step);
   }
@@ -339,90 +342,37 @@ void World::step() {
   stats_.total_ms = elapsed_ms(start);
 }
 
-void World::move_bodies(float dt) {
-  integrate_positions(bodies_, alive_, settings_, dt);
-  if (settings_.enable_continuous) {
-    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt);  // no tunnelling
-  }
-}
-
-void World::find_contacts() {
+void World::find_contacts(float dt) {
   Clock::time_point stage = Clock::now();
   update_bounds(bodies_, alive_);
-  broad_phase_.find_pairs(bodies_, alive_, settings_.broad_phase, pairs_);
+  compute_speculative_reach(bodies_, alive_, settings_, dt, speculative_reach_);
+  compute_speculative_bounds(bodies_, alive_, speculative_reach_, settings_.speculative_margin,
+                             speculative_bounds_);
+  broad_phase_.find_pairs(bodies_, alive_, speculative_bounds_, settings_.broad_phase, pairs_);
   stats_.broad_phase_ms += elapsed_ms(stage);
 
   stage = Clock::now();
   std::swap(previous_contacts_, contacts_);
-  stats_.contact_point_count =
-      update_contacts(bodies_, pairs_, settings_, contact_filter_, previous_contacts_, contacts_);
+  stats_.contact_point_count = update_contacts(bodies_, pairs_, speculative_reach_, settings_,
+                                               contact_filter_, previous_contacts_, contacts_);
   stats_.pairs_tested = static_cast<int>(pairs_.size());
   stats_.contact_count = static_cast<int>(contacts_.size());
   stats_.narrow_phase_ms += elapsed_ms(stage);
 }
 
-void World::solve_velocities() {
+void World::integrate_velocities(float dt) {
   const Clock::time_point stage = Clock::now();
-  prepare_contacts(contacts_, bodies_, settings_);
-  if (settings_.solver == SolverMethod::AccumulatedImpulses) {
-    if (settings_.warm_starting) warm_start_contacts(contacts_, bodies_, settings_);
-    for (int i = 0; i < settings_.velocity_iterations; ++i) {
-      solve_contacts_accumulated(contacts_, bodies_, settings_);
-    }
-    break_static_friction(contacts_, bodies_, settings_);
-  } else {
-    for (int i = 0; i < settings_.velocity_iterations; ++i) {
-      solve_contacts_per_iteration(contacts_, bodies_, settings_);
-    }
-  }
-  update_sliding_state(contacts_, bodies_);
-  stats_.solver_ms += elapsed_ms(stage);
+  impulse2d::integrate_velocities(bodies_, alive_, settings_, dt);
+  stats_.integrate_ms += elapsed_ms(stage);
 }
 
-void World::impulse_step(float h) {
-  for (int substep = 0; substep < settings_.substeps; ++substep) {
-    find_contacts();  // broad phase, then narrow phase through the jump table
-    Clock::time_point stage = Clock::now();
-    if (settings_.integrator == Integrator::ExplicitEuler) move_bodies(h);  // with the old velocity
-    integrate_velocities(bodies_, alive_, settings_, h);  // forces and gravity
-    stats_.integrate_ms += elapsed_ms(stage);
-    solve_velocities();  // contact impulses
-    stage = Clock::now();
-    if (settings_.integrator == Integrator::SemiImplicitEuler) move_bodies(h);  // with the new velocity
-    stats_.integrate_ms += elapsed_ms(stage);
-    correct_positions();  // remove the overlap left
+void World::integrate_positions(float dt) {
+  const Clock::time_point stage = Clock::now();
+  impulse2d::integrate_positions(bodies_, alive_, settings_, dt);
+  if (settings_.enable_continuous) {
+    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt);  // no tunnelling
   }
-}
-
-void World::soft_step(float h) {
-  find_contacts();  // once: the sub-steps track each point's separation through its anchors
-  Clock::time_point stage = Clock::now();
-  prepare_contacts(contacts_, bodies_, settings_);
-  stats_.solver_ms += elapsed_ms(stage);
-  for (int substep = 0; substep < settings_.substeps; ++substep) {
-    stage = Clock::now();
-    integrate_velocities(bodies_, alive_, settings_, h);  // forces and gravity
-    stats_.integrate_ms += elapsed_ms(stage);
-    stage = Clock::now();
-    if (settings_.warm_starting) warm_start_contacts(contacts_, bodies_, settings_);
-    for (int i = 0; i < settings_.velocity_iterations; ++i) {
-      solve_contacts_soft(contacts_, bodies_, settings_, h, /*use_bias=*/true);
-    }
-    stats_.solver_ms += elapsed_ms(stage);
-    stage = Clock::now();
-    move_bodies(h);
-    stats_.integrate_ms += elapsed_ms(stage);
-    stage = Clock::now();
-    for (int i = 0; i < settings_.velocity_iterations; ++i) {
-      solve_contacts_soft(contacts_, bodies_, settings_, h, /*use_bias=*/false);  // relax
-    }
-    stats_.solver_ms += elapsed_ms(stage);
-  }
-  stage = Clock::now();
-  break_static_friction(contacts_, bodies_, settings_);
-  update_sliding_state(contacts_, bodies_);
-  apply_restitution(contacts_, bodies_, settings_);
-  stats_.solver_ms += elapsed_ms(stage);
+  stats_.integrate_ms += elapsed_ms(stage);
 }
 
 void World::correct_positions() {

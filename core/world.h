@@ -10,10 +10,12 @@
 #include "core/debug_draw.h"
 #include "core/settings.h"
 #include "core/sleep.h"
+#include "core/step_solver.h"
 #include "core/step_stats.h"
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -28,14 +30,14 @@ struct RayHit {
 };
 
 /// Decides whether a new contact between two bodies is solved. Called once when the pair
-/// starts touching; the decision is kept until they separate. Return false to let them pass.
+/// starts touching (comes within the speculative margin); the decision is kept while they overlap and taken afresh once they are more than 1 mm apart. Return false to let them pass.
 using ContactFilter = std::function<bool(const Body& a, const Body& b, const Manifold& manifold)>;
 
 /// Called by queries for each body found; return false to stop the query.
 using QueryCallback = std::function<bool(BodyId)>;
 
 /// A 2D rigid-body world.
-class World {
+class World : private SolverStages {
  public:
   /// A world with the given settings (validated; throws `Error` naming a bad field).
   explicit World(const WorldSettings& settings = WorldSettings{});
@@ -142,12 +144,13 @@ class World {
  private:
   Body& checked_body(BodyId id, const char* caller);
   const Body& checked_body(BodyId id, const char* caller) const;
-  void find_contacts();
-  void move_bodies(float dt);
-  void solve_velocities();
-  void correct_positions();
-  void impulse_step(float h);  // PerIteration / AccumulatedImpulses: sub-steps of h seconds
-  void soft_step(float h);     // SoftStep: collide once, sub-steps of h seconds
+  // The stages the solver method drives (SolverStages), each timed into stats_.
+  void find_contacts(float dt) override;
+  void integrate_velocities(float dt) override;
+  void integrate_positions(float dt) override;
+  void correct_positions() override;
+  std::vector<Contact>& solver_contacts() override { return contacts_; }
+  std::vector<Body>& solver_bodies() override { return bodies_; }
   void restore_diverged_bodies();
 
   WorldSettings settings_;
@@ -158,6 +161,10 @@ class World {
 
   std::vector<Contact> contacts_;          // sorted by (a.index, b.index)
   std::vector<Contact> previous_contacts_; // last step's, for warm starting (reused buffer)
+  std::shared_ptr<const StepSolver> solver_;    // made for solver_method_ (re-made when it changes)
+  SolverMethod solver_method_ = SolverMethod::AccumulatedImpulses;
+  std::vector<float> speculative_reach_;   // per slot, metres (reused)
+  std::vector<Aabb> speculative_bounds_;   // per slot (reused)
   BroadPhase broad_phase_;
   std::vector<BodyPair> pairs_;            // broad-phase output (reused)
   SleepIslands sleep_islands_;

@@ -27,7 +27,7 @@ struct SceneModel {
   bool ccd = false;         ///< bodies marked `is_bullet` are swept so they cannot tunnel
 
   bool sleeping = false;        ///< bodies at rest are put to sleep
-  int velocity_iterations = 8;  ///< solver passes per step
+  int velocity_iterations = WorldSettings{}.velocity_iterations;  ///< solver passes per step
   int position_iterations = 3;  ///< position-correction passes per step (NGS only)
 
   /// True when the model declares shapes of kind `type`.
@@ -47,7 +47,7 @@ void verify_shape_kinds(const SceneModel& model, const World& world, const std::
 const char* shape_kind_name(ShapeType type);
 
 /// One line: "shapes circle+box, rotation off, friction on, restitution on, ccd off,
-/// sleeping off, iterations 8/3".
+/// sleeping off, iterations 16/3".
 std::string describe_model(const SceneModel& model);
 
 }  // namespace impulse2d::demos

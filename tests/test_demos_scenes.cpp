@@ -50,7 +50,7 @@ TEST(Registry, ListsTheRequiredScenesOnceEach) {
   }
   for (const char* required :
        {"tutorial", "materials", "friction_ramp", "shape_pairs", "pyramid", "stack",
-        "newtons_cradle", "bullet", "ball_pit", "random_polygons"}) {
+        "newtons_cradle", "bullet", "ball_pit", "random_polygons", "push"}) {
     EXPECT_EQ(names.count(required), 1u) << required;
   }
   EXPECT_EQ(default_scene().name, "tutorial");
@@ -111,6 +111,31 @@ TEST(BuiltinScenes, ScriptedRainIsDeterministic) {
   }
   EXPECT_GT(first.world().body_count(), 4);
   EXPECT_EQ(first.world().state_hash(), second.world().state_hash());
+}
+
+TEST(BuiltinScenes, PushHoldsBelowMuSWeightAndSlidesAtTheDynamicAccelerationAbove) {
+  const Scene& scene = *find_builtin_scene("push");
+  SceneRun run(scene, Params(scene.params));
+  std::vector<BodyId> boxes;
+  for (const BodyId id : run.world().body_ids()) {
+    if (run.world().body(id).type == BodyType::Dynamic) boxes.push_back(id);
+  }
+  ASSERT_EQ(boxes.size(), 3u);
+  const float start = run.world().body(boxes[0]).transform.position.x;
+  for (int i = 0; i < 60; ++i) run.step();
+  std::vector<float> speed_at_1s;
+  for (const BodyId id : boxes) speed_at_1s.push_back(run.world().body(id).linear_velocity.x);
+  for (int i = 0; i < 60; ++i) run.step();
+  // 0.95 mu_s W: holds (under 1 mm in 2 s).
+  EXPECT_LT(std::fabs(run.world().body(boxes[0]).transform.position.x - start), 1e-3f);
+  // 1.05 and 2 mu_s W: a = g (ratio mu_s - mu_d) within 1 %, measured over the second second.
+  const float g = -run.world().settings().gravity.y;
+  const float ratios[2] = {1.05f, 2.0f};
+  for (int lane = 1; lane <= 2; ++lane) {
+    const float expected = g * (ratios[lane - 1] * 0.5f - 0.3f);
+    const float measured = run.world().body(boxes[lane]).linear_velocity.x - speed_at_1s[lane];
+    EXPECT_NEAR(measured, expected, 0.01f * expected) << "lane " << lane;
+  }
 }
 
 TEST(BuiltinScenes, FrictionRampHoldsAboveTanThetaAndSlidesBelow) {

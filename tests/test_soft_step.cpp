@@ -231,32 +231,6 @@ TEST(SoftStep, SlidesAtTheDynamicFrictionAcceleration) {
 }
 
 
-TEST(SoftStep, BounceStepLeavesExactlyETimesTheApproachSpeed) {
-  // Restitution is applied once, at the end of the step that found the contact, to the normal
-  // velocity the ball had when the step began: it leaves at e times that speed.
-  const float e = 0.8f;
-  WorldSettings settings = soft_settings();
-  settings.restitution_threshold = 0.0f;
-  settings.enable_friction = false;
-  World world(settings);
-  BodyDef ground;
-  ground.type = BodyType::Static;
-  ground.material = Material{"Floor", 0.0f, e, 0.0f, 0.0f};
-  ground.position = {0.0f, -1.0f};
-  world.create_body(ground, make_box({5.0f, 1.0f}));
-  BodyDef ball;
-  ball.material = Material{"Ball", 1.0f, e, 0.0f, 0.0f};
-  ball.position = {0.0f, 1.25f};
-  const BodyId id = world.create_body(ball, make_circle(0.25f));
-  float approach = 0.0f;
-  for (int i = 0; i < 120 && world.contacts().empty(); ++i) {
-    approach = world.body(id).linear_velocity.y;
-    world.step();
-  }
-  ASSERT_EQ(world.contacts().size(), 1u);
-  EXPECT_NEAR(world.body(id).linear_velocity.y, -e * approach, 1e-5f * std::fabs(approach));
-}
-
 class SoftBounce : public ::testing::TestWithParam<float> {};
 
 TEST_P(SoftBounce, ApexHeightsFollowESquaredPowers) {

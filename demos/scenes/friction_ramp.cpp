@@ -60,7 +60,9 @@ Scene friction_ramp() {
       {"margin", "how far mu_s sits above / below tan(angle)", 0.05, 0.005, 0.3, false},
   };
   scene.model.polygons = true;
-  scene.model.rotation = false;  // blocks slide without tipping; they keep the ramp's angle
+  // Rotating boxes, as a user's would be: each block rests on two contact points with unequal
+  // normal impulses, the case where a per-point static/dynamic rule goes wrong.
+  scene.model.rotation = true;
   scene.model.restitution = false;
   scene.settings.friction_mixing = FrictionMixing::Minimum;
   scene.view.steps = 180;

@@ -5,6 +5,7 @@
 IMPULSE2D_SCENE(tutorial)
 IMPULSE2D_SCENE(materials)
 IMPULSE2D_SCENE(friction_ramp)
+IMPULSE2D_SCENE(push)
 IMPULSE2D_SCENE(shape_pairs)
 IMPULSE2D_SCENE(pyramid)
 IMPULSE2D_SCENE(stack)

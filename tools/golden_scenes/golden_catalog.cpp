@@ -25,7 +25,7 @@ constexpr SceneFrames kSceneFrames[] = {
     {"tutorial", 240, 900},        {"materials", 75, 480},    {"friction_ramp", 60, 180},
     {"shape_pairs", 30, 240},      {"pyramid", 60, 600},      {"stack", 60, 600},
     {"newtons_cradle", 60, 180},   {"bullet", 20, 90},        {"ball_pit", 120, 600},
-    {"random_polygons", 120, 600}, {"platformer", 470, 1110},
+    {"random_polygons", 120, 600}, {"platformer", 470, 1110}, {"push", 60, 120},
 };
 
 std::vector<GoldenSpec> make_catalog() {

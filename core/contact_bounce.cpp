@@ -1,0 +1,76 @@
+#include "core/contact_bounce.h"
+
+#include "core/contact_solver_internal.h"
+
+#include <algorithm>
+
+namespace impulse2d {
+
+using namespace contact_detail;
+
+BouncePlan plan_bounce(float approach_speed, float gap, float approach_acceleration,
+                       float restitution, float threshold, float h) {
+  BouncePlan plan;
+  const float open_gap = std::max(gap, 0.0f);
+  if (!(restitution > 0.0f && approach_speed > threshold)) return plan;
+  if (!(open_gap < approach_speed * h)) return plan;  // the gap stays open this step
+  const float impact_time = open_gap / approach_speed;
+  const float impact_speed =
+      std::max(approach_speed + approach_acceleration * (impact_time - 0.5f * h), 0.0f);
+  plan.bouncing = true;
+  plan.solve_speed = restitution * impact_speed - (1.0f + restitution) * open_gap / h;
+  plan.leave_speed = restitution * impact_speed - approach_acceleration * (0.5f * h - impact_time);
+  return plan;
+}
+
+float current_separation(const Body& a, const Body& b, const Contact& contact,
+                         const ContactPoint& point) {
+  const vec2 surface_a = a.transform.apply(point.local_anchor_a);
+  const vec2 surface_b = b.transform.apply(point.local_anchor_b);
+  return glm::dot(surface_b - surface_a, contact.normal);
+}
+
+void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                         const SolverContext& context, float h, bool bounces_only) {
+  const float inverse_h = 1.0f / h;
+  for (Contact& contact : contacts) {
+    if (!is_solvable(contact)) continue;
+    const bool may_bounce = context.restitution && contact.restitution > 0.0f;
+    if (bounces_only && !may_bounce) continue;
+    const Body& a = bodies[contact.body_a.index];
+    const Body& b = bodies[contact.body_b.index];
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      const float gap = current_separation(a, b, contact, point);
+      BouncePlan plan;
+      if (may_bounce) {
+        const float approach_speed = -glm::dot(relative_velocity(a, b, point), contact.normal);
+        plan = plan_bounce(approach_speed, gap, contact.approach_acceleration, contact.restitution,
+                           context.restitution_threshold, h);
+      }
+      point.bouncing = plan.bouncing;
+      point.bounce_speed = plan.leave_speed;
+      if (plan.bouncing) {
+        point.velocity_bias = plan.solve_speed;
+      } else if (!bounces_only) {
+        point.velocity_bias = gap > 0.0f ? -gap * inverse_h : 0.0f;
+      }
+    }
+  }
+}
+
+void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies) {
+  for (Contact& contact : contacts) {
+    if (!is_solvable(contact)) continue;
+    Body& a = bodies[contact.body_a.index];
+    Body& b = bodies[contact.body_b.index];
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      if (!point.bouncing) continue;
+      push_normal_to(a, b, contact, point, point.bounce_speed);
+      point.bouncing = false;
+    }
+  }
+}
+
+}  // namespace impulse2d

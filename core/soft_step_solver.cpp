@@ -1,0 +1,33 @@
+#include "core/soft_step_solver.h"
+
+#include "core/contact_bounce.h"
+#include "core/contact_friction_state.h"
+#include "core/contact_prepare.h"
+#include "core/soft_contact_solver.h"
+
+namespace impulse2d {
+
+void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) const {
+  const float h = context.substep;
+  // Once: the sub-steps track each point's separation through its anchors.
+  stages.find_contacts(context.time_step);
+  std::vector<Contact>& contacts = stages.solver_contacts();
+  std::vector<Body>& bodies = stages.solver_bodies();
+  prepare_contacts(contacts, bodies, context);
+  for (int substep = 0; substep < context.substeps; ++substep) {
+    stages.integrate_velocities(h);
+    plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true);
+    if (context.warm_starting) warm_start_contacts(contacts, bodies);
+    for (int i = 0; i < context.velocity_iterations; ++i) {
+      solve_contacts_soft(contacts, bodies, context, /*use_bias=*/true);
+    }
+    stages.integrate_positions(h);
+    for (int i = 0; i < context.velocity_iterations; ++i) {
+      solve_contacts_soft(contacts, bodies, context, /*use_bias=*/false);  // relax
+    }
+    apply_bounces(contacts, bodies);
+  }
+  if (context.friction) update_friction_state(contacts, bodies);
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,29 @@
+#pragma once
+/// @file speculative_reach.h
+/// How far a body can move in the coming step, so speculative contacts cover it.
+
+#include "core/body.h"
+#include "core/settings.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace impulse2d {
+
+/// For each living slot, the distance (metres) any point of the body can travel in the next
+/// `dt` seconds: (|v| + |g| gravity_scale dt) dt for the centre plus |w| dt times the
+/// farthest vertex from the centre of mass for a rotating polygon. Zero for static bodies
+/// and sleeping ones, and everywhere when `settings.speculative_margin` is 0.
+void compute_speculative_reach(const std::vector<Body>& bodies,
+                               const std::vector<std::uint8_t>& alive,
+                               const WorldSettings& settings, float dt,
+                               std::vector<float>& reach);
+
+/// Each living slot's AABB grown by `margin / 2 + reach` (metres) on every side, so two bodies
+/// closer than `margin` plus their two reaches have overlapping bounds.
+void compute_speculative_bounds(const std::vector<Body>& bodies,
+                                const std::vector<std::uint8_t>& alive,
+                                const std::vector<float>& reach, float margin,
+                                std::vector<Aabb>& bounds);
+
+}  // namespace impulse2d

@@ -1,0 +1,50 @@
+#pragma once
+/// @file step_solver.h
+/// One small interface per solver method: a method drives the stages of a step (collide,
+/// integrate, solve contacts, correct positions) in its own order. Adding a method is one
+/// file implementing `StepSolver` and one line in `make_step_solver`.
+
+#include "core/body.h"
+#include "core/contact.h"
+#include "core/settings.h"
+#include "core/solver_context.h"
+
+#include <memory>
+#include <vector>
+
+namespace impulse2d {
+
+/// The pipeline stages a solver method calls; `World` implements them (and times them).
+class SolverStages {
+ public:
+  /// Broad phase, then narrow phase through the jump table: rebuilds `contacts()` with
+  /// speculative points for the coming `dt` seconds.
+  virtual void find_contacts(float dt) = 0;
+  /// Adds gravity, forces and damping to every awake dynamic body's velocity over `dt` seconds.
+  virtual void integrate_velocities(float dt) = 0;
+  /// Moves every awake body by its velocity over `dt` seconds (bullets swept if enabled).
+  virtual void integrate_positions(float dt) = 0;
+  /// Removes overlap left after the velocity solve, by the world's position correction method.
+  virtual void correct_positions() = 0;
+  /// This step's contacts, sorted by pair.
+  virtual std::vector<Contact>& solver_contacts() = 0;
+  /// Every body slot (dead slots are never referred to by a contact).
+  virtual std::vector<Body>& solver_bodies() = 0;
+
+ protected:
+  ~SolverStages() = default;
+};
+
+/// A solver method: how one step turns contacts into impulses and motion. Stateless (all
+/// memory lives in the contacts), so copies of a world may share one.
+class StepSolver {
+ public:
+  virtual ~StepSolver() = default;
+  /// Advances the world by one step of `context.time_step` seconds.
+  virtual void step(SolverStages& stages, const SolverContext& context) const = 0;
+};
+
+/// The solver of `method` (the registry: one line per method).
+std::shared_ptr<const StepSolver> make_step_solver(SolverMethod method);
+
+}  // namespace impulse2d
