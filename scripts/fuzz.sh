@@ -2,7 +2,8 @@
 # Runs each libFuzzer target for a given time on its seed corpus (tests/fuzz/corpus/<name>)
 # plus a scratch corpus, in a Clang build with ASan + UBSan + fuzzer coverage. A crashing
 # input is saved as tests/fuzz/regressions/<target>-<hash>; keep it there (it is replayed by
-# this script on every run) and fix the bug.
+# this script on every run) and fix the bug. FUZZ_SEED (default 1) fixes the mutation
+# sequence so a CI smoke run is reproducible; set another to explore further.
 # Usage: scripts/fuzz.sh [seconds-per-target] [build-dir]   (defaults: 60, build-asan)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,7 +30,7 @@ for target in fuzz_scene_loader fuzz_narrow_phase; do
   mkdir -p "$scratch"
   log="$build_dir/fuzz_$name.log"
   if "$binary" "$scratch" "tests/fuzz/corpus/$name" -max_total_time="$seconds" -max_len=8192 \
-      -timeout=10 -rss_limit_mb=2048 -artifact_prefix="tests/fuzz/regressions/$target-" \
+      -seed="${FUZZ_SEED:-1}" -timeout=10 -rss_limit_mb=2048 -artifact_prefix="tests/fuzz/regressions/$target-" \
       -print_final_stats=1 >"$log" 2>&1; then
     executions=$(grep -m1 'stat::number_of_executed_units' "$log" | awk '{print $2}')
     echo "fuzz: $target: ${executions:-?} executions in ${seconds} s, no crash"
