@@ -8,6 +8,7 @@
 #include <cstring>
 #include <iostream>
 
+#include "bench/lab/lab_command.h"
 #include "demos/commands.h"
 #include "demos/interrupt.h"
 #include "demos/overlays.h"
@@ -124,6 +125,58 @@ int run_cli(int argc, char** argv) {
                            "on a mismatch, write expected/actual/diff/heatmap PNGs, "
                            "metrics.json and index.html into this directory");
 
+  lab::LabArguments lab_arguments;
+  CLI::App* lab_command = app.add_subcommand(
+      "lab",
+      "the speed-accuracy lab: every method on scenarios with exact answers, peers, charts, "
+      "stability map (CSV and PNG into --out)");
+  lab_command->add_flag("--quick", lab_arguments.quick,
+                        "a smaller method space, 2 repeats and a short stability map (for CI)");
+  lab_command->add_option("--scenarios", lab_arguments.scenarios,
+                          "directory of scenario files (default: the source tree's bench/lab/scenarios)");
+  lab_command->add_option("--only", lab_arguments.only, "run only these scenarios (names)")
+      ->delimiter(',');
+  lab_command->add_option("--out,-d", lab_arguments.out, "output directory")->capture_default_str();
+  lab_command->add_option("--repeats", lab_arguments.repeats,
+                          "timed repeats per configuration, interleaved (default 3; 2 with --quick)");
+  lab_command->add_option("--shard", lab_arguments.shard,
+                          "K/N: run every N-th configuration starting at the K-th (join with `lab merge`)")
+      ->capture_default_str();
+  lab_command->add_flag("!--no-peers", lab_arguments.peers, "skip Box2D and Chipmunk");
+  lab_command->add_flag("!--no-charts", lab_arguments.charts, "write the CSVs only");
+  lab_command->add_flag("!--no-stability", lab_arguments.stability, "skip the stability map");
+  lab_command->add_flag("!--no-sweep", lab_arguments.sweep,
+                        "skip the method sweep: run the stability map only");
+  lab::MergeArguments merge_arguments;
+  CLI::App* merge_command = lab_command->add_subcommand(
+      "merge", "join shard CSVs of `lab --shard K/N` into one lab.csv and draw the charts");
+  merge_command->add_option("inputs", merge_arguments.inputs, "shard CSV files")->required();
+  merge_command->add_option("--out,-d", merge_arguments.out, "output directory")
+      ->capture_default_str();
+  merge_command->add_flag("!--no-charts", merge_arguments.charts, "write the CSV only");
+
+  lab::TuneArguments tune_arguments;
+  CLI::App* tune_command = app.add_subcommand(
+      "tune",
+      "find the cheapest method whose error against a tight reference run stays under "
+      "--max-error; print it as JSON settings for the scene file");
+  tune_command->add_option("scene", tune_arguments.scene,
+                           "built-in scene name or a .json scene file")->required();
+  tune_command->add_option("--param,-p", tune_arguments.params, "scene parameter key=value");
+  tune_command->add_option("--max-error", tune_arguments.max_error,
+                           "largest allowed error, metres")->required();
+  tune_command->add_option("--metric", tune_arguments.metric,
+                           "final (largest body distance from the reference at the end) or "
+                           "trajectory (largest over samples every 0.1 s)")
+      ->capture_default_str();
+  tune_command->add_option("--duration", tune_arguments.duration,
+                           "simulated seconds (default: the scene's run)");
+  tune_command->add_flag("--quick", tune_arguments.quick, "a smaller search space");
+  tune_command->add_option("--repeats", tune_arguments.repeats, "timed repeats per candidate")
+      ->capture_default_str();
+  tune_command->add_option("--out,-d", tune_arguments.out,
+                           "also write the answer and its figures to this .json file");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -143,6 +196,12 @@ int run_cli(int argc, char** argv) {
       trace_scene(trace, std::cout);
     } else if (sheet_command->parsed()) {
       sheet_scene(sheet, std::cout);
+    } else if (merge_command->parsed()) {
+      lab::merge_lab(merge_arguments, std::cout);
+    } else if (lab_command->parsed()) {
+      lab::run_lab(lab_arguments, std::cout);
+    } else if (tune_command->parsed()) {
+      lab::run_tune(tune_arguments, std::cout);
     } else if (diff_command->parsed()) {
       return golden::run_diff_command(diff_expected, diff_actual, diff_out, std::cout, std::cerr);
     } else {

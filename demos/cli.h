@@ -1,7 +1,7 @@
 #pragma once
 /// @file cli.h
 /// The `impulse2d` command line (CLI11): no arguments renders the default demo into out/;
-/// subcommands list, render, trace and sheet; --help everywhere.
+/// subcommands list, render, trace, sheet, diff, lab (and lab merge) and tune; --help everywhere.
 
 namespace impulse2d::demos {
 

@@ -7,8 +7,10 @@
 
 namespace impulse2d::demos {
 
-Progress::Progress(std::string label, std::int64_t total, std::FILE* stream, bool terminal)
+Progress::Progress(std::string label, std::int64_t total, std::FILE* stream, bool terminal,
+                   std::string unit)
     : label_(std::move(label)),
+      unit_(std::move(unit)),
       total_(total),
       stream_(stream),
       terminal_(terminal),
@@ -27,18 +29,19 @@ void Progress::update(std::int64_t done) {
     drawn_ = true;
     constexpr int width = 30;
     const int filled = total_ > 0 ? static_cast<int>(width * done / total_) : width;
-    std::fprintf(stream_, "\r%s [%s%s] %lld/%lld frames  %.1f frames/s  ETA %.0f s   ",
+    std::fprintf(stream_, "\r%s [%s%s] %lld/%lld %s  %.1f %s/s  ETA %.0f s   ",
                  label_.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
                  std::string(static_cast<std::size_t>(width - filled), '.').c_str(),
-                 static_cast<long long>(done), static_cast<long long>(total_), rate,
+                 static_cast<long long>(done), static_cast<long long>(total_), unit_.c_str(), rate,
+                 unit_.c_str(),
                  std::ceil(eta));
   } else {
     const std::int64_t tenth = total_ > 0 ? 10 * done / total_ : 10;
     if (tenth == last_tenth_) return;
     last_tenth_ = tenth;
-    std::fprintf(stream_, "%s: %lld/%lld frames, %.1f frames/s, ETA %.0f s\n", label_.c_str(),
-                 static_cast<long long>(done), static_cast<long long>(total_), rate,
-                 std::ceil(eta));
+    std::fprintf(stream_, "%s: %lld/%lld %s, %.1f %s/s, ETA %.0f s\n", label_.c_str(),
+                 static_cast<long long>(done), static_cast<long long>(total_), unit_.c_str(), rate,
+                 unit_.c_str(), std::ceil(eta));
   }
   std::fflush(stream_);
 }

@@ -14,8 +14,9 @@ namespace impulse2d::demos {
 class Progress {
  public:
   /// A report of `total` units labelled `label`, written to `stream`; `terminal` picks the
-  /// bar (true) or plain lines (false).
-  Progress(std::string label, std::int64_t total, std::FILE* stream, bool terminal);
+  /// bar (true) or plain lines (false); `unit` names the units ("frames", "runs").
+  Progress(std::string label, std::int64_t total, std::FILE* stream, bool terminal,
+           std::string unit = "frames");
   /// Finishes the report if `finish` was not called (a job that failed half-way).
   ~Progress();
   Progress(const Progress&) = delete;
@@ -27,6 +28,7 @@ class Progress {
 
  private:
   std::string label_;
+  std::string unit_;
   std::int64_t total_;
   std::FILE* stream_;
   bool terminal_;

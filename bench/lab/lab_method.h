@@ -1,0 +1,77 @@
+#pragma once
+/// @file lab_method.h
+/// A method of the lab: an engine and every setting the lab sweeps. impulse2d's methods come
+/// from `WorldSettings` (core/settings.h); a peer (Box2D, Chipmunk) is a method too, with its
+/// own fixed iteration counts.
+
+#include <string>
+#include <vector>
+
+#include "core/settings.h"
+#include "demos/scene.h"
+
+namespace impulse2d::lab {
+
+/// The engines the lab can run a scenario in.
+enum class Engine {
+  Impulse2d,  ///< this engine, with every setting below
+  Box2d,      ///< Box2D 2.4.1 (Debian's libbox2d-dev): velocity/position iterations
+  Chipmunk,   ///< Chipmunk 7.0.3 (Debian's libchipmunk-dev, a debug build): iterations
+};
+
+/// One configuration of the sweep. The defaults are `WorldSettings`' own, so the lab's
+/// "default" follows core/settings.h.
+struct LabMethod {
+  Engine engine = Engine::Impulse2d;  ///< which engine runs it
+  SolverMethod solver = WorldSettings{}.solver;  ///< impulse scheme
+  int velocity_iterations = WorldSettings{}.velocity_iterations;  ///< passes per (sub)step
+  int position_iterations = WorldSettings{}.position_iterations;  ///< NGS (Box2D: position) passes
+  int substeps = WorldSettings{}.substeps;  ///< sub-steps per step
+  PositionCorrection position_correction = WorldSettings{}.position_correction;  ///< method
+  Integrator integrator = WorldSettings{}.integrator;  ///< motion integration
+  float time_step = WorldSettings{}.time_step;  ///< seconds per step
+  bool continuous = WorldSettings{}.enable_continuous;  ///< CCD for bodies marked bullet
+  /// Speculative contact margin, metres (0: contacts only between overlapping shapes).
+  float speculative_margin = WorldSettings{}.speculative_margin;
+  FrictionMixing friction_mixing = WorldSettings{}.friction_mixing;  ///< friction rule
+  RestitutionMixing restitution_mixing = WorldSettings{}.restitution_mixing;  ///< restitution rule
+  bool warm_starting = WorldSettings{}.warm_starting;  ///< accumulated impulses carried over
+  bool block_solver = WorldSettings{}.block_solver;  ///< 2-point block solver
+};
+
+/// A short label naming the method by what differs from the default, e.g. "acc 16i",
+/// "soft 4s x1i", "acc 16i dt1/120", "acc 16i nospec", "box2d 8/3".
+std::string method_label(const LabMethod& method);
+
+/// The configurations swept by `impulse2d lab`: every solver at 1, 2, 4, 8, 16, 32 velocity
+/// iterations, 2, 4, 8 substeps at 1, 2, 4 iterations, and, one at a time from the default,
+/// each position correction, integrator, time step 1/30..1/240, CCD off, speculative contacts
+/// off and at a wider margin, every friction and restitution mixing rule, warm starting and the
+/// block solver off. `quick` keeps a subset
+/// (for CI). In a fixed order.
+std::vector<LabMethod> method_space(bool quick);
+
+/// The peers' own configurations: Box2D at 8/3 iterations and Chipmunk at 10 iterations, at
+/// `time_step` seconds per step.
+std::vector<LabMethod> peer_methods(float time_step);
+
+/// `scene` with the method's settings applied (its settings and its model's iteration counts
+/// and CCD switch). The scene's model switches (rotation, friction, restitution, sleeping) stay.
+demos::Scene apply_method(const LabMethod& method, const demos::Scene& scene);
+
+/// The method the scene itself declares (its settings with its model applied).
+LabMethod scene_method(const demos::Scene& scene);
+
+/// Every solver method of `core/settings.h`, in sweep order (a new solver is added here, in
+/// `solver_name` and in `method_label`).
+const std::vector<SolverMethod>& solver_methods();
+
+/// Names as in scene files: "accumulated", "nonlinear_gauss_seidel", "geometric_mean", ...
+const char* engine_name(Engine engine);
+const char* solver_name(SolverMethod solver);                        ///< see engine_name
+const char* correction_name(PositionCorrection correction);          ///< see engine_name
+const char* integrator_name(Integrator integrator);                  ///< see engine_name
+const char* friction_mixing_name(FrictionMixing rule);               ///< see engine_name
+const char* restitution_mixing_name(RestitutionMixing rule);         ///< see engine_name
+
+}  // namespace impulse2d::lab

@@ -1,0 +1,55 @@
+#pragma once
+/// @file lab_simulation.h
+/// What the lab needs from an engine: step a scene and report every body's state, so the same
+/// metric scores impulse2d and its peers (Box2D, Chipmunk) alike.
+
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace impulse2d::lab {
+
+/// The state of one body as the lab reads it (creation index order).
+struct BodyState {
+  vec2 position{0.0f, 0.0f};       ///< centre of mass, metres
+  float angle = 0.0f;              ///< radians
+  vec2 velocity{0.0f, 0.0f};       ///< m/s
+  float angular_velocity = 0.0f;   ///< rad/s
+  float mass = 0.0f;               ///< kg (0 for static bodies)
+  float inertia = 0.0f;            ///< kg m^2 about the centre of mass (0 when it cannot turn)
+  bool dynamic = false;            ///< moved by gravity and contacts
+};
+
+/// The coefficients an engine's model gives the contact between two bodies (after its mixing
+/// rules): the exact answers are computed from these, so each engine is scored against the
+/// exact answer of its own model.
+struct ContactCoefficients {
+  float static_friction = 0.0f;   ///< Coulomb coefficient while sticking
+  float dynamic_friction = 0.0f;  ///< Coulomb coefficient while sliding
+  float restitution = 0.0f;       ///< e
+};
+
+/// One run of a scene in some engine.
+class LabSimulation {
+ public:
+  virtual ~LabSimulation() = default;
+  /// Advances one step of `time_step()` seconds.
+  virtual void step() = 0;
+  /// Seconds per step.
+  virtual float time_step() const = 0;
+  /// Gravity, m/s^2.
+  virtual vec2 gravity() const = 0;
+  /// Number of bodies (creation indices 0 .. body_count()-1).
+  virtual int body_count() const = 0;
+  /// Fills `states` with every body's state, in creation order (the buffer is reused).
+  virtual void read_states(std::vector<BodyState>& states) const = 0;
+  /// The mixed coefficients of a contact between bodies `a` and `b` (creation indices).
+  virtual ContactCoefficients coefficients(int a, int b) const = 0;
+  /// A 64-bit hash of the state (equal runs give equal hashes).
+  virtual unsigned long long state_hash() const = 0;
+  /// True once the engine reported a body that went non-finite (and restored it).
+  virtual bool diverged() const { return false; }
+};
+
+}  // namespace impulse2d::lab
