@@ -14,7 +14,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 if [ ! -x "$build_dir/tests/fuzz/fuzz_scene_loader" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" -DCMAKE_C_FLAGS_RELEASE="-O1 -gline-tables-only" \
-    -DIMPULSE2D_SANITIZE=ON -DIMPULSE2D_FUZZ=ON -DIMPULSE2D_BENCH=OFF >/dev/null
+    -DIMPULSE2D_SANITIZE=ON -DIMPULSE2D_FUZZ=ON >/dev/null
   cmake --build "$build_dir" -j "$(nproc)" --target fuzz_scene_loader fuzz_narrow_phase
 fi
 status=0

@@ -18,7 +18,7 @@ if [ "${CI:-}" = "true" ] || [ "${FULL:-}" = "1" ]; then
   echo "test: Clang + AddressSanitizer + UndefinedBehaviorSanitizer build in $sanitized"
   CC=clang CXX=clang++ cmake -S . -B "$sanitized" -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" -DCMAKE_C_FLAGS_RELEASE="-O1 -gline-tables-only" \
-    -DIMPULSE2D_SANITIZE=ON -DIMPULSE2D_FUZZ=ON -DIMPULSE2D_BENCH=OFF >/dev/null
+    -DIMPULSE2D_SANITIZE=ON -DIMPULSE2D_FUZZ=ON >/dev/null
   cmake --build "$sanitized" -j "$(nproc)"
   ctest --test-dir "$sanitized" --output-on-failure -j "$(nproc)"
   scripts/fuzz.sh "${FUZZ_SECONDS:-60}" "$sanitized"
