@@ -125,8 +125,8 @@ void Character::sense_contacts(const World& world, vec2 up, float move_x) {
   const Body& self = world.body(body_);
   const vec2 self_moved = self.transform.position - self.previous_position;
   const vec2 feet = self.transform.position - up * half_extents_.y;
-  const float ground_min_dot = std::cos(settings_.max_slope);
-  const float wall_max_dot = std::sin(settings_.wall_angle);
+  const float ground_min_dot = cos_sin(settings_.max_slope).cosine;
+  const float wall_max_dot = cos_sin(settings_.wall_angle).sine;
   const float move_sign = sign_of(move_x);
   const vec2 side = right_perpendicular(up);
   float best_ground_score = -2.0f;
@@ -189,7 +189,7 @@ bool Character::snap_to_ground(const World& world, vec2 up, float* push_distance
   const vec2 side = right_perpendicular(up);
   const float probe_start = 0.5f * half_extents_.y;  // rays start inside the own box
   const float probe_length = probe_start + settings_.snap_distance;
-  const float ground_min_dot = std::cos(settings_.max_slope);
+  const float ground_min_dot = cos_sin(settings_.max_slope).cosine;
   bool found = false;
   float nearest_gap = 0.0f;
   for (const float corner : {-1.0f, 1.0f}) {

@@ -1,6 +1,7 @@
 #include "core/integrate.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace impulse2d {
 
@@ -9,6 +10,16 @@ float effective_inverse_inertia(const Body& body, const WorldSettings& settings)
     return 0.0f;
   }
   return body.inverse_inertia;
+}
+
+vec2 clamp_speed(vec2 velocity, float speed_squared, float max_speed) {
+  if (std::isfinite(speed_squared)) return velocity * (max_speed / std::sqrt(speed_squared));
+  // The square overflowed (a speed above ~1.8e19 m/s): scale down first, or the factor
+  // max_speed / inf would stop the body instead of clamping it.
+  const float largest = std::max(std::fabs(velocity.x), std::fabs(velocity.y));
+  if (!std::isfinite(largest)) return velocity;  // non-finite: the world reports the body
+  const vec2 direction = velocity / largest;
+  return direction * (max_speed / std::sqrt(length_squared(direction)));
 }
 
 void integrate_velocities(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
@@ -26,7 +37,8 @@ void integrate_velocities(std::vector<Body>& bodies, const std::vector<std::uint
     if (effective_inverse_inertia(body, settings) == 0.0f) body.angular_velocity = 0.0f;
     const float speed_squared = length_squared(body.linear_velocity);
     if (speed_squared > max_speed_squared) {
-      body.linear_velocity *= settings.max_linear_speed / std::sqrt(speed_squared);
+      body.linear_velocity = clamp_speed(body.linear_velocity, speed_squared,
+                                         settings.max_linear_speed);
     }
   }
 }

@@ -19,6 +19,11 @@ inline bool is_integrated(const Body& body) {
 /// disabled for the scene, fixed for the body, or the shape is an axis-aligned box.
 float effective_inverse_inertia(const Body& body, const WorldSettings& settings);
 
+/// `velocity` scaled to length `max_speed`, given its squared length `speed_squared` (which
+/// may have overflowed to infinity: the direction is kept all the same). A non-finite
+/// velocity is returned unchanged.
+vec2 clamp_speed(vec2 velocity, float speed_squared, float max_speed);
+
 /// v += (F / m + g * gravity_scale) dt, w += T / I dt, then damping and the speed clamp, for
 /// every awake dynamic body. Kinematic bodies keep their velocity.
 void integrate_velocities(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "core/trig.h"
+
 namespace impulse2d {
 
 using glm::vec2;
@@ -38,8 +40,12 @@ struct Rotation {
   float cosine = 1.0f;  ///< cos(angle)
   float sine = 0.0f;    ///< sin(angle)
 
-  /// The rotation by `angle` radians counter-clockwise.
-  static Rotation from_angle(float angle) { return {std::cos(angle), std::sin(angle)}; }
+  /// The rotation by `angle` radians counter-clockwise, from the engine's own `cos_sin`
+  /// (never libm's, whose last bit varies between machines).
+  static Rotation from_angle(float angle) {
+    const CosSin values = cos_sin(angle);
+    return {values.cosine, values.sine};
+  }
   /// The angle in radians, in (-pi, pi].
   float angle() const { return std::atan2(sine, cosine); }
   /// Rotates a vector by this rotation.

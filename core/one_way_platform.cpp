@@ -39,7 +39,7 @@ bool OneWayPlatforms::allows(const Body& a, const Body& b, const Manifold& manif
 
   const vec2 up = platform_body.transform.rotation.rotate(platform->up);
   const vec2 normal_to_other = platform_is_a ? manifold.normal : -manifold.normal;
-  if (glm::dot(normal_to_other, up) < std::cos(max_normal_angle)) return false;
+  if (glm::dot(normal_to_other, up) < cos_sin(max_normal_angle).cosine) return false;
 
   // Velocity of the platform's material under the other body (it may move and turn).
   vec2 contact_point = other.transform.position;

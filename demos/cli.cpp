@@ -2,11 +2,15 @@
 #include "demos/cli.h"
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "bench/lab/lab_command.h"
 #include "demos/commands.h"
+#include "demos/interrupt.h"
 #include "demos/overlays.h"
 #include "demos/scene_registry.h"
 #include "demos/usage_error.h"
@@ -29,6 +33,20 @@ void add_scene_options(CLI::App& command, SceneArguments& arguments, bool scene_
       "scene", arguments.scene, "built-in scene name (see `impulse2d list`) or a .json scene file");
   if (scene_required) scene->required();
   command.add_option("--param,-p", arguments.params, "scene parameter key=value (repeatable)");
+  command.add_flag("--strict", arguments.strict,
+                   "a body that diverges (non-finite state) is an error (exit 1), not a warning");
+}
+
+/// Flushes stdout and reports a failed write (a full disk, a closed pipe): exit status 1
+/// with the reason, instead of 0 with the output cut.
+int check_standard_output() {
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+  if (!failed) return 0;
+  const int reason = errno;
+  std::cerr << "impulse2d: error: writing to standard output failed: "
+            << (reason != 0 ? std::strerror(reason) : "stream error") << "\n";
+  return exit_runtime_error;
 }
 
 }  // namespace
@@ -66,6 +84,9 @@ int run_cli(int argc, char** argv) {
   render_command->add_option("--trails", render.trails,
                              "motion trails: 'dynamic' (every dynamic body) or body indices "
                              "3,7,12 (as the ids overlay shows them)");
+  render_command->add_flag("--clean", render.clean,
+                           "replace frames of the same scene already in the output directory "
+                           "(without it they are an error); done only when the run succeeds");
 
   TraceArguments trace;
   CLI::App* trace_command = app.add_subcommand(
@@ -165,6 +186,7 @@ int run_cli(int argc, char** argv) {
 
   // ffmpeg reading from a pipe may exit early; report that as an error, not a signal.
   std::signal(SIGPIPE, SIG_IGN);
+  install_interrupt_handlers();
   try {
     if (list->parsed()) {
       list_scenes(std::cout);
@@ -185,8 +207,12 @@ int run_cli(int argc, char** argv) {
     } else {
       RenderArguments demo;
       demo.scene.scene = default_scene().name;
+      demo.clean = true;  // the default demo always refreshes out/<default scene>_*.png
       render_scene(demo, std::cout);
     }
+  } catch (const Interrupted& interrupted) {
+    std::cerr << "impulse2d: " << interrupted.what() << "\n";
+    return interrupted.exit_status();
   } catch (const UsageError& error) {
     std::cerr << "impulse2d: " << error.what() << "\n";
     return exit_usage_error;
@@ -194,7 +220,7 @@ int run_cli(int argc, char** argv) {
     std::cerr << "impulse2d: error: " << error.what() << "\n";
     return exit_runtime_error;
   }
-  return 0;
+  return check_standard_output();
 }
 
 }  // namespace impulse2d::demos

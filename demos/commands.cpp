@@ -3,11 +3,14 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <iostream>
+#include <memory>
 
 #include "demos/contact_sheet.h"
 #include "demos/frame_sequence.h"
 #include "demos/overlays.h"
 #include "demos/progress.h"
+#include "demos/run_limits.h"
 #include "demos/scene_registry.h"
 #include "demos/scene_run.h"
 #include "demos/trace_writer.h"
@@ -29,8 +32,50 @@ ResolvedScene resolve(const SceneArguments& arguments) {
   resolved.params = Params(resolved.scene.params);
   for (const std::string& assignment : arguments.params) resolved.params.set_assignment(assignment);
   resolved.steps = arguments.steps ? *arguments.steps : resolved.scene.view.steps;
-  if (resolved.steps < 0) throw UsageError("--steps must be >= 0");
+  if (resolved.steps < 0 || resolved.steps > limits::max_steps) {
+    throw UsageError("--steps " + std::to_string(resolved.steps) + ": must be 0.." +
+                     std::to_string(limits::max_steps));
+  }
+  for (const SceneEvent& event : resolved.scene.events) {
+    if (event.step > resolved.steps) {
+      throw UsageError(resolved.scene.source + ": " + event.origin + ".step: step " +
+                       std::to_string(event.step) + " is after the end of the run (steps 0.." +
+                       std::to_string(resolved.steps) +
+                       "; change it with --steps or the file's run.steps)");
+    }
+  }
   return resolved;
+}
+
+/// A run of the resolved scene, strict when asked.
+std::unique_ptr<SceneRun> start_run(const ResolvedScene& resolved, const SceneArguments& arguments) {
+  auto run = std::make_unique<SceneRun>(resolved.scene, resolved.params);
+  run->set_strict(arguments.strict);
+  return run;
+}
+
+/// Throws `UsageError` for a trail body index no body of the run can have.
+void check_trails(const TrailSelection& trails, const SceneRun& run, const std::string& option) {
+  for (const std::uint32_t slot : trails.slots) {
+    if (slot >= static_cast<std::uint32_t>(run.bodies_in_run())) {
+      throw UsageError(option + ": body " + std::to_string(slot) + " does not exist (scene " +
+                       run.scene().name + " has " + std::to_string(run.bodies_in_run()) +
+                       " bodies, 0.." + std::to_string(run.bodies_in_run() - 1) + ")");
+    }
+  }
+}
+
+/// Prints a warning per diverged body (the first 10, then a count) to stderr.
+void warn_divergences(const SceneRun& run) {
+  const std::vector<Divergence>& divergences = run.divergences();
+  for (std::size_t i = 0; i < divergences.size() && i < 10; ++i) {
+    std::cerr << "impulse2d: warning: " << describe_divergence(run.scene(), divergences[i])
+              << "\n";
+  }
+  if (divergences.size() > 10) {
+    std::cerr << "impulse2d: warning: ... and " << divergences.size() - 10
+              << " more divergences (--strict stops at the first)\n";
+  }
 }
 
 render::Theme theme_of(const std::string& name) {
@@ -75,6 +120,13 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
       arguments.frames ? *arguments.frames : resolved.scene.view.frames, resolved.steps);
   FrameSequenceOptions options;
   std::tie(options.width, options.height) = parse_size(arguments.size, "--size");
+  if (static_cast<std::int64_t>(options.width) * options.height > limits::max_frame_pixels) {
+    throw UsageError("--size " + arguments.size + ": " +
+                     std::to_string(static_cast<std::int64_t>(options.width) * options.height) +
+                     " pixels per frame; the limit is " + std::to_string(limits::max_frame_pixels) +
+                     " (4096x4096)");
+  }
+  options.clean = arguments.clean;
   options.draw = resolved.scene.view.draw;
   if (arguments.overlays) options.draw.flags = parse_overlays(*arguments.overlays);
   options.theme = theme_of(arguments.theme);
@@ -87,12 +139,14 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
     options.video = std::filesystem::path(*arguments.video);
   }
 
-  SceneRun run(resolved.scene, resolved.params);
+  const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
+  check_trails(options.trails, *run, "--trails");
   Progress progress(resolved.scene.name, static_cast<std::int64_t>(plan.frames.size()), stderr,
                     is_terminal(stderr));
   const FrameSequenceResult result =
-      render_frame_sequence(run, plan, options, [&](std::int64_t done) { progress.update(done); });
+      render_frame_sequence(*run, plan, options, [&](std::int64_t done) { progress.update(done); });
   progress.finish();
+  warn_divergences(*run);
   out << "wrote " << result.frame_count << " frames of " << resolved.scene.name << " to "
       << options.directory.string() << "/ (" << result.first_file.string() << " .. "
       << result.last_file.string() << ")";
@@ -109,8 +163,23 @@ void trace_scene(const TraceArguments& arguments, std::ostream& out) {
   } else if (arguments.format != "csv") {
     throw UsageError("--format '" + arguments.format + "': expected csv or json");
   }
-  SceneRun run(resolved.scene, resolved.params);
-  out << trace_run(run, resolved.steps, arguments.every, format);
+  const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
+  if (arguments.every < 1) throw UsageError("--every must be >= 1");
+  std::int64_t moving = 0;
+  for (const BodyId id : run->world().body_ids()) {
+    moving += run->world().body(id).type == BodyType::Static ? 0 : 1;
+  }
+  const std::int64_t samples = resolved.steps / arguments.every + 2;
+  if (moving > 0 && samples > limits::max_trace_rows / moving) {
+    throw UsageError("trace: --steps " + std::to_string(resolved.steps) + " --every " +
+                     std::to_string(arguments.every) + " would print about " +
+                     std::to_string(samples) + " samples of " + std::to_string(moving) +
+                     " bodies; the limit is " + std::to_string(limits::max_trace_rows) +
+                     " rows (raise --every or lower --steps)");
+  }
+  const std::string text = trace_run(*run, resolved.steps, arguments.every, format);
+  warn_divergences(*run);
+  out << text;
 }
 
 void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
@@ -133,8 +202,9 @@ void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
   if (output.extension() != ".png")
     throw UsageError("--out " + output.string() + ": must end in .png");
 
-  SceneRun run(resolved.scene, resolved.params);
-  const auto [width, height] = write_contact_sheet(run, plan, options, output);
+  const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
+  const auto [width, height] = write_contact_sheet(*run, plan, options, output);
+  warn_divergences(*run);
   out << "wrote a " << width << "x" << height << " contact sheet of " << plan.frames.size()
       << " frames of " << resolved.scene.name << " to " << output.string() << "\n";
 }

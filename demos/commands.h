@@ -17,6 +17,7 @@ struct SceneArguments {
   std::string scene;                  ///< built-in name or path to a .json file
   std::vector<std::string> params;    ///< "key=value" overrides
   std::optional<std::int64_t> steps;  ///< run length override
+  bool strict = false;                ///< a diverged body is an error, not a warning
 };
 
 /// `impulse2d render`.
@@ -30,6 +31,7 @@ struct RenderArguments {
   std::optional<std::string> video;     ///< .mp4 / .gif path
   int threads = 2;                      ///< PNG encoding threads
   std::optional<std::string> trails;    ///< `dynamic` or body indices with motion trails
+  bool clean = false;                   ///< replace frames of the same scene already in `out`
 };
 
 /// `impulse2d trace`.

@@ -8,6 +8,7 @@
 
 #include "demos/frame_sequence.h"
 #include "demos/output_guard.h"
+#include "demos/run_limits.h"
 #include "demos/scene_camera.h"
 #include "demos/usage_error.h"
 #include "render/frame_renderer.h"
@@ -47,8 +48,20 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
   const int columns = std::min(options.columns, count);
   const int rows = (count + columns - 1) / columns;
   const int cell_height = options.tile_height + label_height;
-  const int width = columns * options.tile_width;
-  const int height = title_height + rows * cell_height;
+  const std::int64_t width64 = static_cast<std::int64_t>(columns) * options.tile_width;
+  const std::int64_t height64 = title_height + static_cast<std::int64_t>(rows) * cell_height;
+  if (width64 > limits::max_sheet_side || height64 > limits::max_sheet_side ||
+      width64 * height64 > limits::max_sheet_pixels) {
+    throw UsageError("sheet: " + std::to_string(count) + " tiles of " +
+                     std::to_string(options.tile_width) + "x" + std::to_string(options.tile_height) +
+                     " in " + std::to_string(columns) + " columns make a " +
+                     std::to_string(width64) + "x" + std::to_string(height64) +
+                     " sheet; the limits are " + std::to_string(limits::max_sheet_side) +
+                     " pixels a side and " + std::to_string(limits::max_sheet_pixels) +
+                     " pixels in all (use a smaller --tile, fewer frames or other --columns)");
+  }
+  const int width = static_cast<int>(width64);
+  const int height = static_cast<int>(height64);
 
   render::FrameRenderer tiles(options.tile_width, options.tile_height);
   const render::Camera camera =

@@ -1,6 +1,7 @@
 /// @file frame_plan.cpp
 #include "demos/frame_plan.h"
 
+#include "demos/run_limits.h"
 #include "demos/usage_error.h"
 #include "render/render_error.h"
 
@@ -20,10 +21,13 @@ FramePlan plan_frames(const std::string& spec, std::int64_t run_steps) {
                      ", after the end of " + run);
   }
   FramePlan plan;
-  for (std::int64_t step = 0; step <= run_steps; ++step) {
-    if (selection.contains(step)) plan.frames.push_back(step);
-  }
+  plan.frames = selection.steps_up_to(run_steps, static_cast<std::size_t>(limits::max_frames));
   if (plan.frames.empty()) throw UsageError("--frames '" + spec + "' selects no step of " + run);
+  if (plan.frames.size() > static_cast<std::size_t>(limits::max_frames)) {
+    throw UsageError("--frames '" + spec + "' selects more than " +
+                     std::to_string(limits::max_frames) +
+                     " frames (the limit of one run); select fewer, e.g. with a stride A:B:k");
+  }
   plan.steps = plan.frames.back();
   return plan;
 }
@@ -31,7 +35,10 @@ FramePlan plan_frames(const std::string& spec, std::int64_t run_steps) {
 FramePlan spread_frames(int count, std::int64_t run_steps) {
   FramePlan plan;
   for (int i = 0; i < count; ++i) {
-    const std::int64_t step = count == 1 ? run_steps : run_steps * i / (count - 1);
+    // run_steps * i / (count - 1) without forming the product (no overflow for any run).
+    const std::int64_t parts = count - 1;
+    const std::int64_t step = count == 1 ? run_steps
+                                         : run_steps / parts * i + run_steps % parts * i / parts;
     if (plan.frames.empty() || plan.frames.back() != step) plan.frames.push_back(step);
   }
   plan.steps = plan.frames.back();

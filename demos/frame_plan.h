@@ -18,8 +18,9 @@ struct FramePlan {
 
 /// Parses `spec` (`A:B:k` ranges, see `render::FrameSelection`) and keeps the steps in
 /// 0..`run_steps`; the run is then cut short after the last selected step. Throws
-/// `UsageError` for a malformed spec, a range that ends after the run (naming both), or a
-/// selection with no step inside the run.
+/// `UsageError` for a malformed spec, a range that ends after the run (naming both), a
+/// selection with no step inside the run, or more than `limits::max_frames` frames. Costs
+/// time proportional to the frames selected, not to the run's length.
 FramePlan plan_frames(const std::string& spec, std::int64_t run_steps);
 
 /// `count` steps spread evenly over 0..`run_steps` (both ends included when count >= 2).

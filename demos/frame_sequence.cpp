@@ -5,7 +5,10 @@
 #include <cmath>
 #include <memory>
 
+#include "demos/interrupt.h"
 #include "demos/output_guard.h"
+#include "demos/output_staging.h"
+#include "demos/usage_error.h"
 #include "demos/scene_camera.h"
 #include "demos/video_encoder.h"
 #include "render/frame_renderer.h"
@@ -29,14 +32,17 @@ std::string scene_title(const Scene& scene) {
   return scene.view.caption.empty() ? scene.name : scene.name + " - " + scene.view.caption;
 }
 
-FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
-                                          const FrameSequenceOptions& options,
-                                          const FrameProgress& progress) {
-  const auto start = std::chrono::steady_clock::now();
-  OutputGuard guard;
-  guard.will_create_directory(options.directory);
+namespace {
+
+/// The rendering itself, into `staging`; publishes the frames on success.
+FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
+                                  const FrameSequenceOptions& options,
+                                  const FrameProgress& progress, OutputGuard& guard,
+                                  const std::vector<std::filesystem::path>& old_frames,
+                                  std::int64_t& frames_done) {
+  StagingDirectory staging(options.directory, run.scene().name);
   render::FrameWriterOptions writer_options;
-  writer_options.directory = options.directory;
+  writer_options.directory = staging.path();
   writer_options.scene_name = run.scene().name;
   writer_options.worker_threads = options.writer_threads;
   render::AsyncFrameWriter writer(writer_options);
@@ -70,20 +76,70 @@ FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
       run.step();
       if (!options.trails.empty()) record_trails(options.trails, run.world(), trails);
     }
+    check_interrupt();
     hud.frame = frame_step;
     render::Frame frame = writer.take_spare_frame();
     renderer.render(run.world(), frame_camera(camera, run), frame_options, hud, frame);
     if (video) video->add(frame);
-    const std::filesystem::path file = writer.path_for(frame_step);
-    guard.will_write_file(file);
+    const std::filesystem::path file =
+        render::frame_file_path(options.directory, run.scene().name, frame_step);
     if (result.frame_count == 0) result.first_file = file;
     result.last_file = file;
     writer.submit(frame_step, std::move(frame));
     ++result.frame_count;
+    frames_done = result.frame_count;
     if (progress) progress(result.frame_count);
   }
   writer.finish();
   if (video) video->finish();
+  check_interrupt();
+  // Success: from here on signals wait until the frames are in place.
+  std::error_code ignored;
+  for (const std::filesystem::path& old : old_frames) std::filesystem::remove(old, ignored);
+  staging.publish(guard);
+  return result;
+}
+
+}  // namespace
+
+FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
+                                          const FrameSequenceOptions& options,
+                                          const FrameProgress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<std::filesystem::path> old_frames =
+      existing_frames(options.directory, run.scene().name);
+  if (!old_frames.empty() && !options.clean) {
+    throw UsageError(options.directory.string() + "/ already holds " +
+                     std::to_string(old_frames.size()) + " frames of " + run.scene().name +
+                     " from an earlier run (" + old_frames.front().string() +
+                     " ..); pass --clean to replace them, or choose another --out");
+  }
+  OutputGuard guard;
+  guard.will_create_directory(options.directory);
+  std::error_code error;
+  std::filesystem::create_directories(options.directory, error);
+  if (error) {
+    throw std::runtime_error("cannot create the output directory " + options.directory.string() +
+                             ": " + error.message());
+  }
+  std::int64_t frames_done = 0;
+  FrameSequenceResult result;
+  try {
+    result = render_staged(run, plan, options, progress, guard, old_frames, frames_done);
+  } catch (...) {
+    const int signal_number = pending_signal();
+    if (signal_number == 0) throw;
+    std::string removed = "removed the " + std::to_string(frames_done) + " frames rendered so far";
+    if (options.video) removed += " and the unfinished video";
+    if (!guard.new_directories().empty()) {
+      removed += " and the directory " + guard.new_directories().front().string() +
+                 " this run created";
+    }
+    throw Interrupted(signal_number, "interrupted by " + signal_name(signal_number) + " after " +
+                                         std::to_string(frames_done) + " of " +
+                                         std::to_string(plan.frames.size()) + " frames: " +
+                                         removed + "; nothing that existed before was changed");
+  }
   guard.commit();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

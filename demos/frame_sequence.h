@@ -26,6 +26,7 @@ struct FrameSequenceOptions {
   std::optional<std::filesystem::path> video;  ///< also encode an .mp4 / .gif here
   int writer_threads = 2;                      ///< PNG encoding threads
   TrailSelection trails;                       ///< bodies whose recent path is drawn
+  bool clean = false;  ///< replace frames of the same scene already in `directory`
 };
 
 /// What was written.
@@ -39,9 +40,13 @@ struct FrameSequenceResult {
 /// Called after each frame with the number of frames finished.
 using FrameProgress = std::function<void(std::int64_t frames_done)>;
 
-/// Steps `run` to `plan.steps`, rendering each planned step. On any failure (unwritable
-/// directory, renderer, a scene event) every file and directory this call created is removed
-/// and the exception is rethrown; files that existed before are never removed.
+/// Steps `run` to `plan.steps`, rendering each planned step into a staging directory inside
+/// `options.directory`, and moves the frames into place only when every frame (and the
+/// video) succeeded. Throws `UsageError` before any work when the directory already holds
+/// frames of the scene and `options.clean` is off (with it, they are removed just before the
+/// new frames move in). On any failure (unwritable directory, renderer, a scene event, a
+/// signal: `Interrupted` saying what was removed) every file and directory this call created
+/// is removed; files that existed before are never touched.
 FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
                                           const FrameSequenceOptions& options,
                                           const FrameProgress& progress);

@@ -2,7 +2,9 @@
 #include "demos/json_cursor.h"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <set>
 
 #include "demos/usage_error.h"
 
@@ -85,6 +87,31 @@ float JsonCursor::positive() const {
   return number;
 }
 
+float JsonCursor::in_range(float minimum, float maximum, const std::string& why) const {
+  const float number = real();
+  if (!(number >= minimum && number <= maximum)) {
+    fail("must be in " + compact_number(minimum) + ".." + compact_number(maximum) + " (" + why +
+         "), got " + value_->dump());
+  }
+  return number;
+}
+
+float JsonCursor::magnitude_at_most(float maximum, const std::string& why) const {
+  return in_range(-maximum, maximum, why);
+}
+
+vec2 JsonCursor::vector_at_most(float maximum, const std::string& why) const {
+  if (!value_->is_array() || value_->size() != 2) fail_type("[x, y] (an array of 2 numbers)");
+  return vec2(element(0).magnitude_at_most(maximum, why),
+              element(1).magnitude_at_most(maximum, why));
+}
+
+std::string compact_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 float JsonCursor::non_negative() const {
   const float number = real();
   if (!(number >= 0.0f)) fail("must be >= 0, got " + value_->dump());
@@ -145,6 +172,8 @@ namespace {
 /// happened (nlohmann's DOM parser gives the byte position alone).
 class PathTracker : public nlohmann::json_sax<json> {
  public:
+  /// Tracks the parse of `file` (named in the duplicate-key error).
+  explicit PathTracker(std::string file) : file_(std::move(file)) {}
   bool null() override { return value(); }
   bool boolean(bool) override { return value(); }
   bool number_integer(number_integer_t) override { return value(); }
@@ -155,6 +184,11 @@ class PathTracker : public nlohmann::json_sax<json> {
   bool start_object(std::size_t) override { return open(false); }
   bool key(string_t& name) override {
     levels_.back().key = name;
+    // nlohmann keeps the last of two equal keys: "radius": -1, "radius": 1 would pass.
+    if (!levels_.back().keys.insert(name).second) {
+      throw UsageError(file_ + ": " + current_path() + ": duplicate key \"" + name +
+                       "\" (a key may appear once per object)");
+    }
     return true;
   }
   bool end_object() override { return close(); }
@@ -180,6 +214,7 @@ class PathTracker : public nlohmann::json_sax<json> {
     bool array = false;
     std::size_t started = 0;  // elements begun so far (arrays)
     std::string key;          // the member being read (objects)
+    std::set<std::string> keys;  // every key seen so far (objects)
   };
   bool value() {
     if (!levels_.empty() && levels_.back().array) ++levels_.back().started;
@@ -187,7 +222,7 @@ class PathTracker : public nlohmann::json_sax<json> {
   }
   bool open(bool array) {
     value();
-    levels_.push_back(Level{array, 0, ""});
+    levels_.push_back(Level{array, 0, "", {}});
     return true;
   }
   bool close() {
@@ -211,6 +246,7 @@ class PathTracker : public nlohmann::json_sax<json> {
     return path.empty() ? "(root)" : path;
   }
 
+  std::string file_;
   std::vector<Level> levels_;
   std::size_t error_position_ = 0;
   std::string error_message_;
@@ -235,7 +271,7 @@ std::string plain_message(std::string message) {
 }  // namespace
 
 json parse_json_document(const std::string& text, const std::string& file) {
-  PathTracker tracker;
+  PathTracker tracker(file);
   if (!json::sax_parse(text, &tracker)) {
     // nlohmann counts the byte that stopped it, 1-based; locate it in lines and columns.
     const std::size_t stop =

@@ -51,6 +51,12 @@ class JsonCursor {
   float positive() const;
   /// A finite number >= 0.
   float non_negative() const;
+  /// A number in [minimum, maximum]; the failure names the range and `why` it is the range.
+  float in_range(float minimum, float maximum, const std::string& why) const;
+  /// A number in [-maximum, maximum]; the failure names the range and `why`.
+  float magnitude_at_most(float maximum, const std::string& why) const;
+  /// [x, y] with each component in [-maximum, maximum]; the failure names the range and `why`.
+  vec2 vector_at_most(float maximum, const std::string& why) const;
   /// A whole number in [minimum, maximum].
   std::int64_t integer(std::int64_t minimum, std::int64_t maximum) const;
   /// true or false.
@@ -82,8 +88,12 @@ class JsonCursor {
 
 /// Parses `text` (the contents of `file`). Throws `UsageError` "<file>: <path>: malformed
 /// JSON: <reason> at line L, column C" naming the JSON path where parsing stopped (which
-/// also catches NaN, Infinity and numbers too large for a double).
+/// also catches NaN, Infinity and numbers too large for a double), and "<file>: <path>:
+/// duplicate key" when an object repeats a key.
 nlohmann::json parse_json_document(const std::string& text, const std::string& file);
+
+/// `value` in printf's %g form ("0.001", "1e+06") for messages.
+std::string compact_number(double value);
 
 /// "string \"abc\"", "number 3", "object", ... for messages.
 std::string describe_json_value(const nlohmann::json& value);

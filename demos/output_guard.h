@@ -22,6 +22,8 @@ class OutputGuard {
   void will_create_directory(const std::filesystem::path& directory);
   /// Call before writing `file`: it is removed on failure unless it existed before.
   void will_write_file(const std::filesystem::path& file);
+  /// The directories this job will remove on failure (outermost first).
+  const std::vector<std::filesystem::path>& new_directories() const { return new_directories_; }
   /// The job succeeded: keep everything.
   void commit() { committed_ = true; }
 

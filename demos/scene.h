@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -69,6 +70,7 @@ struct Scene {
   ScriptFactory script;             ///< optional per-step behaviour (empty: none)
   std::vector<SceneEvent> events;   ///< scripted events, any order (sorted by the run)
   std::string source = "built-in";  ///< "built-in" or the scene file's path
+  std::map<int, std::string> body_names;  ///< creation index -> name given in the scene file
 };
 
 }  // namespace impulse2d::demos

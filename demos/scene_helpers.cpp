@@ -30,7 +30,7 @@ Shape random_convex_polygon(SceneRandom& random, float radius) {
   std::array<vec2, max_polygon_vertices> vertices{};
   for (int i = 0; i < count; ++i) {
     const float angle = (static_cast<float>(i) + random.uniform(0.15f, 0.85f)) * sector;
-    vertices[static_cast<std::size_t>(i)] = radius * vec2(std::cos(angle), std::sin(angle));
+    vertices[static_cast<std::size_t>(i)] = radius * Rotation::from_angle(angle).x_axis();
   }
   return make_polygon(vertices.data(), count);
 }

@@ -13,6 +13,7 @@
 #include "demos/character_script.h"
 #include "demos/json_cursor.h"
 #include "demos/overlays.h"
+#include "demos/scene_limits.h"
 #include "demos/usage_error.h"
 #include "render/frame_selection.h"
 #include "render/render_error.h"
@@ -35,8 +36,13 @@ WorldSettings read_settings(const JsonCursor& node) {
                    "max_linear_speed", "contact_hertz", "contact_damping_ratio",
                    "contact_push_max_speed", "speculative_margin"});
   WorldSettings settings;
-  if (auto field = node.optional_field("gravity")) settings.gravity = field->vector();
-  if (auto field = node.optional_field("time_step")) settings.time_step = field->positive();
+  if (auto field = node.optional_field("gravity")) {
+    settings.gravity = field->vector_at_most(limits::max_gravity, limits::gravity_reason);
+  }
+  if (auto field = node.optional_field("time_step")) {
+    settings.time_step = field->in_range(limits::min_time_step, limits::max_time_step,
+                                         limits::time_step_reason);
+  }
   if (auto field = node.optional_field("substeps"))
     settings.substeps = static_cast<int>(field->integer(1, 64));
   if (auto field = node.optional_field("solver")) {
@@ -102,8 +108,9 @@ WorldSettings read_settings(const JsonCursor& node) {
     settings.sleep_angular_speed = field->non_negative();
   if (auto field = node.optional_field("time_to_sleep"))
     settings.time_to_sleep = field->non_negative();
-  if (auto field = node.optional_field("max_linear_speed"))
-    settings.max_linear_speed = field->positive();
+  if (auto field = node.optional_field("max_linear_speed")) {
+    settings.max_linear_speed = field->in_range(1e-3f, limits::max_speed, limits::speed_reason);
+  }
   try {
     validate_settings(settings);
   } catch (const Error& error) {
@@ -151,7 +158,12 @@ Material read_material_object(const JsonCursor& node, const std::string& name) {
   node.allow_only({"density", "restitution", "static_friction", "dynamic_friction"});
   Material material;
   material.name = name;
-  material.density = node.field("density").non_negative();
+  const JsonCursor density = node.field("density");
+  material.density = density.non_negative();
+  if (material.density != 0.0f) {
+    material.density =
+        density.in_range(limits::min_density, limits::max_density, limits::density_reason);
+  }
   material.restitution = node.field("restitution").non_negative();
   material.static_friction = node.field("static_friction").non_negative();
   material.dynamic_friction = node.field("dynamic_friction").non_negative();
@@ -177,6 +189,18 @@ Material read_body_material(const JsonCursor& node, const MaterialTable& table) 
   return found->second;
 }
 
+/// True for a name usable as the prefix of output files: [A-Za-z0-9_.-], not starting with
+/// '.', 1..64 characters (so never "." or "..").
+bool is_file_name_prefix(const std::string& name) {
+  if (name.empty() || name.size() > 64 || name.front() == '.') return false;
+  for (const char c : name) {
+    const bool allowed = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                         (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+    if (!allowed) return false;
+  }
+  return true;
+}
+
 /// The shape, and the offset from the body's given position to its centre of mass (non-zero
 /// only for polygons whose vertices are not centred on the origin), body-local.
 struct ReadShape {
@@ -190,12 +214,15 @@ ReadShape read_shape(const JsonCursor& node) {
   ReadShape result;
   if (name == "circle") {
     node.allow_only({"type", "radius"});
-    result.shape = make_circle(node.field("radius").positive());
+    result.shape = make_circle(
+        node.field("radius").in_range(limits::min_size, limits::max_size, limits::size_reason));
   } else if (name == "box" || name == "oriented_box") {
     node.allow_only({"type", "half_extents"});
     const JsonCursor extents = node.field("half_extents");
-    const vec2 half = extents.vector();
-    if (!(half.x > 0.0f && half.y > 0.0f)) extents.fail("both half extents must be > 0");
+    if (extents.size() != 2) extents.fail("expected [half width, half height]");
+    const vec2 half(
+        extents.element(0).in_range(limits::min_size, limits::max_size, limits::size_reason),
+        extents.element(1).in_range(limits::min_size, limits::max_size, limits::size_reason));
     result.shape = name == "box" ? make_box(half) : make_oriented_box(half);
   } else if (name == "polygon") {
     node.allow_only({"type", "vertices"});
@@ -206,7 +233,16 @@ ReadShape read_shape(const JsonCursor& node) {
                 std::to_string(count));
     }
     std::vector<vec2> vertices;
-    for (std::size_t i = 0; i < count; ++i) vertices.push_back(list.element(i).vector());
+    vec2 lower(limits::max_size), upper(-limits::max_size);
+    for (std::size_t i = 0; i < count; ++i) {
+      vertices.push_back(list.element(i).vector_at_most(limits::max_size, limits::size_reason));
+      lower = glm::min(lower, vertices.back());
+      upper = glm::max(upper, vertices.back());
+    }
+    if (!(upper.x - lower.x >= limits::min_size && upper.y - lower.y >= limits::min_size)) {
+      list.fail("the polygon must be at least " + compact_number(limits::min_size) +
+                " m wide and high (" + limits::size_reason + ")");
+    }
     try {
       result.shape = make_polygon(vertices.data(), static_cast<int>(count), &result.centroid);
     } catch (const Error& error) {
@@ -232,16 +268,33 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   }
   const ReadShape shape = read_shape(node.field("shape"));
   body.shape = shape.shape;
-  const vec2 origin = node.field("position").vector();
-  if (auto field = node.optional_field("angle")) def.angle = field->real();
+  const vec2 origin =
+      node.field("position").vector_at_most(limits::max_coordinate, limits::coordinate_reason);
+  if (auto field = node.optional_field("angle")) {
+    def.angle = field->magnitude_at_most(1e4f, "rad");
+    if (def.angle != 0.0f && body.shape.type == ShapeType::Box) {
+      field->fail("a \"box\" is axis-aligned and never rotates, so its angle would be lost; "
+                  "use \"type\": \"oriented_box\" for a rotated box");
+    }
+  }
   def.position = origin + Rotation::from_angle(def.angle).rotate(shape.centroid);
-  if (auto field = node.optional_field("velocity")) def.linear_velocity = field->vector();
-  if (auto field = node.optional_field("angular_velocity")) def.angular_velocity = field->real();
-  if (auto field = node.optional_field("gravity_scale")) def.gravity_scale = field->real();
+  if (auto field = node.optional_field("velocity")) {
+    def.linear_velocity = field->vector_at_most(limits::max_speed, limits::speed_reason);
+  }
+  if (auto field = node.optional_field("angular_velocity")) {
+    def.angular_velocity = field->magnitude_at_most(limits::max_speed, limits::speed_reason);
+    if (def.angular_velocity != 0.0f && body.shape.type == ShapeType::Box) {
+      field->fail("a \"box\" is axis-aligned and never rotates, so its spin would be lost; "
+                  "use \"type\": \"oriented_box\" for a spinning box");
+    }
+  }
+  if (auto field = node.optional_field("gravity_scale")) {
+    def.gravity_scale = field->magnitude_at_most(limits::max_gravity_scale, "times gravity");
+  }
   if (auto field = node.optional_field("linear_damping"))
-    def.linear_damping = field->non_negative();
+    def.linear_damping = field->in_range(0.0f, limits::max_damping, "1/s");
   if (auto field = node.optional_field("angular_damping"))
-    def.angular_damping = field->non_negative();
+    def.angular_damping = field->in_range(0.0f, limits::max_damping, "1/s");
   if (auto field = node.optional_field("fixed_rotation")) def.fixed_rotation = field->boolean();
   if (auto field = node.optional_field("bullet")) def.is_bullet = field->boolean();
   if (auto field = node.optional_field("one_way")) {
@@ -294,15 +347,17 @@ CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
   } else if (auto bounds = node.optional_field("bounds")) {
     if (bounds->size() != 2) bounds->fail("expected [[min x, min y], [max x, max y]]");
     camera.mode = CameraSpec::Mode::FitBounds;
-    camera.bounds.lower = bounds->element(0).vector();
-    camera.bounds.upper = bounds->element(1).vector();
+    camera.bounds.lower =
+        bounds->element(0).vector_at_most(limits::max_coordinate, limits::coordinate_reason);
+    camera.bounds.upper =
+        bounds->element(1).vector_at_most(limits::max_coordinate, limits::coordinate_reason);
     if (!(camera.bounds.upper.x > camera.bounds.lower.x &&
           camera.bounds.upper.y > camera.bounds.lower.y)) {
       bounds->fail("the second corner must be above and right of the first");
     }
   } else if (auto center = node.optional_field("center")) {
     camera.mode = CameraSpec::Mode::Centered;
-    camera.center = center->vector();
+    camera.center = center->vector_at_most(limits::max_coordinate, limits::coordinate_reason);
     camera.pixels_per_metre = node.field("pixels_per_metre").positive();
   }
   return camera;
@@ -354,9 +409,14 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   scene.name = std::filesystem::path(file).stem().string();
   if (auto field = root.optional_field("name")) {
     scene.name = field->string();
-    if (scene.name.empty() || scene.name.find_first_of("/\\") != std::string::npos) {
-      field->fail("must be a non-empty file-name prefix (no '/')");
+    if (!is_file_name_prefix(scene.name)) {
+      field->fail("must be a file-name prefix: letters, digits, '_', '-' and '.', not starting "
+                  "with '.', at most 64 characters");
     }
+  }
+  if (!root.has("name") && !is_file_name_prefix(scene.name)) {
+    root.fail("the file name gives the scene the name \"" + scene.name +
+              "\", which cannot prefix output files; add a \"name\" field");
   }
   scene.description = "scene file " + file;
   if (auto field = root.optional_field("description")) scene.description = field->string();
@@ -428,10 +488,15 @@ Scene parse_scene(const std::string& text, const std::string& file) {
         case SceneEventKind::Impulse:
           node.allow_only({"step", "type", "body", "impulse", "point", "angular_impulse"});
           event.body = read_body_reference(node.field("body"), names);
-          event.impulse = node.field("impulse").vector();
-          if (auto point = node.optional_field("point")) event.point = point->vector();
-          if (auto angular = node.optional_field("angular_impulse"))
-            event.angular_impulse = angular->real();
+          event.impulse =
+              node.field("impulse").vector_at_most(limits::max_impulse, limits::impulse_reason);
+          if (auto point = node.optional_field("point")) {
+            event.point = point->vector_at_most(limits::max_coordinate, limits::coordinate_reason);
+          }
+          if (auto angular = node.optional_field("angular_impulse")) {
+            event.angular_impulse =
+                angular->magnitude_at_most(limits::max_impulse, limits::impulse_reason);
+          }
           break;
         case SceneEventKind::Spawn:
           node.allow_only({"step", "type", "body"});
@@ -473,7 +538,16 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     for (const BodySpawn& body : spawned) cover(body);
   }
 
-  if (auto field = root.optional_field("camera")) scene.view.camera = read_camera(*field, names);
+  if (auto field = root.optional_field("camera")) {
+    scene.view.camera = read_camera(*field, names);
+    const std::size_t created = bodies.size() + spawned.size();
+    if (scene.view.camera.mode == CameraSpec::Mode::Follow && scene.view.camera.follow_body >= 0 &&
+        static_cast<std::size_t>(scene.view.camera.follow_body) >= created) {
+      field->field("follow").fail("body " + std::to_string(scene.view.camera.follow_body) +
+                                  " does not exist (the scene creates " + std::to_string(created) +
+                                  " bodies, indices 0.." + std::to_string(created) + " - 1)");
+    }
+  }
   if (auto field = root.optional_field("character")) {
     const CharacterDef character = read_character(*field);
     // The character is an axis-aligned box: an inferred model grows to include it, a declared
@@ -507,6 +581,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     }
   }
 
+  for (const auto& [name, index] : names) scene.body_names[index] = name;
   scene.build = [bodies](World& world, const Params&) {
     for (const BodySpawn& body : bodies) world.create_body(body.def, body.shape);
   };
@@ -514,8 +589,22 @@ Scene parse_scene(const std::string& text, const std::string& file) {
 }
 
 Scene load_scene_file(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) {
+    throw UsageError(path + ": cannot open the scene file (does it exist?)");
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    throw UsageError(path + ": not a regular file (a scene file must be a plain .json file)");
+  }
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (!error && bytes > static_cast<std::uintmax_t>(limits::max_scene_file_bytes)) {
+    throw UsageError(path + ": the scene file has " + std::to_string(bytes) +
+                     " bytes; the limit is " + std::to_string(limits::max_scene_file_bytes) +
+                     " (4 MiB)");
+  }
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw UsageError(path + ": cannot open the scene file (does it exist?)");
+  if (!file) throw UsageError(path + ": cannot open the scene file (permission denied?)");
   std::ostringstream text;
   text << file.rdbuf();
   if (file.bad()) throw UsageError(path + ": cannot read the scene file");

@@ -2,7 +2,10 @@
 #include "demos/scene_run.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
+#include "demos/interrupt.h"
 #include "demos/usage_error.h"
 
 namespace impulse2d::demos {
@@ -19,7 +22,7 @@ WorldSettings settings_with_model(const Scene& scene) {
 SceneRun::SceneRun(const Scene& scene, const Params& params)
     : scene_(scene), params_(params), world_(settings_with_model(scene)) {
   if (scene.build) scene.build(world_, params_);
-  verify_shape_kinds(scene.model, world_, scene.name);
+  verify_model();
   if (scene.script) script_ = scene.script(params_);
 
   for (const SceneEvent& event : scene.events) events_.push_back(&event);
@@ -48,6 +51,17 @@ SceneRun::SceneRun(const Scene& scene, const Params& params)
                        " has no button '" + event->button +
                        "' (its buttons: " + (known.empty() ? std::string("none") : known) + ")");
     }
+  }
+  bodies_in_run_ = bodies_so_far;
+}
+
+void SceneRun::verify_model() const {
+  try {
+    verify_shape_kinds(scene_.model, world_, scene_.name);
+  } catch (const UsageError& error) {
+    if (scene_.source == "built-in") throw;
+    throw UsageError(scene_.source + ": " + error.what() + " (at step " +
+                     std::to_string(world_.step_count()) + ")");
   }
 }
 
@@ -92,8 +106,27 @@ void SceneRun::step() {
     script_->before_step(world_, step);
     changed = true;
   }
-  if (changed) verify_shape_kinds(scene_.model, world_, scene_.name);
+  if (changed) verify_model();
+  check_interrupt();
   world_.step();
+  for (const BodyId id : world_.diverged_bodies()) {
+    const auto found = std::find(created_.begin(), created_.end(), id);
+    const int index = found == created_.end() ? -1 : static_cast<int>(found - created_.begin());
+    const auto name = scene_.body_names.find(index);
+    divergences_.push_back(Divergence{world_.step_count(), index,
+                                      name == scene_.body_names.end() ? "" : name->second});
+    if (strict_) {
+      throw std::runtime_error(describe_divergence(scene_, divergences_.back()) +
+                               " (--strict makes this an error)");
+    }
+  }
+}
+
+std::string describe_divergence(const Scene& scene, const Divergence& divergence) {
+  return scene.source + ": body " + std::to_string(divergence.body) +
+         (divergence.name.empty() ? "" : " (\"" + divergence.name + "\")") + " of scene " +
+         scene.name + " diverged in step " + std::to_string(divergence.step) +
+         " (its state became non-finite; the world restored its previous state and stopped it)";
 }
 
 std::optional<vec2> SceneRun::followed_position() const {

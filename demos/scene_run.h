@@ -14,6 +14,13 @@
 
 namespace impulse2d::demos {
 
+/// A body whose state became non-finite in a step (the world restored and stopped it).
+struct Divergence {
+  std::int64_t step = 0;  ///< the step it diverged in (1 = the first step)
+  int body = -1;          ///< creation index (the scene's bodies in order, then spawned ones)
+  std::string name;       ///< its name in the scene file, or empty
+};
+
 /// Builds a scene's world and steps it.
 class SceneRun {
  public:
@@ -33,9 +40,18 @@ class SceneRun {
   const Params& params() const { return params_; }
 
   /// Applies the events of step `step_count()`, runs the script's `before_step`, takes one
-  /// world step and checks the shape kinds of any new body. Throws `UsageError` naming the
-  /// event when it refers to a body that was removed.
+  /// world step, checks the shape kinds of any new body and records diverged bodies. Throws
+  /// `UsageError` naming the event when it refers to a body that was removed, and
+  /// `Interrupted` when SIGINT, SIGTERM or SIGHUP arrived.
   void step();
+
+  /// With `strict`, `step` throws `std::runtime_error` naming the first body that diverges
+  /// (the command line's `--strict`); without, divergences are only recorded.
+  void set_strict(bool strict) { strict_ = strict; }
+  /// Every body that diverged so far, in step order.
+  const std::vector<Divergence>& divergences() const { return divergences_; }
+  /// Creation indices that can exist in this run: the built bodies plus the spawn events.
+  int bodies_in_run() const { return bodies_in_run_; }
 
   /// Where a following camera looks now: the followed body's position, or nothing when the
   /// scene's camera does not follow or the body does not exist (yet).
@@ -48,6 +64,7 @@ class SceneRun {
 
  private:
   void apply_event(const SceneEvent& event);
+  void verify_model() const;  // verify_shape_kinds, naming the scene file
   BodyId event_body(const SceneEvent& event) const;
 
   const Scene& scene_;
@@ -57,6 +74,12 @@ class SceneRun {
   std::vector<const SceneEvent*> events_;  // sorted by step, stable for equal steps
   std::size_t next_event_ = 0;
   std::vector<BodyId> created_;  // creation index -> handle
+  std::vector<Divergence> divergences_;
+  int bodies_in_run_ = 0;
+  bool strict_ = false;
 };
+
+/// "body 3 (\"ball\") diverged in step 120 (its state became non-finite; ...)" for messages.
+std::string describe_divergence(const Scene& scene, const Divergence& divergence);
 
 }  // namespace impulse2d::demos

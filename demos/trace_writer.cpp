@@ -1,6 +1,7 @@
 /// @file trace_writer.cpp
 #include "demos/trace_writer.h"
 
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -9,8 +10,10 @@
 namespace impulse2d::demos {
 namespace {
 
-/// `value` with 9 significant digits (round-trips a float).
-std::string number(double value) {
+/// `value` with 9 significant digits (round-trips a float); in JSON, which has no NaN or
+/// infinity, a non-finite value is `null`.
+std::string number(double value, TraceFormat format = TraceFormat::Csv) {
+  if (format == TraceFormat::Json && !std::isfinite(value)) return "null";
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", value);
   return text;
@@ -18,9 +21,9 @@ std::string number(double value) {
 
 void append_sample(const World& world, TraceFormat format, std::string& out, bool first_sample) {
   const std::string step = std::to_string(world.step_count());
-  const std::string time = number(world.time());
+  const std::string time = number(world.time(), format);
   const std::string contacts = std::to_string(world.contacts().size());
-  const std::string energy = number(mechanical_energy(world));
+  const std::string energy = number(mechanical_energy(world), format);
   if (format == TraceFormat::Json) {
     out += first_sample ? "\n    " : ",\n    ";
     out += "{\"step\": " + step + ", \"t\": " + time + ", \"contacts\": " + contacts +
@@ -30,12 +33,12 @@ void append_sample(const World& world, TraceFormat format, std::string& out, boo
   for (const BodyId id : world.body_ids()) {
     const Body& body = world.body(id);
     if (body.type == BodyType::Static) continue;
-    const std::string values[] = {number(body.transform.position.x),
-                                  number(body.transform.position.y),
-                                  number(body.angle),
-                                  number(body.linear_velocity.x),
-                                  number(body.linear_velocity.y),
-                                  number(body.angular_velocity)};
+    const std::string values[] = {number(body.transform.position.x, format),
+                                  number(body.transform.position.y, format),
+                                  number(body.angle, format),
+                                  number(body.linear_velocity.x, format),
+                                  number(body.linear_velocity.y, format),
+                                  number(body.angular_velocity, format)};
     if (format == TraceFormat::Csv) {
       out += step + "," + time + "," + std::to_string(id.index);
       for (const std::string& value : values) out += "," + value;

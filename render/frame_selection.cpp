@@ -92,4 +92,20 @@ std::optional<std::int64_t> FrameSelection::last() const {
   return result;
 }
 
+std::vector<std::int64_t> FrameSelection::steps_up_to(std::int64_t last_step,
+                                                     std::size_t max_count) const {
+  std::vector<std::int64_t> steps;
+  for (const Range& range : ranges_) {
+    const std::int64_t end = range.last ? std::min(*range.last, last_step) : last_step;
+    for (std::int64_t step = range.first; step <= end && steps.size() <= max_count;
+         step = step > end - range.stride ? end + 1 : step + range.stride) {
+      steps.push_back(step);
+    }
+    std::sort(steps.begin(), steps.end());
+    steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+  }
+  if (steps.size() > max_count + 1) steps.resize(max_count + 1);
+  return steps;
+}
+
 }  // namespace impulse2d::render

@@ -26,6 +26,10 @@ class FrameSelection {
   bool contains(std::int64_t step) const;
   /// The last selected step, or nothing when some range has no end.
   std::optional<std::int64_t> last() const;
+  /// The selected steps in 0..`last_step`, ascending, without repeats; at most `max_count`
+  /// of them (more would be a request too large to honour: the caller gets `max_count` + 1
+  /// steps and reports it). Cost proportional to the steps returned, not to `last_step`.
+  std::vector<std::int64_t> steps_up_to(std::int64_t last_step, std::size_t max_count) const;
 
  private:
   struct Range {

@@ -9,6 +9,7 @@ packages=(
   libosmesa6-dev libglm-dev libstb-dev libgtest-dev
   nlohmann-json3-dev libcli11-dev libdeflate-dev zlib1g-dev
   gnuplot-nox libbox2d-dev libchipmunk-dev
+  clang libclang-rt-14-dev
 )
 
 missing=()

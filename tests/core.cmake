@@ -21,3 +21,8 @@ impulse2d_add_test(test_step_allocations
 impulse2d_add_test(test_soft_step
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_soft_step.cpp
   LIBS impulse2d_core)
+# The engine's own cos/sin and the speed clamp.
+impulse2d_add_test(test_trig
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_trig.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_speed_clamp.cpp
+  LIBS impulse2d_core)

@@ -3,6 +3,7 @@
 impulse2d_add_test(test_demos
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_scenes.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_scene_files.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_divergence.cpp
   LIBS impulse2d_demos)
 target_compile_definitions(test_demos PRIVATE IMPULSE2D_SCENES_DIR="${PROJECT_SOURCE_DIR}/demos/scenes")
 impulse2d_add_test(test_cli
@@ -10,3 +11,17 @@ impulse2d_add_test(test_cli
   LIBS impulse2d_demos)
 target_compile_definitions(test_cli PRIVATE IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>")
 add_dependencies(test_cli impulse2d)
+# The bad-input catalogue: a table of broken scene files and command lines (data in
+# tests/bad_inputs/catalogue.json), one ctest test per case.
+impulse2d_add_test(test_bad_input_catalogue
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_input_catalogue.cpp
+  LIBS impulse2d_demos)
+target_compile_definitions(test_bad_input_catalogue PRIVATE
+  IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>"
+  IMPULSE2D_CATALOGUE="${CMAKE_CURRENT_SOURCE_DIR}/bad_inputs/catalogue.json")
+add_dependencies(test_bad_input_catalogue impulse2d)
+# Determinism across compilers: pinned final state hashes of long runs (checked in the GCC
+# build and in scripts/test.sh's Clang build).
+impulse2d_add_test(test_cross_build_hash
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cross_build_hash.cpp
+  LIBS impulse2d_demos)

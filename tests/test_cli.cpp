@@ -260,7 +260,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{
             "NegativeRadius",
             R"({"bodies": [{"shape": {"type": "circle", "radius": -0.5}, "position": [0, 0]}]})",
-            "render bad.json", 2, "bad.json: bodies[0].shape.radius: must be > 0, got -0.5"},
+            "render bad.json", 2, "bad.json: bodies[0].shape.radius: must be in 0.001..1000 (m; below 1 mm"},
         BadInput{
             "NegativeDensity",
             R"({"materials": {"Foam": {"density": -1, "restitution": 0, "static_friction": 0, "dynamic_friction": 0}},
@@ -319,4 +319,50 @@ TEST_F(CliTest, AFailedRunKeepsFilesThatExistedBefore) {
   const Result result = run("render bad.json --size 64x64 --frames 0:10");
   EXPECT_EQ(result.status, 2);
   EXPECT_EQ(files(), (std::vector<std::string>{"bad.json", "out/keep.txt"}));
+}
+
+// Interrupting a render removes everything it created, exits 128 + signal and says so in
+// one line; an earlier run's frames of another scene stay as they were.
+TEST_F(CliTest, SignalsStopARenderAndRemoveWhatItCreated) {
+  for (const auto& [signal, status] : {std::pair<const char*, int>{"TERM", 143}, {"INT", 130},
+                                       {"HUP", 129}}) {
+    fs::create_directories(dir_ / "frames");
+    write_file(dir_ / "frames" / "other_00000.png", "keep");
+    const std::string command =
+        "cd '" + dir_.string() + "' && ('" IMPULSE2D_CLI "' render tutorial --steps 50000 "
+        "--frames ::1 --size 320x240 --out frames/new > out.txt 2> err.txt & pid=$!; sleep 1.5; "
+        "kill -" + signal + " $pid; wait $pid; echo $? > status.txt)";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    EXPECT_EQ(std::stoi(read_file(dir_ / "status.txt")), status) << signal;
+    const std::string err = read_file(dir_ / "err.txt");
+    EXPECT_NE(err.find(std::string("impulse2d: interrupted by SIG") + signal), std::string::npos)
+        << err;
+    EXPECT_NE(err.find("removed the"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(dir_ / "frames" / "new")) << signal;
+    EXPECT_EQ(read_file(dir_ / "frames" / "other_00000.png"), "keep");
+    for (const char* name : {"status.txt", "out.txt", "err.txt"}) fs::remove(dir_ / name);
+  }
+}
+
+// A second render into the same folder refuses to mix its frames with the earlier ones;
+// --clean replaces them, and only when the new run succeeded.
+TEST_F(CliTest, RerenderingNeedsCleanAndReplacesOnlyOnSuccess) {
+  ASSERT_EQ(run("render pyramid --param rows=3 --frames 0:20:10 --size 64x64 --out f").status, 0);
+  const std::string first = read_file(dir_ / "f/pyramid_00010.png");
+  const Result again = run("render pyramid --param rows=3 --frames 0:20:10 --size 64x64 --out f");
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.err.find("f/ already holds 3 frames of pyramid"), std::string::npos) << again.err;
+  const Result clean =
+      run("render pyramid --param rows=3 --frames 0:10:10 --size 80x80 --out f --clean");
+  EXPECT_EQ(clean.status, 0) << clean.err;
+  EXPECT_EQ(files().size(), 2u);  // the old 00020 frame went with --clean
+  EXPECT_NE(read_file(dir_ / "f/pyramid_00010.png"), first);
+}
+
+// A stale staging directory of a SIGKILLed run (its process is gone) is removed by the next run.
+TEST_F(CliTest, StagingLeftByAKilledRunIsRemovedByTheNextRun) {
+  fs::create_directories(dir_ / "f" / ".impulse2d-staging-pyramid-999999999");
+  write_file(dir_ / "f" / ".impulse2d-staging-pyramid-999999999" / "pyramid_00000.png", "half");
+  ASSERT_EQ(run("render pyramid --param rows=3 --frames 0 --size 64x64 --out f").status, 0);
+  EXPECT_EQ(files(), std::vector<std::string>{"f/pyramid_00000.png"});
 }

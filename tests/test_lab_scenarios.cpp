@@ -88,7 +88,10 @@ TEST(LabScenarios, BadFilesNameFilePathAndReason) {
   const std::string bad_scene = failure_of(R"({"description": "d", "answer": "a", "duration": 1,
       "metric": {"kind": "rest", "unit": "m", "threshold": 1, "meaning": "m"},
       "scene": {"bodies": [{"shape": {"type": "circle", "radius": -1}, "position": [0, 0]}]}})");
-  EXPECT_EQ(bad_scene, "bad.json (scene): bodies[0].shape.radius: must be > 0, got -1");
+  EXPECT_EQ(bad_scene,
+            "bad.json (scene): bodies[0].shape.radius: must be in 0.001..1000 (m; below 1 mm the "
+            "solver's 1 cm slop swallows the body, above 1 km float positions lose millimetres), "
+            "got -1");
 }
 
 }  // namespace

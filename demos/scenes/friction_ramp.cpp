@@ -22,10 +22,12 @@ constexpr vec2 block_half{0.5f, 0.35f};       // metres
 void build(World& world, const Params& params) {
   const float theta = radians(static_cast<float>(params.number("angle")));
   const float margin = static_cast<float>(params.number("margin"));
-  const float tan_theta = std::tan(theta);
+  // The engine's own cos/sin (not libm's), so the scene is the same on every machine.
+  const CosSin slope = cos_sin(theta);
+  const float tan_theta = slope.sine / slope.cosine;
   const Material ramp{"Ramp", 0.0f, 0.0f, 2.0f, 2.0f};
-  const vec2 along{std::cos(-theta), std::sin(-theta)};  // down the ramp, to the right
-  const vec2 up{std::sin(theta), std::cos(theta)};       // the ramp's outward normal
+  const vec2 along{slope.cosine, -slope.sine};  // down the ramp, to the right
+  const vec2 up{slope.sine, slope.cosine};      // the ramp's outward normal
 
   // {mu_s, mu_d} per ramp, top to bottom.
   const float below = tan_theta - margin;

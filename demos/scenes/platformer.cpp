@@ -40,7 +40,8 @@ void build(World& world, const Params&) {
   add_tagged_box(world, BodyType::Static, {-3.0f, -1.0f}, {40.0f, 0.0f}, 0);    // floor
   add_tagged_box(world, BodyType::Static, {1.5f, 2.0f}, {4.5f, 2.2f}, one_way_platform_tag);
   // 30-degree slope from (7, 0) up to the plateau at x = 12.
-  const float slope_top = 5.0f * std::tan(radians(30.0f));
+  const CosSin slope_angle = cos_sin(radians(30.0f));  // the engine's own, not libm's
+  const float slope_top = 5.0f * slope_angle.sine / slope_angle.cosine;
   const vec2 slope[3] = {{7.0f, 0.0f}, {12.0f, 0.0f}, {12.0f, slope_top}};
   vec2 slope_centroid;
   const Shape slope_shape = make_polygon(slope, 3, &slope_centroid);

@@ -27,8 +27,12 @@ void build(World& world, const Params& params) {
     const int row = i / per_row, column = i % per_row;
     const vec2 position{-half_width + spacing * (static_cast<float>(column) + 1.0f),
                         1.5f + spacing * static_cast<float>(row)};
-    add_body(world, BodyType::Dynamic, random_convex_polygon(random, random.uniform(0.4f, 0.9f)),
-             position, materials::wood(), random.uniform(0.0f, 6.2831853f));
+    // One draw per statement: the order of draws inside one call's arguments is unspecified
+    // (GCC and Clang differ). This is the order GCC used, so the scene is unchanged.
+    const float angle = random.uniform(0.0f, 6.2831853f);
+    const float radius = random.uniform(0.4f, 0.9f);
+    const Shape shape = random_convex_polygon(random, radius);
+    add_body(world, BodyType::Dynamic, shape, position, materials::wood(), angle);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <vector>
 
 #include "tools/golden/compare.h"
 #include "tools/golden/compare_json.h"
@@ -54,6 +55,27 @@ fs::path write_diff_artifacts(const fs::path& directory, const std::string& titl
   return directory / "index.html";
 }
 
+/// `write_diff_artifacts`, all or nothing: on failure (a full disk) the artifacts that did
+/// not exist before and the directory if it was created are removed before rethrowing.
+fs::path write_artifacts_or_nothing(const fs::path& directory, const std::string& title,
+                                    const CompareResult& result, const Image& expected,
+                                    const Image& actual) {
+  std::error_code error;
+  const bool directory_existed = fs::exists(directory, error);
+  std::vector<fs::path> new_files;
+  for (const char* name : {"expected.png", "actual.png", "diff.png", "heatmap.png",
+                           "metrics.json", "index.html"}) {
+    if (!fs::exists(directory / name, error)) new_files.push_back(directory / name);
+  }
+  try {
+    return write_diff_artifacts(directory, title, result, expected, actual);
+  } catch (...) {
+    for (const fs::path& file : new_files) fs::remove(file, error);
+    if (!directory_existed) fs::remove(directory, error);
+    throw;
+  }
+}
+
 }  // namespace
 
 int run_diff_command(const std::string& expected_png, const std::string& actual_png,
@@ -65,8 +87,8 @@ int run_diff_command(const std::string& expected_png, const std::string& actual_
     const CompareResult result = compare_images(expected, actual, tolerance);
     out << expected_png << " vs " << actual_png << ": " << result.message() << "\n";
     if (result.outcome != CompareOutcome::ExactMatch && !out_dir.empty()) {
-      const fs::path report = write_diff_artifacts(out_dir, expected_png + " vs " + actual_png,
-                                                   result, expected, actual);
+      const fs::path report = write_artifacts_or_nothing(
+          out_dir, expected_png + " vs " + actual_png, result, expected, actual);
       out << "report: " << report.string() << "\n";
     }
     return result.passed() ? kDiffSame : kDiffDiffers;

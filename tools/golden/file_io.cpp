@@ -25,6 +25,16 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& file) {
 }  // namespace
 
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(file, error);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw GoldenError("cannot read '" + file.string() + "': not a regular file");
+  }
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (!error && size > kMaxReadBytes) {
+    throw GoldenError("cannot read '" + file.string() + "': " + std::to_string(size) +
+                      " bytes; the limit is " + std::to_string(kMaxReadBytes));
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw GoldenError("cannot open '" + file.string() + "' for reading");
   std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),

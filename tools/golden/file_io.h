@@ -9,7 +9,11 @@
 
 namespace impulse2d::golden {
 
-/// The bytes of a file. Throws `GoldenError` naming the file when it cannot be read.
+/// Largest file `read_file_bytes` reads, bytes (256 MiB).
+constexpr std::uintmax_t kMaxReadBytes = 256u * 1024 * 1024;
+
+/// The bytes of a file. Throws `GoldenError` naming the file when it cannot be read, is not
+/// a regular file (a directory, a device) or is larger than `kMaxReadBytes`.
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file);
 
 /// The text of a file. Throws `GoldenError` naming the file when it cannot be read.

@@ -4,6 +4,7 @@
 #include "tools/golden/png_codec.h"
 
 #include "tools/golden/image.h"
+#include "tools/golden/png_check.h"
 
 #include <zlib.h>
 
@@ -43,6 +44,8 @@ unsigned char* zlib_compress(unsigned char* data, int data_length, int* out_leng
 namespace impulse2d::golden {
 
 bool decode_png_bytes(const std::vector<std::uint8_t>& bytes, Image& image, std::string& error) {
+  error = png_structure_problem(bytes);
+  if (!error.empty()) return false;
   int width = 0;
   int height = 0;
   int channels_in_file = 0;

@@ -11,7 +11,8 @@ namespace impulse2d::golden {
 
 struct Image;
 
-/// Decodes PNG bytes to RGBA8. Returns false and sets `error` to stb's reason on failure.
+/// Decodes PNG bytes to RGBA8 after `png_structure_problem` found none. Returns false and
+/// sets `error` to the structural problem or stb's reason on failure.
 bool decode_png_bytes(const std::vector<std::uint8_t>& bytes, Image& image, std::string& error);
 
 /// Encodes RGBA8 pixels as PNG bytes (zlib level 9). Returns an empty vector on failure.

@@ -1,0 +1,69 @@
+/// @file trig.cpp
+#include "core/trig.h"
+
+#include <cmath>
+#include <limits>
+
+namespace impulse2d {
+namespace {
+
+// pi/2 split in two doubles (Cody-Waite): the first has trailing zero bits so that
+// quadrant * kHalfPiHigh is exact for quadrants below 2^20; the second carries the rest.
+constexpr double kHalfPiHigh = 1.5707963267341256;
+constexpr double kHalfPiLow = 6.077100506506192e-11;
+constexpr double kTwoOverPi = 0.6366197723675814;
+
+// Taylor series on |r| <= pi/4, evaluated by Horner's rule; the first omitted term is below
+// 2^-56 of the result.
+double sine_polynomial(double r) {
+  const double r2 = r * r;
+  double sum = -1.0 / 1307674368000.0;             // -1/15!
+  sum = sum * r2 + 1.0 / 6227020800.0;             // 1/13!
+  sum = sum * r2 - 1.0 / 39916800.0;               // -1/11!
+  sum = sum * r2 + 1.0 / 362880.0;                 // 1/9!
+  sum = sum * r2 - 1.0 / 5040.0;                   // -1/7!
+  sum = sum * r2 + 1.0 / 120.0;                    // 1/5!
+  sum = sum * r2 - 1.0 / 6.0;                      // -1/3!
+  return r + r * r2 * sum;
+}
+
+double cosine_polynomial(double r) {
+  const double r2 = r * r;
+  double sum = 1.0 / 20922789888000.0;             // 1/16!
+  sum = sum * r2 - 1.0 / 87178291200.0;            // -1/14!
+  sum = sum * r2 + 1.0 / 479001600.0;              // 1/12!
+  sum = sum * r2 - 1.0 / 3628800.0;                // -1/10!
+  sum = sum * r2 + 1.0 / 40320.0;                  // 1/8!
+  sum = sum * r2 - 1.0 / 720.0;                    // -1/6!
+  sum = sum * r2 + 1.0 / 24.0;                     // 1/4!
+  sum = sum * r2 - 0.5;                            // -1/2!
+  return 1.0 + r2 * sum;
+}
+
+}  // namespace
+
+CosSin cos_sin(float angle) {
+  if (!std::isfinite(angle)) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    return {nan, nan};
+  }
+  const double x = angle;
+  // Nearest quadrant; std::nearbyint is exact (no libm rounding question) in any mode.
+  const double quadrant = std::nearbyint(x * kTwoOverPi);
+  const double r = (x - quadrant * kHalfPiHigh) - quadrant * kHalfPiLow;
+  const double s = sine_polynomial(r);
+  const double c = cosine_polynomial(r);
+  const long long q = static_cast<long long>(std::fmod(quadrant, 4.0)) & 3;
+  switch (q) {
+    case 0:
+      return {static_cast<float>(c), static_cast<float>(s)};
+    case 1:
+      return {static_cast<float>(-s), static_cast<float>(c)};
+    case 2:
+      return {static_cast<float>(-c), static_cast<float>(-s)};
+    default:
+      return {static_cast<float>(s), static_cast<float>(-c)};
+  }
+}
+
+}  // namespace impulse2d
