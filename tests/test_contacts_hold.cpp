@@ -6,6 +6,7 @@
 //  - bounces neither gain nor lose height: apexes within a derived bound of e^(2k) h0;
 //  - touching bodies never free-fall for a step (speculative contacts);
 //  - stacks of 10, 20 and 30 rotating boxes stand for 30 s.
+#include "bounce_apexes.h"
 #include "core/contact_bounce.h"
 #include "core/world.h"
 
@@ -192,37 +193,6 @@ TEST(StickSlip, SlidingBoxStopsAfterV0SquaredOverTwoAAndHolds) {
   EXPECT_LT(std::fabs(incline.travelled(stopped)), hold_drift);
 }
 
-// Apexes of a ball dropped from h0 with restitution e (threshold off).
-std::vector<double> apexes(WorldSettings settings, float e, float h0, int bounces) {
-  settings.restitution_threshold = 0.0f;
-  World world(settings);
-  BodyDef floor;
-  floor.type = BodyType::Static;
-  floor.material = Material{"Floor", 0.0f, e, 0.0f, 0.0f};
-  floor.position = {0.0f, -1.0f};
-  world.create_body(floor, make_oriented_box({5.0f, 1.0f}));
-  BodyDef ball;
-  ball.material = Material{"Ball", 1.0f, e, 0.0f, 0.0f};
-  ball.position = {0.0f, 0.25f + h0};
-  const BodyId id = world.create_body(ball, make_circle(0.25f));
-  std::vector<double> heights;
-  double highest = -1.0;
-  bool rising = false;
-  for (int i = 0; i < 100000 && static_cast<int>(heights.size()) < bounces; ++i) {
-    world.step();
-    const double height = world.body(id).transform.position.y - 0.25;
-    if (world.body(id).linear_velocity.y > 0.0f) {
-      rising = true;
-      highest = std::max(highest, height);
-    } else if (rising) {
-      heights.push_back(std::max(highest, height));
-      rising = false;
-      highest = -1.0;
-    }
-  }
-  return heights;
-}
-
 TEST(TimedBounce, ApexesOfADropFromFiveMetresStayWithinADerivedBound) {
   // The bounce is reflected at the time of impact inside the step (contact_bounce.h), exact
   // for a constant closing acceleration; what is left per bounce is at most one step of
@@ -236,7 +206,7 @@ TEST(TimedBounce, ApexesOfADropFromFiveMetresStayWithinADerivedBound) {
     settings.solver = solver;
     if (solver == SolverMethod::SoftStep) settings.substeps = 4;
     const double dt = settings.time_step;
-    const std::vector<double> heights = apexes(settings, e, h0, 5);
+    const std::vector<double> heights = bounce_test::bounce_apexes(settings, e, h0, 5);
     ASSERT_EQ(heights.size(), 5u);
     double carried = 0.0;
     for (int k = 1; k <= 5; ++k) {
