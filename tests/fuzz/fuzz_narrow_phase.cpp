@@ -128,11 +128,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // the depths agree. Only normals that differ with depths outside that tolerance are wrong.
   const float depth_ab = deepest(ab);
   const float depth_ba = deepest(ba);
-  const bool same_face_choice =
+  const bool depths_disagree =
       std::fabs(depth_ab - depth_ba) > 0.05f * std::fmax(depth_ab, depth_ba) + 0.001f;
   if (std::fabs(along) > 0.1f * smallest && depth_ab > clear && depth_ba > clear &&
       depth_ab < shallow && depth_ba < shallow && glm::dot(ab.normal, ba.normal) > 0.0f &&
-      same_face_choice) {
+      depths_disagree) {
     fail("normals point the same way in both orders", ab, ba, xa, xb);
   }
   return 0;
