@@ -14,14 +14,17 @@ namespace {
 // impulse stays 0, yet finite so the block solver's arithmetic stays finite.
 constexpr float waiting_target_speed = -1.0e9f;
 
-}  // namespace
-
+// Drops the accumulated impulses of a point whose bounce was applied in an earlier sub-step,
+// so the collision's impulse is not warm-started as if it were a resting load (across steps
+// the narrow phase does not carry it over).
 void forget_bounce(ContactPoint& point) {
   if (!point.bounced) return;
   point.normal_impulse = 0.0f;
   point.tangent_impulse = 0.0f;
   point.bounced = false;
 }
+
+}  // namespace
 
 BouncePlan plan_bounce(float approach_speed, float gap, float approach_acceleration,
                        float restitution, float threshold, float h) {

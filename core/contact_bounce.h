@@ -48,10 +48,6 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
 /// `bounce_speed` (accumulated impulse kept >= 0), and ends its bounce.
 void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies);
 
-/// Drops the accumulated impulses of a point whose bounce was applied, so the collision's
-/// impulse is not warm-started as if it were a resting load.
-void forget_bounce(ContactPoint& point);
-
 /// Current separation (m) of a prepared point, from its local anchors: > 0 apart.
 float current_separation(const Body& a, const Body& b, const Contact& contact,
                          const ContactPoint& point);

@@ -1,6 +1,5 @@
 #include "core/contact_prepare.h"
 
-#include "core/contact_bounce.h"
 #include "core/contact_solver_internal.h"
 
 namespace impulse2d {
@@ -45,7 +44,6 @@ void prepare_contacts(std::vector<Contact>& contacts, const std::vector<Body>& b
       point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
       point.tangent_mass = k_tangent > 0.0f ? 1.0f / k_tangent : 0.0f;
       point.velocity_bias = 0.0f;
-      forget_bounce(point);
       point.bouncing = false;
       point.waiting = false;
       point.bounce_speed = 0.0f;

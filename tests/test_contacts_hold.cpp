@@ -233,17 +233,22 @@ TEST(TimedBounce, PlanLeavesThePointWhereTheReflectedMotionEndsTheStep) {
   EXPECT_FALSE(plan_bounce(v, v * h * 1.01f, 0.0f, e, 1.0f, h).bouncing);
 }
 
-TEST(SpeculativeContacts, TouchingBoxesNeverFreeFallForAStep) {
-  // A box placed exactly on the ground: its contact exists before the first step, so its
-  // first step leaves it at rest instead of falling g dt^2 into the ground.
-  World world{WorldSettings{}};
+// A 1x1 box placed exactly on static ground (zero gap); returns the box.
+BodyId place_touching_box(World& world) {
   BodyDef ground;
   ground.type = BodyType::Static;
   ground.position = {0.0f, -0.5f};
   world.create_body(ground, make_oriented_box({5.0f, 0.5f}));
   BodyDef def;
   def.position = {0.0f, 0.5f};
-  const BodyId box = world.create_body(def, make_oriented_box({0.5f, 0.5f}));
+  return world.create_body(def, make_oriented_box({0.5f, 0.5f}));
+}
+
+TEST(SpeculativeContacts, TouchingBoxesNeverFreeFallForAStep) {
+  // A box placed exactly on the ground: its contact exists before the first step, so its
+  // first step leaves it at rest instead of falling g dt^2 into the ground.
+  World world{WorldSettings{}};
+  const BodyId box = place_touching_box(world);
   world.step();
   EXPECT_EQ(world.contacts().size(), 1u);
   EXPECT_NEAR(world.body(box).linear_velocity.y, 0.0f, 1e-4f);
@@ -255,13 +260,7 @@ TEST(SpeculativeContacts, WithoutTheMarginTheFirstStepFreeFalls) {
   WorldSettings settings;
   settings.speculative_margin = 0.0f;
   World world(settings);
-  BodyDef ground;
-  ground.type = BodyType::Static;
-  ground.position = {0.0f, -0.5f};
-  world.create_body(ground, make_oriented_box({5.0f, 0.5f}));
-  BodyDef def;
-  def.position = {0.0f, 0.5f};
-  const BodyId box = world.create_body(def, make_oriented_box({0.5f, 0.5f}));
+  const BodyId box = place_touching_box(world);
   world.step();
   EXPECT_TRUE(world.contacts().empty());
   EXPECT_LT(world.body(box).linear_velocity.y, -0.9f * g * settings.time_step);
