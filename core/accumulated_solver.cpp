@@ -88,7 +88,8 @@ void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context)
     prepare_contacts(contacts, bodies, context);
     if (context.explicit_euler) stages.integrate_positions(h);  // with the old velocity
     stages.integrate_velocities(h);
-    plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false);
+    plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false,
+                        stages.solver_body_flags());
     if (context.warm_starting) warm_start_contacts(contacts, bodies);
     for (int i = 0; i < context.velocity_iterations; ++i) solve_pass(contacts, bodies, context);
     if (context.friction) update_friction_state(contacts, bodies);

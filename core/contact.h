@@ -46,9 +46,9 @@ struct ContactPoint {
   /// True once the point's bounce was applied: its accumulated impulses are a collision's, not
   /// a resting contact's, so they are not warm-started into the next (sub-)step.
   bool bounced = false;
-  /// True when the point is elastic (restitution > 0) and, at the start of the (sub-)step,
-  /// neither approaches, overlaps by more than the slop, nor carries impulse from the last
-  /// step: it sits out this
+  /// True when the point is elastic (restitution > 0), one of its bodies bounces in this
+  /// (sub-)step, and it neither approaches, overlaps by more than the slop, nor carries
+  /// impulse from the last step: it sits out this
   /// step's solve, so an impact travels along a touching elastic row one contact per step
   /// (Newton's cradle) instead of being shared by the whole row at once.
   bool waiting = false;

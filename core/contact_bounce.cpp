@@ -49,8 +49,11 @@ float current_separation(const Body& a, const Body& b, const Contact& contact,
 }
 
 void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                         const SolverContext& context, float h, bool bounces_only) {
+                         const SolverContext& context, float h, bool bounces_only,
+                         std::vector<std::uint8_t>& bouncing_bodies) {
   const float inverse_h = 1.0f / h;
+  bouncing_bodies.assign(bodies.size(), 0);
+  // First the bounces, marking the bodies they involve.
   for (Contact& contact : contacts) {
     if (!is_solvable(contact)) continue;
     const bool may_bounce = context.restitution && contact.restitution > 0.0f;
@@ -60,21 +63,42 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
       forget_bounce(point);
-      const float gap = current_separation(a, b, contact, point);
       BouncePlan plan;
-      float approach_speed = 0.0f;
       if (may_bounce) {
-        approach_speed = -glm::dot(relative_velocity(a, b, point), contact.normal);
-        plan = plan_bounce(approach_speed, gap, contact.approach_acceleration, contact.restitution,
+        const float approach_speed = -glm::dot(relative_velocity(a, b, point), contact.normal);
+        plan = plan_bounce(approach_speed, current_separation(a, b, contact, point),
+                           contact.approach_acceleration, contact.restitution,
                            context.restitution_threshold, h);
       }
       point.bouncing = plan.bouncing;
       point.bounce_speed = plan.leave_speed;
-      point.waiting = may_bounce && !plan.bouncing && gap >= -context.slop &&
-                      approach_speed <= 0.0f && point.normal_impulse == 0.0f;
       if (plan.bouncing) {
         point.velocity_bias = plan.solve_speed;
-      } else if (point.waiting) {
+        bouncing_bodies[contact.body_a.index] = 1;
+        bouncing_bodies[contact.body_b.index] = 1;
+      }
+    }
+  }
+  // Then the other points: an elastic point beside a bounce that neither approaches, overlaps
+  // beyond the slop nor carries impulse waits; the rest get their speculative target.
+  for (Contact& contact : contacts) {
+    if (!is_solvable(contact)) continue;
+    const bool may_bounce = context.restitution && contact.restitution > 0.0f;
+    if (bounces_only && !may_bounce) continue;
+    const Body& a = bodies[contact.body_a.index];
+    const Body& b = bodies[contact.body_b.index];
+    const bool beside_bounce =
+        bouncing_bodies[contact.body_a.index] != 0 || bouncing_bodies[contact.body_b.index] != 0;
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      point.waiting = false;
+      if (point.bouncing) continue;
+      const float gap = current_separation(a, b, contact, point);
+      if (may_bounce && beside_bounce) {
+        const float approach_speed = -glm::dot(relative_velocity(a, b, point), contact.normal);
+        point.waiting = gap >= -context.slop && approach_speed <= 0.0f && point.normal_impulse == 0.0f;
+      }
+      if (point.waiting) {
         point.velocity_bias = waiting_target_speed;
       } else if (!bounces_only) {
         point.velocity_bias = gap > 0.0f ? -gap * inverse_h : 0.0f;

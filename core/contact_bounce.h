@@ -18,6 +18,7 @@
 #include "core/contact.h"
 #include "core/solver_context.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace impulse2d {
@@ -38,11 +39,14 @@ BouncePlan plan_bounce(float approach_speed, float gap, float approach_accelerat
 
 /// Sets every point's `velocity_bias` for a (sub-)step of `h` seconds from its current gap
 /// (recomputed from the transforms) and relative velocity: -gap/h while apart, 0 when
-/// touching, or a bounce from `plan_bounce`; an elastic point that neither approaches,
-/// overlaps nor carries last step's impulse is marked `waiting` (left out of the solve). With `bounces_only`, points that do not bounce
+/// touching, or a bounce from `plan_bounce`; an elastic point on a body that bounces in this
+/// step that neither approaches, overlaps nor carries last step's impulse is marked `waiting`
+/// (left out of the solve). With `bounces_only`, points that do not bounce
 /// are left as they are (the soft solver computes their targets itself).
+/// `bouncing_bodies` is scratch (one flag per body slot, reused between calls).
 void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                         const SolverContext& context, float h, bool bounces_only);
+                         const SolverContext& context, float h, bool bounces_only,
+                         std::vector<std::uint8_t>& bouncing_bodies);
 
 /// After positions moved: raises each bouncing point's relative normal velocity to its
 /// `bounce_speed` (accumulated impulse kept >= 0), and ends its bounce.

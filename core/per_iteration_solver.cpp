@@ -65,7 +65,8 @@ void PerIterationSolver::step(SolverStages& stages, const SolverContext& context
         contact.points[i].tangent_impulse = 0.0f;
       }
     }
-    plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false);
+    plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false,
+                        stages.solver_body_flags());
     for (int i = 0; i < context.velocity_iterations; ++i) solve_pass(contacts, bodies, context);
     if (!context.explicit_euler) stages.integrate_positions(h);  // with the new velocity
     apply_bounces(contacts, bodies);

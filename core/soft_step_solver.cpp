@@ -16,7 +16,8 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   prepare_contacts(contacts, bodies, context);
   for (int substep = 0; substep < context.substeps; ++substep) {
     stages.integrate_velocities(h);
-    plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true);
+    plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
+                        stages.solver_body_flags());
     if (context.warm_starting) warm_start_contacts(contacts, bodies);
     for (int i = 0; i < context.velocity_iterations; ++i) {
       solve_contacts_soft(contacts, bodies, context, /*use_bias=*/true);

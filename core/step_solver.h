@@ -9,6 +9,7 @@
 #include "core/settings.h"
 #include "core/solver_context.h"
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -30,6 +31,8 @@ class SolverStages {
   virtual std::vector<Contact>& solver_contacts() = 0;
   /// Every body slot (dead slots are never referred to by a contact).
   virtual std::vector<Body>& solver_bodies() = 0;
+  /// Scratch of one flag per body slot for the solver's own use (kept to avoid allocating).
+  virtual std::vector<std::uint8_t>& solver_body_flags() = 0;
 
  protected:
   ~SolverStages() = default;

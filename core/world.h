@@ -151,6 +151,7 @@ class World : private SolverStages {
   void correct_positions() override;
   std::vector<Contact>& solver_contacts() override { return contacts_; }
   std::vector<Body>& solver_bodies() override { return bodies_; }
+  std::vector<std::uint8_t>& solver_body_flags() override { return body_flags_; }
   void restore_diverged_bodies();
 
   WorldSettings settings_;
@@ -165,6 +166,7 @@ class World : private SolverStages {
   SolverMethod solver_method_ = SolverMethod::AccumulatedImpulses;
   std::vector<float> speculative_reach_;   // per slot, metres (reused)
   std::vector<Aabb> speculative_bounds_;   // per slot (reused)
+  std::vector<std::uint8_t> body_flags_;   // per slot, solver scratch (reused)
   BroadPhase broad_phase_;
   std::vector<BodyPair> pairs_;            // broad-phase output (reused)
   SleepIslands sleep_islands_;
