@@ -65,6 +65,11 @@ struct WorldSettings {
   /// complementarity problem (Box2D's block solver) instead of one after the other, which keeps
   /// stacks from rocking (AccumulatedImpulses only).
   bool block_solver = true;
+  /// Shock propagation: after the velocity iterations, one more pass over the contacts that
+  /// carry load, from the ground up, with the lower body of each held fixed (see
+  /// `shock_propagation.h`). Holds heavy bodies on light ones (1:1000) where plain iterations
+  /// let the light one be squeezed out (AccumulatedImpulses).
+  bool shock_propagation = true;
 
   /// Speculative contacts: pairs closer than this (metres), plus the distance their bodies can
   /// cover in the coming step, already get contact points with a negative depth (the gap), and

@@ -14,6 +14,7 @@ SolverContext resolve_solver_context(const WorldSettings& settings) {
   context.velocity_iterations = settings.velocity_iterations;
   context.warm_starting = settings.warm_starting;
   context.block_solver = settings.block_solver;
+  context.shock_propagation = settings.shock_propagation;
   context.friction = settings.enable_friction;
   context.restitution = settings.enable_restitution;
   context.restitution_threshold = settings.restitution_threshold;

@@ -18,6 +18,7 @@ struct SolverContext {
   int velocity_iterations = 0;     ///< passes over all contacts per (sub-)step
   bool warm_starting = true;       ///< apply last step's accumulated impulses first
   bool block_solver = true;        ///< 2x2 normal block for two-point manifolds
+  bool shock_propagation = true;   ///< a ground-up pass with lower bodies held fixed
   bool friction = true;            ///< tangent impulses on
   bool restitution = true;         ///< bounces on
   float restitution_threshold = 0.0f;  ///< m/s: slower impacts do not bounce

@@ -7,6 +7,7 @@
 #include "core/body.h"
 #include "core/contact.h"
 #include "core/settings.h"
+#include "core/shock_propagation.h"
 #include "core/solver_context.h"
 
 #include <cstdint>
@@ -33,6 +34,8 @@ class SolverStages {
   virtual std::vector<Body>& solver_bodies() = 0;
   /// Scratch of one flag per body slot for the solver's own use (kept to avoid allocating).
   virtual std::vector<std::uint8_t>& solver_body_flags() = 0;
+  /// Scratch for the shock pass's support order (kept to avoid allocating).
+  virtual SupportOrder& solver_support_order() = 0;
 
  protected:
   ~SolverStages() = default;

@@ -30,6 +30,7 @@ std::string core_reason(const Error& error) {
 
 WorldSettings read_settings(const JsonCursor& node) {
   node.allow_only({"gravity", "time_step", "substeps", "solver", "warm_starting", "block_solver",
+                   "shock_propagation",
                    "position_correction", "correction_percent", "slop", "max_correction",
                    "restitution_threshold", "friction_mixing", "restitution_mixing", "integrator",
                    "broad_phase", "sleep_linear_speed", "sleep_angular_speed", "time_to_sleep",
@@ -63,6 +64,9 @@ WorldSettings read_settings(const JsonCursor& node) {
   }
   if (auto field = node.optional_field("warm_starting")) settings.warm_starting = field->boolean();
   if (auto field = node.optional_field("block_solver")) settings.block_solver = field->boolean();
+  if (auto field = node.optional_field("shock_propagation")) {
+    settings.shock_propagation = field->boolean();
+  }
   if (auto field = node.optional_field("position_correction")) {
     settings.position_correction = field->choice<PositionCorrection>(
         {{"none", PositionCorrection::None},

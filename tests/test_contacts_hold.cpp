@@ -332,3 +332,78 @@ TEST(NewtonsCradle, OnlyTheLastBallLeavesAndEnergyIsKept) {
 }
 
 }  // namespace
+
+namespace {
+
+// A 1 x 0.5 box `ratio` times heavier than the 1 x 0.5 box it rests on, on static ground; with
+// `light_count` light boxes stacked under the heavy one. Same friction everywhere.
+struct HeavyOnLight {
+  World world;
+  std::vector<BodyId> light;
+  BodyId heavy;
+  std::vector<vec2> start;
+  HeavyOnLight(const WorldSettings& settings, float ratio, int light_count) : world(settings) {
+    BodyDef ground;
+    ground.type = BodyType::Static;
+    ground.material = block_material();
+    ground.material.density = 0.0f;
+    ground.position = {0.0f, -0.5f};
+    world.create_body(ground, make_oriented_box({10.0f, 0.5f}));
+    BodyDef def;
+    def.material = block_material();
+    for (int i = 0; i < light_count; ++i) {
+      def.position = {0.0f, 0.25f + 0.5f * static_cast<float>(i)};
+      light.push_back(world.create_body(def, make_oriented_box({0.5f, 0.25f})));
+      start.push_back(def.position);
+    }
+    def.material.density *= ratio;
+    def.position = {0.0f, 0.25f + 0.5f * static_cast<float>(light_count)};
+    heavy = world.create_body(def, make_oriented_box({0.5f, 0.25f}));
+    start.push_back(def.position);
+  }
+  // Largest distance (m) of a box from where it started, and largest turn (rad).
+  std::pair<float, float> worst_move() const {
+    float distance = 0.0f, turn = 0.0f;
+    for (std::size_t i = 0; i < start.size(); ++i) {
+      const Body& body = world.body(i < light.size() ? light[i] : heavy);
+      distance = std::max(distance, glm::length(body.transform.position - start[i]));
+      turn = std::max(turn, std::fabs(body.angle));
+    }
+    return {distance, turn};
+  }
+};
+
+struct MassRatioCase {
+  float ratio;
+  int light_count;
+  int iterations;
+};
+
+class HeavyOnLightStands : public ::testing::TestWithParam<MassRatioCase> {};
+
+// Nothing moves for 10 s beyond what the contacts may keep: each contact below a box may hold
+// up to the slop of overlap, so the topmost box may sink by (light_count + 1) slops.
+TEST_P(HeavyOnLightStands, NoBoxMovesMoreThanTheSlopOfTheContactsBelowIt) {
+  const MassRatioCase c = GetParam();
+  WorldSettings settings = settings_with_iterations(c.iterations);
+  HeavyOnLight scene(settings, c.ratio, c.light_count);
+  for (int i = 0; i < 600; ++i) scene.world.step();
+  const auto [distance, turn] = scene.worst_move();
+  EXPECT_LT(distance, static_cast<float>(c.light_count + 1) * settings.slop);
+  EXPECT_LT(turn, 0.05f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Ratios, HeavyOnLightStands,
+                         ::testing::Values(MassRatioCase{300.0f, 1, 16}, MassRatioCase{1000.0f, 1, 16},
+                                           MassRatioCase{1000.0f, 3, 16}, MassRatioCase{1000.0f, 1, 4}));
+
+// The control: without the shock pass, 16 iterations let the light box be squeezed out.
+TEST(HeavyOnLight, WithoutShockPropagationAThousandToOneCollapses) {
+  WorldSettings settings = settings_with_iterations(16);
+  settings.shock_propagation = false;
+  HeavyOnLight scene(settings, 1000.0f, 1);
+  for (int i = 0; i < 600; ++i) scene.world.step();
+  EXPECT_GT(scene.worst_move().first, 0.1f);
+}
+
+}  // namespace

@@ -53,7 +53,7 @@ TEST(LabResults, CsvErrorsNameFileLineAndField) {
     parse_csv(csv_header() + "\n1,s,impulse2d\n", "x.csv");
     FAIL();
   } catch (const demos::UsageError& error) {
-    EXPECT_EQ(std::string(error.what()), "x.csv:2: expected 31 fields, got 3");
+    EXPECT_EQ(std::string(error.what()), "x.csv:2: expected 32 fields, got 3");
   }
   try {
     parse_csv("a,b\n", "y.csv");

@@ -92,6 +92,7 @@ std::string method_label(const LabMethod& method) {
     if (method.solver == SolverMethod::AccumulatedImpulses) {
       if (!method.warm_starting) text << " nowarm";
       if (!method.block_solver) text << " noblock";
+      if (!method.shock_propagation) text << " noshock";
     }
     if (!method.continuous) text << " noccd";
     if (method.speculative_margin != base.speculative_margin) {
@@ -155,6 +156,7 @@ std::vector<LabMethod> method_space(bool quick) {
   vary([](LabMethod& m) { m.warm_starting = false; });
   if (!quick) {
     vary([](LabMethod& m) { m.block_solver = false; });
+    vary([](LabMethod& m) { m.shock_propagation = false; });
     for (const FrictionMixing rule :
          {FrictionMixing::RootSumSquares, FrictionMixing::Product, FrictionMixing::Average,
           FrictionMixing::Minimum, FrictionMixing::Maximum}) {
@@ -192,6 +194,7 @@ demos::Scene apply_method(const LabMethod& method, const demos::Scene& scene) {
   settings.restitution_mixing = method.restitution_mixing;
   settings.warm_starting = method.warm_starting;
   settings.block_solver = method.block_solver;
+  settings.shock_propagation = method.shock_propagation;
   settings.speculative_margin = method.speculative_margin;
   result.model.velocity_iterations = method.velocity_iterations;
   result.model.position_iterations = method.position_iterations;
@@ -211,6 +214,7 @@ LabMethod scene_method(const demos::Scene& scene) {
   method.restitution_mixing = settings.restitution_mixing;
   method.warm_starting = settings.warm_starting;
   method.block_solver = settings.block_solver;
+  method.shock_propagation = settings.shock_propagation;
   method.speculative_margin = settings.speculative_margin;
   method.velocity_iterations = scene.model.velocity_iterations;
   method.position_iterations = scene.model.position_iterations;

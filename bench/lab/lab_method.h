@@ -37,6 +37,7 @@ struct LabMethod {
   RestitutionMixing restitution_mixing = WorldSettings{}.restitution_mixing;  ///< restitution rule
   bool warm_starting = WorldSettings{}.warm_starting;  ///< accumulated impulses carried over
   bool block_solver = WorldSettings{}.block_solver;  ///< 2-point block solver
+  bool shock_propagation = WorldSettings{}.shock_propagation;  ///< ground-up heavy-on-light pass
 };
 
 /// A short label naming the method by what differs from the default, e.g. "acc 16i",

@@ -19,7 +19,7 @@ const char* const header_fields[] = {
     "job", "scenario", "engine", "method", "solver", "velocity_iterations",
     "position_iterations", "substeps", "position_correction", "integrator", "time_step",
     "continuous", "speculative_margin", "friction_mixing", "restitution_mixing", "warm_starting", "block_solver",
-    "steps", "bodies", "repeats", "ns_per_step", "ns_per_step_body", "us_per_simulated_second",
+    "shock_propagation", "steps", "bodies", "repeats", "ns_per_step", "ns_per_step_body", "us_per_simulated_second",
     "instructions_per_step", "error", "unit", "threshold", "pass", "pareto", "recommended",
     "failure_reason"};
 constexpr std::size_t field_count = sizeof(header_fields) / sizeof(header_fields[0]);
@@ -123,7 +123,7 @@ std::string csv_line(const LabResult& r) {
        << number(m.speculative_margin) << ','
        << friction_mixing_name(m.friction_mixing) << ','
        << restitution_mixing_name(m.restitution_mixing) << ',' << (m.warm_starting ? 1 : 0)
-       << ',' << (m.block_solver ? 1 : 0) << ',' << r.steps << ',' << r.bodies << ','
+       << ',' << (m.block_solver ? 1 : 0) << ',' << (m.shock_propagation ? 1 : 0) << ',' << r.steps << ',' << r.bodies << ','
        << r.repeats << ',' << number(r.ns_per_step) << ',' << number(r.ns_per_step_body) << ','
        << number(r.us_per_simulated_second) << ',' << number(r.instructions_per_step) << ','
        << number(r.error) << ',' << r.unit << ',' << number(r.threshold) << ','
@@ -202,20 +202,21 @@ std::vector<LabResult> parse_csv(const std::string& text, const std::string& fil
                                       restitution_mixing_name, field_where(14));
     m.warm_starting = integer(15) != 0;
     m.block_solver = integer(16) != 0;
-    r.steps = integer(17);
-    r.bodies = static_cast<int>(integer(18));
-    r.repeats = static_cast<int>(integer(19));
-    r.ns_per_step = real(20);
-    r.ns_per_step_body = real(21);
-    r.us_per_simulated_second = real(22);
-    r.instructions_per_step = real(23);
-    r.error = real(24);
-    r.unit = f[25];
-    r.threshold = real(26);
-    r.pass = integer(27) != 0;
-    r.pareto = integer(28) != 0;
-    r.recommended = integer(29) != 0;
-    r.failure = f[30];
+    m.shock_propagation = integer(17) != 0;
+    r.steps = integer(18);
+    r.bodies = static_cast<int>(integer(19));
+    r.repeats = static_cast<int>(integer(20));
+    r.ns_per_step = real(21);
+    r.ns_per_step_body = real(22);
+    r.us_per_simulated_second = real(23);
+    r.instructions_per_step = real(24);
+    r.error = real(25);
+    r.unit = f[26];
+    r.threshold = real(27);
+    r.pass = integer(28) != 0;
+    r.pareto = integer(29) != 0;
+    r.recommended = integer(30) != 0;
+    r.failure = f[31];
     results.push_back(r);
   }
   if (line_number == 0) throw demos::UsageError(file + ": empty file, expected a lab CSV");

@@ -127,6 +127,7 @@ std::vector<LabMethod> tune_candidates(const demos::Scene& scene, bool quick) {
         if (solver == SolverMethod::AccumulatedImpulses) {
           method.warm_starting = true;
           method.block_solver = true;
+          method.shock_propagation = true;
         }
         candidates.push_back(method);
       }
@@ -207,6 +208,7 @@ std::string tuned_settings_json(const LabMethod& method, const demos::SceneModel
        << ", \"integrator\": \"" << integrator_name(method.integrator)
        << "\", \"warm_starting\": " << (method.warm_starting ? "true" : "false")
        << ", \"block_solver\": " << (method.block_solver ? "true" : "false")
+       << ", \"shock_propagation\": " << (method.shock_propagation ? "true" : "false")
        << ", \"friction_mixing\": \"" << friction_mixing_name(method.friction_mixing)
        << "\", \"restitution_mixing\": \"" << restitution_mixing_name(method.restitution_mixing)
        << "\"},\n\"model\": {\"shapes\": [";
