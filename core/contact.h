@@ -53,6 +53,19 @@ struct ContactPoint {
   /// (Newton's cradle) instead of being shared by the whole row at once.
   bool waiting = false;
   bool friction_at_limit = false;   ///< the last friction pass was clamped by the Coulomb limit
+  /// Contact recycling (`contact_recycle.h`): the point as the manifold last found it, in each
+  /// body's frame (metres), and its separation then (metres, > 0 apart).
+  vec2 recycle_anchor_a{0.0f, 0.0f};
+  vec2 recycle_anchor_b{0.0f, 0.0f};
+  float base_separation = 0.0f;
+};
+
+/// Where a contact's bodies stood when its manifold was last computed, for contact recycling.
+struct ManifoldPose {
+  vec2 relative_position{0.0f, 0.0f};  ///< B's centre in A's frame, metres
+  Rotation relative_rotation;          ///< B's rotation relative to A's
+  Rotation rotation_a;                 ///< A's rotation
+  Rotation rotation_b;                 ///< B's rotation
 };
 
 /// A touching (or, with a speculative margin, nearly touching) pair of bodies. Body A has the
@@ -81,6 +94,8 @@ struct Contact {
   /// growing; the contact breaks loose at 2 (one such step can be a cold-started solve).
   std::uint8_t steps_at_static_limit = 0;
   PairMass mass;  ///< the two bodies' inverse masses, resolved at prepare
+  ManifoldPose manifold_pose;  ///< the bodies' pose when the manifold was last computed
+  bool recycled = false;       ///< this step kept last step's manifold (see contact_recycle.h)
   /// False when a contact filter (or `World::set_contact_enabled`) rejected the pair; the
   /// decision is kept while the shapes overlap (so one-way platforms do not pop bodies
   /// through) and taken afresh once they are more than a millimetre apart.

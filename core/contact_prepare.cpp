@@ -1,5 +1,6 @@
 #include "core/contact_prepare.h"
 
+#include "core/contact_recycle.h"
 #include "core/contact_solver_internal.h"
 
 namespace impulse2d {
@@ -32,13 +33,17 @@ void prepare_contacts(std::vector<Contact>& contacts, const std::vector<Body>& b
     float slip_sum = 0.0f;
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
-      point.anchor_a = point.point - a.transform.position;
-      point.anchor_b = point.point - b.transform.position;
+      if (contact.recycled) {
+        set_recycled_anchors(a, b, contact, point);
+      } else {
+        point.anchor_a = point.point - a.transform.position;
+        point.anchor_b = point.point - b.transform.position;
+        // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n.
+        const vec2 half_depth = normal * (0.5f * point.depth);
+        point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth);
+        point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
+      }
       slip_sum += glm::dot(relative_velocity(a, b, point), tangent);
-      // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n.
-      const vec2 half_depth = normal * (0.5f * point.depth);
-      point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth);
-      point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
       const float k_normal = inverse_effective_mass(contact.mass, point, normal);
       const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
       point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;

@@ -2,6 +2,7 @@
 
 #include "core/collide.h"
 #include "core/contact_friction_state.h"
+#include "core/contact_recycle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,33 @@ float tangential_speed(const Body& a, const Body& b, const Contact& contact) {
   const vec2 velocity_b = b.linear_velocity + cross(b.angular_velocity, point - b.transform.position);
   const vec2 velocity_a = a.linear_velocity + cross(a.angular_velocity, point - a.transform.position);
   return glm::dot(velocity_b - velocity_a, right_perpendicular(contact.normal));
+}
+
+// The contact's coefficients from its bodies' materials by the world's mixing rules.
+void mix_materials(const Body& a, const Body& b, const WorldSettings& settings, Contact& contact) {
+  contact.static_friction = mix_friction(a.material.static_friction, b.material.static_friction,
+                                         settings.friction_mixing);
+  contact.dynamic_friction = mix_friction(a.material.dynamic_friction,
+                                          b.material.dynamic_friction, settings.friction_mixing);
+  // Mixing can put dynamic above static (e.g. root-sum-squares never does, but a custom
+  // rule might); Coulomb's model needs static >= dynamic.
+  if (contact.dynamic_friction > contact.static_friction) {
+    contact.dynamic_friction = contact.static_friction;
+  }
+  contact.restitution =
+      mix_restitution(a.material.restitution, b.material.restitution, settings.restitution_mixing);
+}
+
+// A kept point whose bounce was applied last step drops its impulses: a collision's impulse
+// is not a load to warm-start (see ContactPoint::bounced).
+void forget_bounced_impulses(Contact& contact) {
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    if (!point.bounced) continue;
+    point.normal_impulse = 0.0f;
+    point.tangent_impulse = 0.0f;
+    point.bounced = false;
+  }
 }
 
 // Copies last step's impulses into points whose feature ids match.
@@ -57,6 +85,25 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
   for (const BodyPair& pair : pairs) {
     const Body& a = bodies[pair.first];
     const Body& b = bodies[pair.second];
+    while (old_index < previous.size() &&
+           (previous[old_index].body_a.index < pair.first ||
+            (previous[old_index].body_a.index == pair.first &&
+             previous[old_index].body_b.index < pair.second))) {
+      ++old_index;
+    }
+    const bool touched_before = old_index < previous.size() &&
+                                previous[old_index].body_a == a.id &&
+                                previous[old_index].body_b == b.id;
+    if (touched_before && may_recycle(a, b, previous[old_index], settings.contact_recycle_distance,
+                                      settings.speculative_margin)) {
+      Contact& contact = contacts.emplace_back(previous[old_index]);
+      recycle_manifold(a, b, contact);
+      contact.recycled = true;
+      forget_bounced_impulses(contact);
+      mix_materials(a, b, settings, contact);
+      point_total += contact.point_count;
+      continue;
+    }
     const float margin = settings.speculative_margin > 0.0f && a.speculative && b.speculative
                              ? settings.speculative_margin + reach[pair.first] + reach[pair.second]
                              : 0.0f;
@@ -73,27 +120,8 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       contact.points[i].depth = manifold.points[i].depth;
       contact.points[i].feature_id = manifold.points[i].feature_id;
     }
-    contact.static_friction = mix_friction(a.material.static_friction, b.material.static_friction,
-                                           settings.friction_mixing);
-    contact.dynamic_friction = mix_friction(a.material.dynamic_friction,
-                                            b.material.dynamic_friction, settings.friction_mixing);
-    // Mixing can put dynamic above static (e.g. root-sum-squares never does, but a custom
-    // rule might); Coulomb's model needs static >= dynamic.
-    if (contact.dynamic_friction > contact.static_friction) {
-      contact.dynamic_friction = contact.static_friction;
-    }
-    contact.restitution =
-        mix_restitution(a.material.restitution, b.material.restitution, settings.restitution_mixing);
-
-    while (old_index < previous.size() &&
-           (previous[old_index].body_a.index < pair.first ||
-            (previous[old_index].body_a.index == pair.first &&
-             previous[old_index].body_b.index < pair.second))) {
-      ++old_index;
-    }
-    const bool touched_before = old_index < previous.size() &&
-                                previous[old_index].body_a == a.id &&
-                                previous[old_index].body_b == b.id;
+    mix_materials(a, b, settings, contact);
+    remember_manifold_pose(a, b, contact);
     if (touched_before) {
       contact.enabled = previous[old_index].enabled;
       // A disabled pair stays disabled while its shapes overlap (re-enabling then would pop a

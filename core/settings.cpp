@@ -21,6 +21,8 @@ void validate_settings(const WorldSettings& s) {
           "must be in 0..1000");
   require(finite(s.speculative_margin) && s.speculative_margin >= 0.0f, "speculative_margin",
           "must be finite and >= 0");
+  require(finite(s.contact_recycle_distance) && s.contact_recycle_distance >= 0.0f,
+          "contact_recycle_distance", "must be finite and >= 0");
   require(finite(s.correction_percent) && s.correction_percent >= 0.0f &&
               s.correction_percent <= 1.0f,
           "correction_percent", "must be in [0, 1]");

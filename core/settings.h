@@ -77,6 +77,11 @@ struct WorldSettings {
   /// the surface and touching bodies never free-fall for a step. 0 turns speculation off (only
   /// overlapping shapes make contacts).
   float speculative_margin = 0.02f;
+  /// Contact recycling (see `contact_recycle.h`): a pair whose relative pose moved less than
+  /// this (metres) since its manifold was computed keeps that manifold, with separations
+  /// updated from its anchors, instead of being collided afresh. 0 collides every step.
+  /// Box2D v3's default is 10 linear slops (5 cm).
+  float contact_recycle_distance = 0.05f;
 
   PositionCorrection position_correction = PositionCorrection::NonlinearGaussSeidel;  ///< method
   int position_iterations = 3;      ///< passes for NonlinearGaussSeidel

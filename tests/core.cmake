@@ -12,6 +12,7 @@ impulse2d_add_test(test_physics
           ${CMAKE_CURRENT_SOURCE_DIR}/test_stacking.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_continuous.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_contacts_hold.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_contact_recycle.cpp
   LIBS impulse2d_core)
 # Own binary: it replaces the global operator new to count allocations.
 impulse2d_add_test(test_step_allocations

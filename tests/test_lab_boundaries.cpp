@@ -128,23 +128,26 @@ struct Boundary {
 };
 
 const Boundary boundaries[] = {
-    // Stacks standing 30 s: accumulated impulses (16 iterations) hold 38 boxes and drop 39;
-    // without warm starting 3 and 4; 4 substeps x 2 iterations hold 40 (the whole ladder).
-    {"accumulated", [] { return LabMethod{}; }, "stack_height", 30, 40},
-    {"accumulated, no warm start", no_warm_start, "stack_height", 2, 4},
+    // Stacks standing 30 s, with contact recycling: accumulated impulses (16 iterations) and
+    // 4 substeps x 2 iterations hold 40 boxes (the whole ladder; 38 and 39 before recycling);
+    // without warm starting 4 and not 5; the soft step 30 and not 31 (11 and 12 before).
+    {"accumulated", [] { return LabMethod{}; }, "stack_height", 40, -1},
+    {"accumulated, no warm start", no_warm_start, "stack_height", 3, 6},
     {"4 substeps x 2 iterations", substepped, "stack_height", 40, -1},
+    {"soft step", soft_step, "stack_height", 25, 35},
     // Heavy on light: with shock propagation 16 iterations pass the whole ladder (to 10^4x;
     // without it they passed 262x and failed 280x); no warm start passes 7.4x, fails 8.0x.
     {"accumulated", [] { return LabMethod{}; }, "mass_ratio", 10000, -1},
     {"accumulated without shock propagation", no_shock, "mass_ratio", 100, 300},
     {"accumulated, no warm start", no_warm_start, "mass_ratio", 3, 10},
-    // A 10-stack under a coarser step: 16 iterations stand at 41.9 ms, fall at 43.0 ms;
-    // 4 substeps x 2 iterations stand at 50 ms, fall at 50.9 ms.
-    {"accumulated", [] { return LabMethod{}; }, "time_step", 1000.0 / 30, 50},
-    {"4 substeps x 2 iterations", substepped, "time_step", 1000.0 / 30, 1000.0 / 15},
+    // A 10-stack under a coarser step, with contact recycling: 16 iterations stand at 77.6 ms,
+    // fall at 79.6 ms (41.9 and 43.0 before); 4 substeps x 2 iterations stand at 100 ms, the
+    // whole ladder (50 and 50.9 before).
+    {"accumulated", [] { return LabMethod{}; }, "time_step", 1000.0 / 15, 90},
+    {"4 substeps x 2 iterations", substepped, "time_step", 100, -1},
     // Static/dynamic friction: accumulated impulses hold at atan(mu_s) - 0.1 degrees and slide
-    // as predicted at + 0.1 (the whole ladder); the soft step is right to 0.167 degrees and
-    // wrong at 0.158.
+    // as predicted at + 0.1 (the whole ladder); the soft step is right to 0.188 degrees and
+    // wrong at 0.177.
     {"accumulated", [] { return LabMethod{}; }, "friction_angle", 0.1, -1},
     {"soft step", soft_step, "friction_angle", 0.25, 0.1},
     // Elastic pile under gravity, energy within 5 % for 10 s (not monotonic in the count: pinned

@@ -1,0 +1,109 @@
+#include "core/contact_recycle.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse2d {
+
+namespace {
+
+// Cosine of the largest turn a body may make before its manifold is computed afresh
+// (Box2D v3's 0.98: about 11.5 degrees).
+constexpr float min_turn_cosine = 0.98f;
+
+// Farthest distance (m) of the shape's surface from the body's centre.
+float shape_extent(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::Circle: return shape.circle.radius;
+    case ShapeType::Box: return std::sqrt(length_squared(shape.box.half_extents));
+    case ShapeType::Polygon: {
+      float farthest_squared = 0.0f;
+      for (int i = 0; i < shape.polygon.count; ++i) {
+        farthest_squared = std::max(farthest_squared, length_squared(shape.polygon.vertices[i]));
+      }
+      return std::sqrt(farthest_squared);
+    }
+  }
+  return 0.0f;
+}
+
+// B's pose relative to A's: B's centre in A's frame, and B's rotation relative to A's.
+ManifoldPose pose_of(const Body& a, const Body& b) {
+  const Rotation& qa = a.transform.rotation;
+  const Rotation& qb = b.transform.rotation;
+  ManifoldPose pose;
+  pose.relative_position = qa.inverse_rotate(b.transform.position - a.transform.position);
+  pose.relative_rotation = {qa.cosine * qb.cosine + qa.sine * qb.sine,
+                            qa.cosine * qb.sine - qa.sine * qb.cosine};
+  pose.rotation_a = qa;
+  pose.rotation_b = qb;
+  return pose;
+}
+
+// Cosine of the angle between two rotations.
+float cosine_between(const Rotation& p, const Rotation& q) {
+  return p.cosine * q.cosine + p.sine * q.sine;
+}
+
+// Sine of the angle from rotation q to rotation p.
+float sine_between(const Rotation& p, const Rotation& q) {
+  return p.sine * q.cosine - p.cosine * q.sine;
+}
+
+// True when the body's contacts may keep their manifolds at all.
+bool allows_recycling(const Body& body) {
+  return body.speculative && !body.is_bullet;
+}
+
+}  // namespace
+
+void remember_manifold_pose(const Body& a, const Body& b, Contact& contact) {
+  contact.manifold_pose = pose_of(a, b);
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    point.recycle_anchor_a = a.transform.apply_inverse(point.point);
+    point.recycle_anchor_b = b.transform.apply_inverse(point.point);
+    point.base_separation = -point.depth;
+  }
+}
+
+bool may_recycle(const Body& a, const Body& b, const Contact& contact, float recycle_distance,
+                 float apart_distance) {
+  if (!(recycle_distance > 0.0f) || !contact.enabled) return false;
+  if (!allows_recycling(a) || !allows_recycling(b)) return false;
+  const ManifoldPose& then = contact.manifold_pose;
+  const ManifoldPose now = pose_of(a, b);
+  const float turn_cosine = std::min(cosine_between(now.rotation_a, then.rotation_a),
+                                     cosine_between(now.rotation_b, then.rotation_b));
+  if (!(turn_cosine > min_turn_cosine)) return false;
+  const float extent_a = a.type == BodyType::Static ? 0.0f : shape_extent(a.shape);
+  const float extent_b = b.type == BodyType::Static ? 0.0f : shape_extent(b.shape);
+  const float moved = std::sqrt(length_squared(now.relative_position - then.relative_position));
+  const float turned = std::fabs(sine_between(now.relative_rotation, then.relative_rotation));
+  bool touching = false;
+  for (int i = 0; i < contact.point_count; ++i) touching = touching || contact.points[i].depth >= 0.0f;
+  const float tolerance = touching ? recycle_distance : std::min(recycle_distance, apart_distance);
+  return moved + std::max(extent_a, extent_b) * turned < tolerance;
+}
+
+void recycle_manifold(const Body& a, const Body& b, Contact& contact) {
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    const vec2 on_a = a.transform.apply(point.recycle_anchor_a);
+    const vec2 on_b = b.transform.apply(point.recycle_anchor_b);
+    point.point = 0.5f * (on_a + on_b);
+    point.depth = -(point.base_separation + glm::dot(on_b - on_a, contact.normal));
+  }
+}
+
+void set_recycled_anchors(const Body& a, const Body& b, const Contact& contact, ContactPoint& point) {
+  point.anchor_a = contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a);
+  point.anchor_b = contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
+  const vec2 on_a = a.transform.position + point.anchor_a;
+  const vec2 on_b = b.transform.position + point.anchor_b;
+  const float excess = glm::dot(on_b - on_a, contact.normal) + point.depth;
+  point.local_anchor_a = a.transform.apply_inverse(on_a);
+  point.local_anchor_b = b.transform.apply_inverse(on_b - contact.normal * excess);
+}
+
+}  // namespace impulse2d
