@@ -7,6 +7,7 @@ if(TARGET impulse2d_golden_scenes)
     SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_scenes.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_inventory.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_sensitivity.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_noise.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_threads.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_support.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_render_support.cpp

@@ -1,7 +1,7 @@
 /// @file test_golden_scenes.cpp
 /// One test per golden image: the built-in scene simulated to the golden's step, rendered,
-/// and compared (exact first, then the sidecar's tolerance). A failure is classified, its
-/// artifacts land under GOLDEN_ARTIFACT_DIR with the HTML report; GOLDEN_UPDATE writes
+/// and compared (exact first, then the sidecar's tolerance). A failure is classified (a
+/// physics change against the sidecar's noise envelope), its artifacts land under GOLDEN_ARTIFACT_DIR with the HTML report; GOLDEN_UPDATE writes
 /// goldens (never under CI).
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 
 #include "tests/test_golden_support.h"
 #include "tools/golden_scenes/golden_catalog.h"
+#include "tools/golden_scenes/noise_probe.h"
 #include "tools/golden_scenes/scene_frame.h"
 
 namespace impulse2d::golden {
@@ -25,7 +26,8 @@ TEST_P(GoldenScenes, MatchesGolden) {
   const GoldenSpec& spec = GetParam();
   const CheckOutcome outcome =
       run_golden_check(spec.id(), spec.scene, static_cast<int>(spec.step),
-                       scene_frame_producer(spec), testing::suite_settings());
+                       scene_frame_producer(spec), testing::suite_settings(),
+                       scene_noise_measurer(spec));
   if (outcome.golden_written) std::cout << outcome.message() << "\n";
   EXPECT_TRUE(outcome.passed()) << outcome.message();
 }

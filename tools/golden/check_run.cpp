@@ -92,7 +92,8 @@ fs::path golden_png_path(const fs::path& golden_dir, const std::string& name) {
 }
 
 CheckOutcome run_golden_check(const std::string& name, const std::string& scene, int frame,
-                              const FrameProducer& produce, const CheckSettings& settings) {
+                              const FrameProducer& produce, const CheckSettings& settings,
+                              const NoiseMeasurer& measure_noise) {
   const fs::path png = golden_png_path(settings.golden_dir, name);
   const fs::path sidecar_file = sidecar_path_for(png);
 
@@ -125,12 +126,23 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
     if (golden_sidecar && golden_sidecar->state_hash != actual.state_hash) {
       check.moved_bodies =
           largest_drifts(golden_sidecar->bodies, actual.bodies, settings.drift_count);
+      if (!golden_sidecar->noise.empty()) {
+        check.noise = judge_against_envelope(golden_sidecar->noise, golden_sidecar->bodies,
+                                             actual.bodies, actual.samples);
+      }
     }
   }
   outcome.failure_class = classify_failure(check);
 
-  const Sidecar actual_sidecar = sidecar_for(scene, frame, actual, tolerance);
-  if (should_write_golden(settings.update_mode, outcome.failure_class)) {
+  Sidecar actual_sidecar = sidecar_for(scene, frame, actual, tolerance);
+  const bool write_golden = should_write_golden(settings.update_mode, outcome.failure_class);
+  const bool promotable = outcome.failure_class != FailureClass::Nondeterminism;
+  const bool write_artifacts = !settings.artifact_root.empty() &&
+                               outcome.failure_class != FailureClass::None && !write_golden;
+  if (measure_noise && (write_golden || (write_artifacts && promotable))) {
+    actual_sidecar.noise = measure_noise();
+  }
+  if (write_golden) {
     save_png(png, actual.image);
     write_sidecar(sidecar_file, actual_sidecar);
     outcome.golden_written = true;
@@ -152,7 +164,6 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
     }
     return outcome;
   }
-  const bool promotable = outcome.failure_class != FailureClass::Nondeterminism;
   outcome.artifact_dir = write_failure_artifacts(settings.artifact_root, check, actual.image,
                                                  expected ? &*expected : nullptr,
                                                  promotable ? &actual_sidecar : nullptr);

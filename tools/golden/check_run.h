@@ -25,12 +25,20 @@ struct ProducedFrame {
   Image image;                   ///< the rendered frame
   std::uint64_t state_hash = 0;  ///< the world's state hash at that frame
   std::vector<BodyPose> bodies;  ///< every body's pose at that frame, for drift reports
+  /// Whole-world quantities at `noise_checkpoint_steps(frame)`, judged against the golden's
+  /// noise envelope when the state hash differs.
+  std::vector<PhysicsSample> samples;
   RendererFingerprint renderer;  ///< what drew it
 };
 
 /// Simulates and renders a golden's frame from scratch. Called once per check, and a second
 /// time only when the first result does not match the golden (or there is none).
 using FrameProducer = std::function<ProducedFrame()>;
+
+/// Measures the golden's noise envelope (reruns of its scene with one-ulp perturbations).
+/// Called only when a sidecar is about to be written: a golden, or a failure's promotable
+/// actual.json.
+using NoiseMeasurer = std::function<NoiseEnvelope()>;
 
 /// What a check needs besides the frame.
 struct CheckSettings {
@@ -73,9 +81,11 @@ std::filesystem::path golden_png_path(const std::filesystem::path& golden_dir,
 /// A failure writes `write_failure_artifacts` (the actual's sidecar carries the golden's
 /// tolerance, or the strict default) and regenerates the report under the artifact root,
 /// one process at a time (a lock file in the root); a pass removes a stale failure
-/// directory of the same name. Throws `GoldenError` for unreadable goldens or sidecars and
-/// failed writes, and whatever `produce` throws.
+/// directory of the same name. With `measure_noise`, every sidecar written carries the
+/// noise envelope it measures. Throws `GoldenError` for unreadable goldens or sidecars and
+/// failed writes, and whatever `produce` or `measure_noise` throws.
 CheckOutcome run_golden_check(const std::string& name, const std::string& scene, int frame,
-                              const FrameProducer& produce, const CheckSettings& settings);
+                              const FrameProducer& produce, const CheckSettings& settings,
+                              const NoiseMeasurer& measure_noise = nullptr);
 
 }  // namespace impulse2d::golden

@@ -9,6 +9,9 @@ namespace impulse2d::golden {
 
 namespace {
 
+/// How many envelope escapes a message names.
+constexpr std::size_t kEscapesNamed = 5;
+
 /// ". Renderer differs: golden drawn by X, this run by Y" when the fingerprints differ.
 std::string renderer_note(const GoldenCheck& check) {
   if (check.expected_renderer == check.actual_renderer) return "";
@@ -23,7 +26,8 @@ FailureClass classify_failure(const GoldenCheck& check) {
   if (!check.golden_present || !check.comparison) return FailureClass::MissingGolden;
   if (check.comparison->outcome == CompareOutcome::SizeMismatch) return FailureClass::SizeMismatch;
   if (check.expected_state_hash && *check.expected_state_hash != check.actual_state_hash) {
-    return FailureClass::SimulationDiverged;
+    if (!check.noise) return FailureClass::SimulationDiverged;
+    return check.noise->within() ? FailureClass::NumericalNoise : FailureClass::BehaviourChanged;
   }
   if (!check.comparison->passed()) return FailureClass::RasterisationDiffers;
   return FailureClass::None;
@@ -36,6 +40,8 @@ std::string failure_class_name(FailureClass failure_class) {
     case FailureClass::MissingGolden: return "missing golden";
     case FailureClass::SizeMismatch: return "size mismatch";
     case FailureClass::SimulationDiverged: return "simulation diverged";
+    case FailureClass::NumericalNoise: return "numerical noise";
+    case FailureClass::BehaviourChanged: return "behaviour changed";
     case FailureClass::RasterisationDiffers: return "rasterisation differs";
   }
   return "unknown";
@@ -76,6 +82,24 @@ std::string failure_message(const GoldenCheck& check) {
            << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
            << ". Bodies that moved most: " << describe_drifts(check.moved_bodies)
            << ". Image: " << check.comparison->message();
+      break;
+    case FailureClass::NumericalNoise:
+      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+           << ", but " << check.noise->describe(kEscapesNamed)
+           << ": a chaotic scene amplified a rounding change (reordered arithmetic, another "
+              "compiler or flag). Review the images and promote. Bodies that moved most: "
+           << describe_drifts(check.moved_bodies) << ". Image: " << check.comparison->message();
+      break;
+    case FailureClass::BehaviourChanged:
+      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+           << ", and the run left the golden's noise envelope (what rounding-sized perturbations "
+              "do to this scene): "
+           << check.noise->describe(kEscapesNamed)
+           << ". A physics change, not rounding: fix it, or promote only if it was meant. "
+              "Image: "
+           << check.comparison->message();
       break;
     case FailureClass::RasterisationDiffers:
       text << "physics state matches (hash " << to_hex_hash(check.actual_state_hash)

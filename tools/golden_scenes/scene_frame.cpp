@@ -7,8 +7,8 @@
 #include "demos/scene_camera.h"
 #include "demos/scene_registry.h"
 #include "demos/scene_run.h"
+#include "tools/golden_scenes/golden_run.h"
 #include "render/frame_renderer.h"
-#include "tools/golden/error.h"
 
 namespace impulse2d::golden {
 
@@ -22,24 +22,6 @@ RendererFingerprint split_fingerprint(const std::string& fingerprint) {
   return RendererFingerprint{fingerprint.substr(0, at), fingerprint.substr(at + separator.size())};
 }
 
-/// "body 7" for the first body of slot 7, "body 7 (generation 2)" for a later one, so a body
-/// created in a removed body's slot is never compared with its predecessor.
-std::string body_name(BodyId id) {
-  std::string name = "body " + std::to_string(id.index);
-  if (id.generation != 1) name += " (generation " + std::to_string(id.generation) + ")";
-  return name;
-}
-
-std::vector<BodyPose> body_poses(const World& world) {
-  std::vector<BodyPose> poses;
-  for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
-    poses.push_back(
-        BodyPose{body_name(id), body.transform.position.x, body.transform.position.y, body.angle});
-  }
-  return poses;
-}
-
 }  // namespace
 
 render::FrameRenderer& shared_golden_renderer() {
@@ -49,18 +31,16 @@ render::FrameRenderer& shared_golden_renderer() {
 
 ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
                                   const SceneVariant& variant) {
-  const demos::Scene* builtin = demos::find_builtin_scene(spec.scene);
-  if (builtin == nullptr)
-    throw GoldenError("golden '" + spec.id() + "': no built-in scene '" + spec.scene + "'");
-  demos::Scene scene = *builtin;
-  if (variant) variant(scene);
-  demos::Params params(scene.params);
-  for (const auto& [name, value] : spec.params) params.set(name, value);
-
-  demos::SceneRun run(scene, params);
+  GoldenRun golden_run(spec, variant);
+  const demos::Scene& scene = golden_run.scene();
+  demos::SceneRun& run = golden_run.run();
   const render::Camera camera =
       demos::scene_camera(scene.view.camera, run.world(), renderer.width(), renderer.height());
-  while (run.step_count() < spec.step) run.step();
+  ProducedFrame produced;
+  for (const std::int64_t checkpoint : noise_checkpoint_steps(spec.step)) {
+    while (run.step_count() < checkpoint) run.step();
+    produced.samples.push_back(sample_physics(run.world()));
+  }
 
   render::FrameOptions options;
   options.draw = scene.view.draw;
@@ -72,7 +52,6 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
   const render::Frame frame =
       renderer.render(run.world(), demos::frame_camera(camera, run), options, hud);
 
-  ProducedFrame produced;
   produced.image = Image{frame.width, frame.height, frame.rgba};
   produced.state_hash = run.world().state_hash();
   produced.bodies = body_poses(run.world());

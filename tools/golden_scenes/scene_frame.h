@@ -7,6 +7,7 @@
 
 #include "tools/golden/check_run.h"
 #include "tools/golden_scenes/golden_catalog.h"
+#include "tools/golden_scenes/golden_run.h"
 
 namespace impulse2d::demos {
 struct Scene;
@@ -18,17 +19,15 @@ class FrameRenderer;
 
 namespace impulse2d::golden {
 
-/// Changes a copy of a scene before it runs, e.g. a solver setting for sensitivity tests.
-using SceneVariant = std::function<void(demos::Scene&)>;
-
 /// The renderer of this process at kGoldenWidth x kGoldenHeight, created on first use and
 /// shared by every golden check in the process (one OSMesa context per process).
 render::FrameRenderer& shared_golden_renderer();
 
 /// Simulates `spec`'s scene (with `variant` applied, when given) from scratch to `spec.step`
 /// with the scene's camera, then renders it with the HUD and legend as `impulse2d` draws
-/// them. Bodies are named "body <slot>", with the slot's generation when it was reused.
-/// Throws `GoldenError` for an unknown scene, and whatever the scene's run throws.
+/// them, with the body poses (`body_poses`) and the physics samples at
+/// `noise_checkpoint_steps(spec.step)` the noise envelope is judged on. Throws `GoldenError`
+/// for an unknown scene, and whatever the scene's run throws.
 ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
                                   const SceneVariant& variant = nullptr);
 
