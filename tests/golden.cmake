@@ -22,4 +22,5 @@ endif()
 impulse2d_add_test(test_golden_harness
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_check_run.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_diff_command.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_noise_envelope.cpp
   LIBS impulse2d_golden)

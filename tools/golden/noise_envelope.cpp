@@ -35,18 +35,21 @@ constexpr Quantity kQuantities[] = {
     {"angular_momentum", "angular momentum", "kg m^2/s", &PhysicsSample::angular_momentum},
 };
 
-/// How far outside its envelope an escape is, for ordering: infinite from a zero envelope.
+/// How far outside its envelope an escape is, for ordering: infinite for an unmatched one
+/// or from a zero envelope.
 double severity(const EnvelopeEscape& escape) {
-  if (escape.envelope <= 0.0) return std::numeric_limits<double>::infinity();
+  if (escape.unmatched || escape.envelope <= 0.0) return std::numeric_limits<double>::infinity();
   return escape.measured / escape.envelope;
 }
 
 /// Adds an escape when |actual - golden| exceeds the envelope.
 void compare(NoiseVerdict& verdict, const std::string& what, double golden, double actual,
-             double envelope, const char* unit) {
+             double envelope, const char* unit, bool body = false) {
   ++verdict.compared;
   const double measured = std::abs(actual - golden);
-  if (!(measured <= kNoiseMargin * envelope)) verdict.escapes.push_back({what, measured, envelope, unit});
+  if (!(measured <= kNoiseMargin * envelope)) {
+    verdict.escapes.push_back({what, measured, envelope, unit, body});
+  }
 }
 
 }  // namespace
@@ -61,9 +64,10 @@ std::vector<std::int64_t> noise_checkpoint_steps(std::int64_t frame, int count) 
 
 std::string EnvelopeEscape::describe() const {
   std::ostringstream text;
-  text << std::setprecision(3) << what << " off by " << measured << " " << unit
-       << " (noise envelope " << envelope << " " << unit << ", limit " << kNoiseMargin * envelope
-       << ")";
+  if (unmatched) return what;
+  const std::string suffix = unit.empty() ? "" : " " + unit;
+  text << std::setprecision(3) << what << " off by " << measured << suffix << " (noise envelope "
+       << envelope << suffix << ", limit " << kNoiseMargin * envelope << ")";
   return text.str();
 }
 
@@ -72,14 +76,27 @@ std::string NoiseVerdict::describe(std::size_t count) const {
     return "every body and quantity inside the noise envelope (" + std::to_string(compared) +
            " compared)";
   }
-  std::string text;
-  for (std::size_t i = 0; i < escapes.size() && i < count; ++i) {
-    if (i > 0) text += "; ";
-    text += escapes[i].describe();
+  std::string quantities;
+  std::string bodies;
+  std::size_t quantities_named = 0;
+  std::size_t bodies_named = 0;
+  std::size_t bodies_outside = 0;
+  for (const EnvelopeEscape& escape : escapes) {
+    std::string& text = escape.body ? bodies : quantities;
+    std::size_t& named = escape.body ? bodies_named : quantities_named;
+    if (escape.body) ++bodies_outside;
+    if (named == count) continue;
+    text += (named == 0 ? "" : "; ") + escape.describe();
+    ++named;
   }
-  if (escapes.size() > count) {
-    text += "; ... (" + std::to_string(escapes.size()) + " of " + std::to_string(compared) +
-            " quantities outside)";
+  std::string text;
+  if (!quantities.empty()) {
+    text = "quantities: " + quantities + " (" + std::to_string(escapes.size() - bodies_outside) +
+           " outside)";
+  }
+  if (!bodies.empty()) {
+    text += (text.empty() ? "bodies: " : "; bodies: ") + bodies + " (" +
+            std::to_string(bodies_outside) + " outside)";
   }
   return text;
 }
@@ -98,7 +115,7 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
     const auto actual = actual_by_name.find(golden.name);
     const auto noise = noise_by_name.find(golden.name);
     if (actual == actual_by_name.end()) {
-      verdict.escapes.push_back({golden.name + " (missing in this run)", 1.0, 0.0, "body"});
+      verdict.escapes.push_back({golden.name + " (missing in this run)", 0.0, 0.0, "", true, true});
       continue;
     }
     const double distance_noise = noise != noise_by_name.end() ? noise->second->distance : 0.0;
@@ -107,14 +124,14 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
     const double distance =
         std::hypot(actual->second->x - golden.x, actual->second->y - golden.y);
     if (!(distance <= kNoiseMargin * distance_noise)) {
-      verdict.escapes.push_back({golden.name + " position", distance, distance_noise, "m"});
+      verdict.escapes.push_back({golden.name + " position", distance, distance_noise, "m", true});
     }
     compare(verdict, golden.name + " angle", golden.angle, actual->second->angle, rotation_noise,
-            "rad");
+            "rad", true);
     actual_by_name.erase(actual);
   }
   for (const auto& extra : actual_by_name) {
-    verdict.escapes.push_back({extra.first + " (not in the golden run)", 1.0, 0.0, "body"});
+    verdict.escapes.push_back({extra.first + " (not in the golden run)", 0.0, 0.0, "", true, true});
   }
 
   std::map<std::int64_t, const PhysicsSample*> actual_by_step;
@@ -123,8 +140,8 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
     const std::string at = " at step " + std::to_string(checkpoint.golden.step);
     const auto found = actual_by_step.find(checkpoint.golden.step);
     if (found == actual_by_step.end()) {
-      verdict.escapes.push_back({"physics sample" + at + " (not taken in this run)", 1.0, 0.0,
-                                 "sample"});
+      verdict.escapes.push_back({"physics sample" + at + " (not taken in this run)", 0.0, 0.0,
+                                 "", false, true});
       continue;
     }
     for (const Quantity& quantity : kQuantities) {
@@ -132,7 +149,7 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
               found->second->*quantity.field, checkpoint.spread.*quantity.field, quantity.unit);
     }
     compare(verdict, "contact count" + at, checkpoint.golden.contacts, found->second->contacts,
-            checkpoint.spread.contacts, "pairs");
+            checkpoint.spread.contacts, "");
   }
   std::stable_sort(verdict.escapes.begin(), verdict.escapes.end(),
                    [](const EnvelopeEscape& a, const EnvelopeEscape& b) {

@@ -75,9 +75,13 @@ struct EnvelopeEscape {
   std::string what;      ///< e.g. "body 12 position" or "angular momentum at step 75"
   double measured = 0.0;  ///< |actual - golden|
   double envelope = 0.0;  ///< the noise the perturbed runs showed
-  std::string unit;      ///< "m", "rad", "J", ...
+  std::string unit;      ///< "m", "rad", "J", ...; empty for counts
+  bool body = false;     ///< true for a body's pose, false for a whole-world quantity
+  /// True when the body or sample exists on one side only (nothing to measure then).
+  bool unmatched = false;
 
-  /// "body 12 position off by 0.31 m (noise envelope 0.002 m, limit 0.004)".
+  /// "body 12 position off by 0.31 m (noise envelope 0.002 m, limit 0.004)"; for an
+  /// unmatched one just `what`.
   std::string describe() const;
 };
 
@@ -91,8 +95,9 @@ struct NoiseVerdict {
 
   /// True when nothing left the envelope.
   bool within() const { return escapes.empty(); }
-  /// The `count` worst escapes joined by "; ", or "every body and quantity inside the
-  /// noise envelope (N compared)".
+  /// "quantities: <the `count` worst whole-world escapes>; bodies: <the `count` worst body
+  /// escapes> (B bodies outside)", each part only when it has escapes; or "every body and
+  /// quantity inside the noise envelope (N compared)".
   std::string describe(std::size_t count) const;
 };
 
