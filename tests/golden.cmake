@@ -9,6 +9,8 @@ if(TARGET impulse2d_golden_scenes)
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_sensitivity.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_noise.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_threads.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_child.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_processes.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_support.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_render_support.cpp
     LIBS impulse2d_golden_scenes)

@@ -48,6 +48,7 @@ json check_to_json(const GoldenCheck& check, const json& files) {
                                       : json(nullptr)},
           {"actual_state_hash", to_hex_hash(check.actual_state_hash)},
           {"second_render_identical", check.second_render_identical},
+          {"other_process_identical", check.other_process_identical},
           {"expected_renderer", check.expected_renderer.describe()},
           {"actual_renderer", check.actual_renderer.describe()},
           {"moved_bodies", drifts},

@@ -58,6 +58,12 @@ Sidecar sidecar_for(const std::string& scene, int frame, const ProducedFrame& pr
   return sidecar;
 }
 
+/// True when two productions of a frame have the same state hash and the same pixels.
+bool same_production(const ProducedFrame& a, const ProducedFrame& b) {
+  return a.state_hash == b.state_hash && a.image.width == b.image.width &&
+         a.image.height == b.image.height && rgba_hash(a.image) == rgba_hash(b.image);
+}
+
 /// True when the first production already settles the check as a pass.
 bool matches(const GoldenCheck& check) { return classify_failure(check) == FailureClass::None; }
 
@@ -84,6 +90,15 @@ CheckSettings check_settings_from_environment(const fs::path& golden_dir,
                             : golden_dir;
   settings.artifact_root = artifact_root_from_environment(artifact_root);
   settings.update_mode = update_mode_from_environment().mode;
+  const char* repeat = std::getenv("GOLDEN_REPEAT");
+  const std::string repeat_text = repeat != nullptr ? repeat : "";
+  if (repeat_text == "2") {
+    settings.repeat = 2;
+  } else if (!repeat_text.empty() && repeat_text != "1") {
+    throw GoldenError("GOLDEN_REPEAT='" + repeat_text +
+                      "' is not supported; use 1 (one process) or 2 (also compare with a "
+                      "second process)");
+  }
   return settings;
 }
 
@@ -93,7 +108,8 @@ fs::path golden_png_path(const fs::path& golden_dir, const std::string& name) {
 
 CheckOutcome run_golden_check(const std::string& name, const std::string& scene, int frame,
                               const FrameProducer& produce, const CheckSettings& settings,
-                              const NoiseMeasurer& measure_noise) {
+                              const NoiseMeasurer& measure_noise,
+                              const FrameProducer& produce_in_other_process) {
   const fs::path png = golden_png_path(settings.golden_dir, name);
   const fs::path sidecar_file = sidecar_path_for(png);
 
@@ -118,11 +134,7 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
   if (expected) check.comparison = compare_images(*expected, actual.image, tolerance);
 
   if (!matches(check)) {
-    const ProducedFrame again = produce();
-    check.second_render_identical = again.state_hash == actual.state_hash &&
-                                    rgba_hash(again.image) == rgba_hash(actual.image) &&
-                                    again.image.width == actual.image.width &&
-                                    again.image.height == actual.image.height;
+    check.second_render_identical = same_production(actual, produce());
     if (golden_sidecar && golden_sidecar->state_hash != actual.state_hash) {
       check.moved_bodies =
           largest_drifts(golden_sidecar->bodies, actual.bodies, settings.drift_count);
@@ -132,7 +144,18 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
       }
     }
   }
+  bool other_process_compared = false;
+  auto compare_with_other_process = [&] {
+    if (!produce_in_other_process || other_process_compared) return;
+    other_process_compared = true;
+    check.other_process_identical = same_production(actual, produce_in_other_process());
+    outcome.failure_class = classify_failure(check);
+  };
   outcome.failure_class = classify_failure(check);
+  if (settings.repeat >= 2) compare_with_other_process();
+  if (should_write_golden(settings.update_mode, outcome.failure_class)) {
+    compare_with_other_process();
+  }
 
   Sidecar actual_sidecar = sidecar_for(scene, frame, actual, tolerance);
   const bool write_golden = should_write_golden(settings.update_mode, outcome.failure_class);

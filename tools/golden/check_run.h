@@ -47,6 +47,10 @@ struct CheckSettings {
   std::filesystem::path artifact_root;
   UpdateMode update_mode = UpdateMode::None;  ///< which goldens this run may write
   std::size_t drift_count = 5;                ///< how many moved bodies a divergence message names
+  /// Processes each checked frame is produced in: 2 also produces it in another process and
+  /// fails as nondeterministic when the two differ. Writing a golden always compares with a
+  /// second process (when the caller can produce one), whatever this says.
+  int repeat = 1;
 };
 
 /// The outcome of `run_golden_check`.
@@ -68,8 +72,9 @@ struct CheckOutcome {
 };
 
 /// Settings from the environment: GOLDEN_IMAGES_DIR (else `golden_dir`), GOLDEN_ARTIFACT_DIR
-/// (else `artifact_root`), and the update mode from GOLDEN_UPDATE and CI
-/// (`update_mode_from_environment`). Throws `GoldenError` for a bad GOLDEN_UPDATE.
+/// (else `artifact_root`), the update mode from GOLDEN_UPDATE and CI
+/// (`update_mode_from_environment`) and `repeat` from GOLDEN_REPEAT (1 or 2; default 1).
+/// Throws `GoldenError` for a bad GOLDEN_UPDATE or GOLDEN_REPEAT.
 CheckSettings check_settings_from_environment(const std::filesystem::path& golden_dir,
                                               const std::filesystem::path& artifact_root);
 
@@ -82,10 +87,14 @@ std::filesystem::path golden_png_path(const std::filesystem::path& golden_dir,
 /// tolerance, or the strict default) and regenerates the report under the artifact root,
 /// one process at a time (a lock file in the root); a pass removes a stale failure
 /// directory of the same name. With `measure_noise`, every sidecar written carries the
-/// noise envelope it measures. Throws `GoldenError` for unreadable goldens or sidecars and
-/// failed writes, and whatever `produce` or `measure_noise` throws.
+/// noise envelope it measures. `produce_in_other_process` produces the same frame in a
+/// separate process; it is called when `settings.repeat` is 2 and before any golden is
+/// written, and a difference is *nondeterminism* (nothing written); the scene suites always
+/// pass one. Throws `GoldenError` for unreadable
+/// goldens or sidecars and failed writes, and whatever the callbacks throw.
 CheckOutcome run_golden_check(const std::string& name, const std::string& scene, int frame,
                               const FrameProducer& produce, const CheckSettings& settings,
-                              const NoiseMeasurer& measure_noise = nullptr);
+                              const NoiseMeasurer& measure_noise = nullptr,
+                              const FrameProducer& produce_in_other_process = nullptr);
 
 }  // namespace impulse2d::golden

@@ -22,7 +22,9 @@ std::string renderer_note(const GoldenCheck& check) {
 }  // namespace
 
 FailureClass classify_failure(const GoldenCheck& check) {
-  if (!check.second_render_identical) return FailureClass::Nondeterminism;
+  if (!check.second_render_identical || !check.other_process_identical) {
+    return FailureClass::Nondeterminism;
+  }
   if (!check.golden_present || !check.comparison) return FailureClass::MissingGolden;
   if (check.comparison->outcome == CompareOutcome::SizeMismatch) return FailureClass::SizeMismatch;
   if (check.expected_state_hash && *check.expected_state_hash != check.actual_state_hash) {
@@ -64,9 +66,18 @@ std::string failure_message(const GoldenCheck& check) {
       text << check.comparison->message();
       break;
     case FailureClass::Nondeterminism:
-      text << "simulating and rendering the same frame twice gave different results; "
-              "tolerance never absorbs this. Look for uninitialised memory, unordered "
-              "containers, thread-count-dependent reductions or time-dependent input";
+      if (!check.second_render_identical) {
+        text << "simulating and rendering the same frame twice in one process gave different "
+                "results; tolerance never absorbs this. Look for uninitialised memory, "
+                "unordered containers, thread-count-dependent reductions or time-dependent "
+                "input";
+      } else {
+        text << "the same frame simulated and rendered in two separate processes gave "
+                "different results (each process agrees with itself); tolerance never absorbs "
+                "this and no golden is written from it. Look for values that depend on the "
+                "process: addresses (pointer order or hashes under ASLR), the pid, the clock, "
+                "the environment";
+      }
       break;
     case FailureClass::MissingGolden:
       text << "no golden image exists. The actual image and its sidecar were written to "

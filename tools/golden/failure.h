@@ -21,7 +21,7 @@ namespace impulse2d::golden {
 /// The kinds of golden failure, most fundamental first.
 enum class FailureClass {
   None,                  ///< the check passed
-  Nondeterminism,        ///< two renders (or runs) of the same frame differ
+  Nondeterminism,        ///< two renders of the same frame differ (in one or two processes)
   MissingGolden,         ///< no golden image for this name
   SizeMismatch,          ///< golden and actual sizes differ
   /// The physics state hash differs from the sidecar's, which has no noise envelope.
@@ -50,6 +50,10 @@ struct GoldenCheck {
   /// and the same RGBA hash. Nondeterminism is a failure of its own, never absorbed by
   /// tolerance.
   bool second_render_identical = true;
+  /// True unless the frame was also produced in another process (`CheckSettings::repeat`,
+  /// or before a golden is written) and that gave a different state hash or RGBA hash: a
+  /// value that depends on the process (an address under ASLR, the pid, the clock).
+  bool other_process_identical = true;
   /// The judgement against the golden's noise envelope; present when the state hashes
   /// differ and the golden's sidecar has an envelope.
   std::optional<NoiseVerdict> noise;

@@ -81,7 +81,7 @@ std::string metrics_table(const json& metrics) {
          << "</td></tr>\n";
   };
   for (const char* key : {"expected_state_hash", "actual_state_hash", "second_render_identical",
-                          "expected_renderer", "actual_renderer"}) {
+                          "other_process_identical", "expected_renderer", "actual_renderer"}) {
     if (metrics.contains(key)) row(key, metrics[key]);
   }
   const json& comparison = metrics.value("comparison", json(nullptr));
