@@ -15,6 +15,7 @@
 #include "demos/scene_registry.h"
 #include "demos/usage_error.h"
 #include "tools/golden/diff_command.h"
+#include "tools/golden/diff_limits.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -124,6 +125,18 @@ int run_cli(int argc, char** argv) {
   diff_command->add_option("--out,-d", diff_out,
                            "on a mismatch, write expected/actual/diff/heatmap PNGs, "
                            "metrics.json and index.html into this directory");
+  golden::DiffLimits diff_limits;
+  diff_command->add_option("--max-diff-pixels", diff_limits.max_diff_pixels,
+                           "pass when at most this many pixels differ (default: none may)");
+  diff_command->add_option("--max-diff-ratio", diff_limits.max_diff_ratio,
+                           "pass when at most this fraction (0..1) of pixels differs");
+  diff_command->add_option("--threshold", diff_limits.threshold,
+                           "a pixel differs when a channel changes by more than this (0..255)")
+      ->capture_default_str();
+  diff_command->add_option("--mask", diff_limits.masks,
+                           "x,y,w,h: ignore this rectangle (pixels from the top-left; "
+                           "repeatable)")
+      ->take_all();
 
   lab::LabArguments lab_arguments;
   CLI::App* lab_command = app.add_subcommand(
@@ -203,7 +216,8 @@ int run_cli(int argc, char** argv) {
     } else if (tune_command->parsed()) {
       lab::run_tune(tune_arguments, std::cout);
     } else if (diff_command->parsed()) {
-      return golden::run_diff_command(diff_expected, diff_actual, diff_out, std::cout, std::cerr);
+      return golden::run_diff_command(diff_expected, diff_actual, diff_out, std::cout, std::cerr,
+                                      diff_limits);
     } else {
       RenderArguments demo;
       demo.scene.scene = default_scene().name;

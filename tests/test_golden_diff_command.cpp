@@ -89,16 +89,78 @@ TEST_F(GoldenDiffCommand, UnreadableInputIsAnErrorNamingTheFile) {
   EXPECT_FALSE(fs::exists(out_dir_));
 }
 
-TEST_F(GoldenDiffCommand, ToleranceCanAcceptSmallDeltas) {
+TEST_F(GoldenDiffCommand, ThresholdAcceptsSmallDeltasOnly) {
   Image changed = load_png(a_);
   set_pixel(changed, 3, 3, Rgba{11, 20, 30, 255});
+  set_pixel(changed, 4, 3, Rgba{10, 22, 30, 255});
   const fs::path b = temp_.path() / "b.png";
   save_png(b, changed);
-  Tolerance tolerance;
-  tolerance.max_channel_delta = 1;
-  out_.str("");
-  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, tolerance), kDiffSame);
+  DiffLimits limits;
+  limits.threshold = 2;
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffSame);
   EXPECT_NE(out_.str().find("within tolerance"), std::string::npos) << out_.str();
+  limits.threshold = 1;
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffDiffers);
+}
+
+/// a.png with `count` pixels of row 5 changed from column 0 on.
+fs::path with_changed_pixels(const fs::path& directory, const fs::path& a, int count) {
+  Image changed = load_png(a);
+  for (int x = 0; x < count; ++x) set_pixel(changed, x, 5, Rgba{200, 0, 0, 255});
+  const fs::path b = directory / ("b" + std::to_string(count) + ".png");
+  save_png(b, changed);
+  return b;
+}
+
+TEST_F(GoldenDiffCommand, MaxDiffPixelsAndRatioAreEachALimit) {
+  const fs::path b = with_changed_pixels(temp_.path(), a_, 4);  // 4 of 200 pixels: 0.02
+  DiffLimits limits;
+  limits.max_diff_pixels = 4;
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffSame);
+  limits.max_diff_pixels = 3;
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffDiffers);
+  limits.max_diff_pixels.reset();
+  limits.max_diff_ratio = 0.02;
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffSame);
+  limits.max_diff_ratio = 0.019;
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffDiffers);
+  limits.max_diff_pixels = 100;  // both given: both must hold
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffDiffers);
+}
+
+TEST_F(GoldenDiffCommand, MasksIgnoreTheirPixelsOnly) {
+  const fs::path b = with_changed_pixels(temp_.path(), a_, 4);
+  DiffLimits limits;
+  limits.masks = {"0,5,2,1", "2,4,2,3"};
+  out_.str("");
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffSame);
+  EXPECT_NE(out_.str().find("4 changed pixels inside 2 masks ignored"), std::string::npos)
+      << out_.str();
+  limits.masks = {"0,5,3,1"};  // leaves the fourth pixel
+  EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffDiffers);
+}
+
+TEST_F(GoldenDiffCommand, BadLimitsAreUsageErrorsNamingTheOption) {
+  const fs::path b = with_changed_pixels(temp_.path(), a_, 1);
+  const auto error_of = [&](const DiffLimits& limits) {
+    err_.str("");
+    EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffError);
+    return err_.str();
+  };
+  DiffLimits mask;
+  mask.masks = {"1,2,3"};
+  EXPECT_NE(error_of(mask).find("--mask '1,2,3': expected x,y,w,h"), std::string::npos);
+  mask.masks = {"1,2,0,4"};
+  EXPECT_NE(error_of(mask).find("width and height must be at least 1"), std::string::npos);
+  DiffLimits ratio;
+  ratio.max_diff_ratio = 1.5;
+  EXPECT_NE(error_of(ratio).find("--max-diff-ratio"), std::string::npos);
+  DiffLimits threshold;
+  threshold.threshold = 256;
+  EXPECT_NE(error_of(threshold).find("--threshold 256"), std::string::npos);
+  DiffLimits pixels;
+  pixels.max_diff_pixels = -1;
+  EXPECT_NE(error_of(pixels).find("--max-diff-pixels -1"), std::string::npos);
 }
 
 }  // namespace

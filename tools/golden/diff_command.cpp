@@ -80,8 +80,9 @@ fs::path write_artifacts_or_nothing(const fs::path& directory, const std::string
 
 int run_diff_command(const std::string& expected_png, const std::string& actual_png,
                      const std::string& out_dir, std::ostream& out, std::ostream& err,
-                     const Tolerance& tolerance) {
+                     const DiffLimits& limits) {
   try {
+    const Tolerance tolerance = tolerance_from_limits(limits, "command-line limits");
     const Image expected = load_png(expected_png);
     const Image actual = load_png(actual_png);
     const CompareResult result = compare_images(expected, actual, tolerance);
