@@ -126,7 +126,9 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
     check.expected_state_hash = golden_sidecar->state_hash;
     check.expected_renderer = golden_sidecar->renderer;
   }
-  const Tolerance tolerance = golden_sidecar ? golden_sidecar->tolerance : Tolerance{};
+  const Tolerance tolerance = settings.tolerance  ? *settings.tolerance
+                              : golden_sidecar ? golden_sidecar->tolerance
+                                               : Tolerance{};
 
   const ProducedFrame actual = produce();
   check.actual_state_hash = actual.state_hash;

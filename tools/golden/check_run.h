@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,9 @@ struct CheckSettings {
   /// fails as nondeterministic when the two differ. Writing a golden always compares with a
   /// second process (when the caller can produce one), whatever this says.
   int repeat = 1;
+  /// When set, the tolerance every check is held to (and that written sidecars carry),
+  /// instead of each golden sidecar's: a scene file's golden block.
+  std::optional<Tolerance> tolerance;
 };
 
 /// The outcome of `run_golden_check`.

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "demos/scene_loader.h"
 #include "demos/scene_registry.h"
 #include "demos/trace_writer.h"
 #include "tools/golden/error.h"
@@ -20,10 +21,14 @@ std::string body_name(BodyId id) {
 }  // namespace
 
 GoldenRun::GoldenRun(const GoldenSpec& spec, const SceneVariant& variant) {
-  const demos::Scene* builtin = demos::find_builtin_scene(spec.scene);
-  if (builtin == nullptr)
-    throw GoldenError("golden '" + spec.id() + "': no built-in scene '" + spec.scene + "'");
-  scene_ = std::make_unique<demos::Scene>(*builtin);
+  if (!spec.scene_file.empty()) {
+    scene_ = std::make_unique<demos::Scene>(demos::load_scene_file(spec.scene_file));
+  } else {
+    const demos::Scene* builtin = demos::find_builtin_scene(spec.scene);
+    if (builtin == nullptr)
+      throw GoldenError("golden '" + spec.id() + "': no built-in scene '" + spec.scene + "'");
+    scene_ = std::make_unique<demos::Scene>(*builtin);
+  }
   if (variant) variant(*scene_);
   demos::Params params(scene_->params);
   for (const auto& [name, value] : spec.params) params.set(name, value);

@@ -23,9 +23,9 @@ using SceneVariant = std::function<void(demos::Scene&)>;
 /// A golden's scene built and ready to step; owns the scene copy its run refers to.
 class GoldenRun {
  public:
-  /// Copies `spec`'s built-in scene, applies `variant` (when given), sets `spec.params` over
-  /// the scene's defaults and builds the world. Throws `GoldenError` for an unknown scene,
-  /// and whatever the scene's run throws.
+  /// Copies `spec`'s built-in scene (or loads `spec.scene_file`), applies `variant` (when
+  /// given), sets `spec.params` over the scene's defaults and builds the world. Throws
+  /// `GoldenError` for an unknown scene, and whatever loading or the scene's run throws.
   explicit GoldenRun(const GoldenSpec& spec, const SceneVariant& variant = nullptr);
 
   /// The scene as run (variant applied).

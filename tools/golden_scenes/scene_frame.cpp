@@ -9,6 +9,7 @@
 #include "demos/scene_run.h"
 #include "tools/golden_scenes/golden_run.h"
 #include "render/frame_renderer.h"
+#include "tools/golden/error.h"
 
 namespace impulse2d::golden {
 
@@ -31,6 +32,11 @@ render::FrameRenderer& shared_golden_renderer() {
 
 ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
                                   const SceneVariant& variant) {
+  if (renderer.width() != spec.width || renderer.height() != spec.height) {
+    throw GoldenError("golden '" + spec.id() + "' is " + std::to_string(spec.width) + "x" +
+                      std::to_string(spec.height) + ", the renderer draws " +
+                      std::to_string(renderer.width()) + "x" + std::to_string(renderer.height()));
+  }
   GoldenRun golden_run(spec, variant);
   const demos::Scene& scene = golden_run.scene();
   demos::SceneRun& run = golden_run.run();
@@ -44,6 +50,7 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
 
   render::FrameOptions options;
   options.draw = scene.view.draw;
+  options.theme = spec.dark_theme ? render::Theme::Dark : render::Theme::Light;
   if (spec.overlays != 0) options.draw.flags = spec.overlays;
   options.extra_overlays = run.script_overlays();
   render::HudInfo hud;
@@ -61,6 +68,10 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
 
 FrameProducer scene_frame_producer(const GoldenSpec& spec, const SceneVariant& variant) {
   return [spec, variant] { return produce_scene_frame(spec, shared_golden_renderer(), variant); };
+}
+
+FrameProducer scene_frame_producer(const GoldenSpec& spec, render::FrameRenderer& renderer) {
+  return [spec, &renderer] { return produce_scene_frame(spec, renderer); };
 }
 
 }  // namespace impulse2d::golden

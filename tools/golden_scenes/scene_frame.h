@@ -25,13 +25,18 @@ render::FrameRenderer& shared_golden_renderer();
 
 /// Simulates `spec`'s scene (with `variant` applied, when given) from scratch to `spec.step`
 /// with the scene's camera, then renders it with the HUD and legend as `impulse2d` draws
-/// them, with the body poses (`body_poses`) and the physics samples at
+/// them (dark theme when `spec.dark_theme`), with the body poses (`body_poses`) and the physics samples at
 /// `noise_checkpoint_steps(spec.step)` the noise envelope is judged on. Throws `GoldenError`
-/// for an unknown scene, and whatever the scene's run throws.
+/// for an unknown scene or a renderer of another size than the golden's, and whatever the
+/// scene's run throws.
 ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
                                   const SceneVariant& variant = nullptr);
 
 /// A `FrameProducer` of `produce_scene_frame` on the shared renderer.
 FrameProducer scene_frame_producer(const GoldenSpec& spec, const SceneVariant& variant = nullptr);
+
+/// A `FrameProducer` of `produce_scene_frame` on `renderer` (of the golden's size), which
+/// must outlive it.
+FrameProducer scene_frame_producer(const GoldenSpec& spec, render::FrameRenderer& renderer);
 
 }  // namespace impulse2d::golden
