@@ -26,3 +26,20 @@ impulse2d_add_test(test_golden_harness
           ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_diff_command.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_noise_envelope.cpp
   LIBS impulse2d_golden)
+
+# `impulse2d golden` as a user's CI runs it, on copies of examples/golden_project.
+impulse2d_add_test(test_golden_command
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_command.cpp
+  LIBS impulse2d_golden)
+target_compile_definitions(test_golden_command PRIVATE
+  IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>"
+  IMPULSE2D_EXAMPLE_PROJECT="${PROJECT_SOURCE_DIR}/examples/golden_project")
+add_dependencies(test_golden_command impulse2d)
+
+# The example project checked exactly as its README's CI job does.
+file(GLOB example_scenes CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/examples/golden_project/scenes/*.json)
+add_test(NAME ExampleProjectGoldens
+         COMMAND impulse2d golden check ${example_scenes} --repeat 2
+                 --report ${PROJECT_BINARY_DIR}/example_golden_report
+                 --junit ${PROJECT_BINARY_DIR}/example_golden_report.xml
+         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/examples/golden_project)

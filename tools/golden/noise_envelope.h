@@ -32,7 +32,8 @@ struct PhysicsSample {
 };
 
 /// One checkpoint of the envelope: the golden run's quantities and how far the perturbed
-/// runs strayed from them (each field of `spread` is the largest |perturbed - golden|).
+/// runs strayed from them (each field of `spread` is the largest |perturbed - golden| at
+/// this checkpoint or an earlier one: noise, once there, persists in some quantity).
 struct NoiseCheckpoint {
   PhysicsSample golden;  ///< the golden run at this step
   PhysicsSample spread;  ///< the noise of each quantity (its `step` equals golden.step)

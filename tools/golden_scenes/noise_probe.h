@@ -15,8 +15,8 @@ namespace impulse2d::golden {
 /// The envelope of `spec` (with `variant` applied to every run) under eight perturbations
 /// of a float input by 1 and by 16 units in the last place (the size of the rounding
 /// differences a reordered sum or another compiler makes): the time step by +-1 and +-16
-/// ulps, gravity's y and the x position of the first dynamic body the scene builds (when it
-/// builds one) by +1 and -16 ulps.
+/// ulps, gravity's y, and the position (x and y) of every dynamic body the scene builds, by
+/// +1 and -16 ulps.
 NoiseEnvelope measure_noise_envelope(const GoldenSpec& spec, const SceneVariant& variant = nullptr);
 
 /// A `NoiseMeasurer` of `measure_noise_envelope`.
