@@ -132,6 +132,49 @@ TEST_F(GoldenCommand, MissingGoldenFailsAndUpdateWritesIt) {
   EXPECT_EQ(check().status, 0);
 }
 
+TEST_F(GoldenCommand, AnotherRendererChecksThePhysicsUntilItHasItsOwnBaseline) {
+  const std::string softpipe = "CI= GALLIUM_DRIVER=softpipe";
+  const fs::path goldens = project_ / "scenes" / "goldens" / "dominoes";
+  const std::string primary = read_text_file(goldens / "start.png");
+  const Result physics_only = run("check scenes/dominoes.json --junit junit.xml", softpipe);
+  EXPECT_EQ(physics_only.status, 0) << physics_only.out << physics_only.err;
+  EXPECT_NE(physics_only.out.find("skip golden 'dominoes/start': no baseline for this renderer: "
+                                  "physics checked and matches"),
+            std::string::npos)
+      << physics_only.out;
+  EXPECT_NE(physics_only.out.find("impulse2d golden update"), std::string::npos);
+  EXPECT_NE(physics_only.out.find("(3 by their physics only"), std::string::npos);
+  EXPECT_NE(junit().find("skipped=\"3\""), std::string::npos) << junit();
+
+  // The physics is still checked on that renderer.
+  const fs::path scene = project_ / "scenes" / "dominoes.json";
+  const std::string original_scene = read_text_file(scene);
+  edit_scene("dominoes.json", [](json& file) { file["events"][0]["impulse"][0] = 0.42; });
+  const Result changed = run("check scenes/dominoes.json", softpipe);
+  EXPECT_EQ(changed.status, 1) << changed.out;
+  EXPECT_NE(changed.out.find("golden 'dominoes/falling': behaviour changed"), std::string::npos)
+      << changed.out;
+  EXPECT_NE(changed.out.find("Image: not compared (no baseline for this renderer"),
+            std::string::npos)
+      << changed.out;
+  write_text_file_atomically(scene, original_scene);
+
+  // update adds the renderer's baseline beside the golden, which stays as it was.
+  const Result update = run("update scenes/dominoes.json", softpipe);
+  EXPECT_EQ(update.status, 0) << update.out << update.err;
+  EXPECT_NE(update.out.find("WROTE dominoes/start"), std::string::npos) << update.out;
+  EXPECT_EQ(read_text_file(goldens / "start.png"), primary);
+  int baselines = 0;
+  for (const auto& entry : fs::directory_iterator(goldens)) {
+    baselines += entry.path().filename().string().rfind("start@softpipe-", 0) == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(baselines, 2) << "start@softpipe-<key>.png and its .json";
+  const Result pixels = run("check scenes/dominoes.json", softpipe);
+  EXPECT_EQ(pixels.status, 0) << pixels.out;
+  EXPECT_NE(pixels.out.find("ok   dominoes/start"), std::string::npos) << pixels.out;
+  EXPECT_EQ(check().status, 0) << "the default renderer still uses the golden itself";
+}
+
 TEST_F(GoldenCommand, BadBlockIsAnInputErrorWithNothingWritten) {
   edit_scene("dominoes.json", [](json& scene) { scene["golden"]["frames"][1]["step"] = -3; });
   const Result result = check();

@@ -11,6 +11,7 @@
 #include "tools/golden/artifacts.h"
 #include "tools/golden/compare.h"
 #include "tools/golden/error.h"
+#include "tools/golden/renderer_baseline.h"
 #include "tools/golden/report.h"
 
 namespace impulse2d::golden {
@@ -122,17 +123,37 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
   std::optional<Sidecar> golden_sidecar;
   if (check.golden_present) {
     golden_sidecar = read_sidecar(sidecar_file, name + ".json");
-    expected = load_png(png);
     check.expected_state_hash = golden_sidecar->state_hash;
     check.expected_renderer = golden_sidecar->renderer;
   }
-  const Tolerance tolerance = settings.tolerance  ? *settings.tolerance
-                              : golden_sidecar ? golden_sidecar->tolerance
-                                               : Tolerance{};
 
   const ProducedFrame actual = produce();
   check.actual_state_hash = actual.state_hash;
   check.actual_renderer = actual.renderer;
+
+  // The pixels are compared with the golden's own, or with the baseline of this run's
+  // renderer when another renderer made the golden; the physics always with the golden's.
+  fs::path pixel_png = png;
+  Tolerance tolerance = golden_sidecar ? golden_sidecar->tolerance : Tolerance{};
+  const bool other_renderer = golden_sidecar && !golden_sidecar->renderer.gl_renderer.empty() &&
+                              !actual.renderer.gl_renderer.empty() &&
+                              golden_sidecar->renderer != actual.renderer;
+  if (other_renderer) {
+    pixel_png = renderer_baseline_png(settings.golden_dir, name, actual.renderer);
+    check.renderer_baseline = pixel_png.lexically_relative(settings.golden_dir).generic_string();
+    if (fs::exists(pixel_png) && fs::exists(sidecar_path_for(pixel_png))) {
+      const Sidecar baseline =
+          read_sidecar(sidecar_path_for(pixel_png), check.renderer_baseline);
+      check.expected_renderer = baseline.renderer;
+      tolerance = baseline.tolerance;
+      expected = load_png(pixel_png);
+    } else {
+      check.renderer_baseline_missing = true;
+    }
+  } else if (check.golden_present) {
+    expected = load_png(png);
+  }
+  if (settings.tolerance) tolerance = *settings.tolerance;
   if (expected) check.comparison = compare_images(*expected, actual.image, tolerance);
 
   if (!matches(check)) {
@@ -155,21 +176,25 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
   };
   outcome.failure_class = classify_failure(check);
   if (settings.repeat >= 2) compare_with_other_process();
-  if (should_write_golden(settings.update_mode, outcome.failure_class)) {
-    compare_with_other_process();
-  }
+  // Another renderer's baseline is written only when the physics is the golden's: the
+  // golden's own sidecar stays the physics authority.
+  auto may_write = [&] {
+    return should_write_golden(settings.update_mode, outcome.failure_class) &&
+           (!other_renderer || actual.state_hash == golden_sidecar->state_hash);
+  };
+  if (may_write()) compare_with_other_process();
 
   Sidecar actual_sidecar = sidecar_for(scene, frame, actual, tolerance);
-  const bool write_golden = should_write_golden(settings.update_mode, outcome.failure_class);
+  const bool write_golden = may_write();
   const bool promotable = outcome.failure_class != FailureClass::Nondeterminism;
   const bool write_artifacts = !settings.artifact_root.empty() &&
                                outcome.failure_class != FailureClass::None && !write_golden;
-  if (measure_noise && (write_golden || (write_artifacts && promotable))) {
+  if (measure_noise && !other_renderer && (write_golden || (write_artifacts && promotable))) {
     actual_sidecar.noise = measure_noise();
   }
   if (write_golden) {
-    save_png(png, actual.image);
-    write_sidecar(sidecar_file, actual_sidecar);
+    save_png(pixel_png, actual.image);
+    write_sidecar(sidecar_path_for(pixel_png), actual_sidecar);
     outcome.golden_written = true;
   }
 

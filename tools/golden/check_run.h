@@ -68,8 +68,12 @@ struct CheckOutcome {
   /// The regenerated HTML report; empty when none was written.
   std::filesystem::path report;
 
-  /// True when the frame matched its golden or the run wrote the golden on request.
-  bool passed() const { return failure_class == FailureClass::None || golden_written; }
+  /// True when the frame matched its golden, the run wrote the golden on request, or only
+  /// the physics could be checked (another renderer, no baseline for it) and matched.
+  bool passed() const {
+    return failure_class == FailureClass::None ||
+           failure_class == FailureClass::NoRendererBaseline || golden_written;
+  }
   /// `failure_message(check)`, then where the artifacts and report are; for passes, a line
   /// saying so (and that the golden was written, when it was).
   std::string message() const;
@@ -87,6 +91,10 @@ std::filesystem::path golden_png_path(const std::filesystem::path& golden_dir,
                                       const std::string& name);
 
 /// Runs one check. The golden counts as present when both its PNG and its sidecar exist.
+/// When this run's renderer is not the golden's, the pixels are compared with (and written
+/// to) that renderer's baseline (`renderer_baseline_png`) and the physics with the golden's
+/// sidecar; without a baseline the class is NoRendererBaseline when the physics matches,
+/// and a write mode writes the baseline (never when the physics differs).
 /// A failure writes `write_failure_artifacts` (the actual's sidecar carries the golden's
 /// tolerance, or the strict default) and regenerates the report under the artifact root,
 /// one process at a time (a lock file in the root); a pass removes a stale failure

@@ -12,6 +12,14 @@ namespace {
 /// How many envelope escapes a message names.
 constexpr std::size_t kEscapesNamed = 5;
 
+/// "Image: <comparison>", or why the pixels were not compared.
+std::string image_text(const GoldenCheck& check) {
+  if (check.renderer_baseline_missing || !check.comparison) {
+    return "Image: not compared (no baseline for this renderer, " + check.renderer_baseline + ")";
+  }
+  return "Image: " + check.comparison->message();
+}
+
 /// ". Renderer differs: golden drawn by X, this run by Y" when the fingerprints differ.
 std::string renderer_note(const GoldenCheck& check) {
   if (check.expected_renderer == check.actual_renderer) return "";
@@ -25,12 +33,18 @@ FailureClass classify_failure(const GoldenCheck& check) {
   if (!check.second_render_identical || !check.other_process_identical) {
     return FailureClass::Nondeterminism;
   }
-  if (!check.golden_present || !check.comparison) return FailureClass::MissingGolden;
-  if (check.comparison->outcome == CompareOutcome::SizeMismatch) return FailureClass::SizeMismatch;
+  if (!check.golden_present) return FailureClass::MissingGolden;
+  if (!check.renderer_baseline_missing) {
+    if (!check.comparison) return FailureClass::MissingGolden;
+    if (check.comparison->outcome == CompareOutcome::SizeMismatch) {
+      return FailureClass::SizeMismatch;
+    }
+  }
   if (check.expected_state_hash && *check.expected_state_hash != check.actual_state_hash) {
     if (!check.noise) return FailureClass::SimulationDiverged;
     return check.noise->within() ? FailureClass::NumericalNoise : FailureClass::BehaviourChanged;
   }
+  if (check.renderer_baseline_missing) return FailureClass::NoRendererBaseline;
   if (!check.comparison->passed()) return FailureClass::RasterisationDiffers;
   return FailureClass::None;
 }
@@ -45,6 +59,7 @@ std::string failure_class_name(FailureClass failure_class) {
     case FailureClass::NumericalNoise: return "numerical noise";
     case FailureClass::BehaviourChanged: return "behaviour changed";
     case FailureClass::RasterisationDiffers: return "rasterisation differs";
+    case FailureClass::NoRendererBaseline: return "no baseline for this renderer";
   }
   return "unknown";
 }
@@ -91,8 +106,8 @@ std::string failure_message(const GoldenCheck& check) {
     case FailureClass::SimulationDiverged:
       text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
            << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
-           << ". Bodies that moved most: " << describe_drifts(check.moved_bodies)
-           << ". Image: " << check.comparison->message();
+           << ". Bodies that moved most: " << describe_drifts(check.moved_bodies) << ". "
+           << image_text(check);
       break;
     case FailureClass::NumericalNoise:
       text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
@@ -100,7 +115,7 @@ std::string failure_message(const GoldenCheck& check) {
            << ", but " << check.noise->describe(kEscapesNamed)
            << ": a chaotic scene amplified a rounding change (reordered arithmetic, another "
               "compiler or flag). Review the images and promote. Bodies that moved most: "
-           << describe_drifts(check.moved_bodies) << ". Image: " << check.comparison->message();
+           << describe_drifts(check.moved_bodies) << ". " << image_text(check);
       break;
     case FailureClass::BehaviourChanged:
       text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
@@ -109,8 +124,16 @@ std::string failure_message(const GoldenCheck& check) {
               "do to this scene): "
            << check.noise->describe(kEscapesNamed)
            << ". A physics change, not rounding: fix it, or promote only if it was meant. "
-              "Image: "
-           << check.comparison->message();
+           << image_text(check);
+      break;
+    case FailureClass::NoRendererBaseline:
+      text << "physics checked and matches (state hash " << to_hex_hash(check.actual_state_hash)
+           << "); pixels not compared: the golden was drawn by '"
+           << check.expected_renderer.describe() << "', this run by '"
+           << check.actual_renderer.describe() << "', and there is no baseline for it. Add one "
+           << "(written as " << check.renderer_baseline
+           << ") with GOLDEN_UPDATE=missing ctest -R GoldenScenes (built-in goldens) or "
+              "impulse2d golden update <scene file>";
       break;
     case FailureClass::RasterisationDiffers:
       text << "physics state matches (hash " << to_hex_hash(check.actual_state_hash)

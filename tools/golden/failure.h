@@ -33,6 +33,9 @@ enum class FailureClass {
   /// physics behaves differently (a regression unless intended).
   BehaviourChanged,
   RasterisationDiffers,  ///< same physics state, pixels beyond tolerance
+  /// Drawn by another renderer than the golden, with no baseline for it: the physics was
+  /// checked and matches, the pixels could not be. Not a failure.
+  NoRendererBaseline,
 };
 
 /// Everything known about one golden check; the caller fills what it measured.
@@ -59,6 +62,12 @@ struct GoldenCheck {
   std::optional<NoiseVerdict> noise;
   /// The bodies that moved most relative to the golden run (see `largest_drifts`).
   std::vector<BodyDrift> moved_bodies;
+  /// True when this run's renderer differs from the golden's and no baseline for it exists:
+  /// only the physics is checked.
+  bool renderer_baseline_missing = false;
+  /// The renderer baseline this run's pixels would be compared with (or written to), relative
+  /// to the golden directory; empty when the golden's own renderer drew the frame.
+  std::string renderer_baseline;
   /// The renderer recorded in the golden's sidecar.
   RendererFingerprint expected_renderer;
   /// The renderer of this run.
@@ -67,8 +76,8 @@ struct GoldenCheck {
 
 /// Classifies a check: Nondeterminism, then MissingGolden, SizeMismatch; when the state
 /// hashes differ (whatever the pixels say) NumericalNoise or BehaviourChanged by `noise`, or
-/// SimulationDiverged without one; RasterisationDiffers (same state, the comparison
-/// failed), else None.
+/// SimulationDiverged without one; then NoRendererBaseline when the pixels had nothing to be
+/// compared with; RasterisationDiffers (same state, the comparison failed), else None.
 FailureClass classify_failure(const GoldenCheck& check);
 
 /// Human name of a class, e.g. "simulation diverged".

@@ -15,6 +15,7 @@ struct JUnitCase {
   std::string name;       ///< the golden frame, e.g. "landed"
   double seconds = 0.0;   ///< how long the check took
   bool failed = false;    ///< true for a failure
+  std::string skipped;    ///< why only part was checked (e.g. no baseline); empty: none
   std::string failure_type;     ///< the failure class id, e.g. "behaviour_changed"
   std::string failure_message;  ///< the full failure message
 };

@@ -69,7 +69,8 @@ bool should_write_golden(UpdateMode mode, FailureClass outcome) {
   if (outcome == FailureClass::Nondeterminism) return false;
   switch (mode) {
     case UpdateMode::None: return false;
-    case UpdateMode::Missing: return outcome == FailureClass::MissingGolden;
+    case UpdateMode::Missing:
+      return outcome == FailureClass::MissingGolden || outcome == FailureClass::NoRendererBaseline;
     case UpdateMode::Changed: return outcome != FailureClass::None;
     case UpdateMode::All: return true;
   }

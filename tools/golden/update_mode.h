@@ -12,7 +12,7 @@ namespace impulse2d::golden {
 /// Which goldens a run writes.
 enum class UpdateMode {
   None,     ///< never write goldens; a missing golden fails (the default)
-  Missing,  ///< write goldens that do not exist yet; compare the rest
+  Missing,  ///< write goldens (and renderer baselines) that do not exist yet; compare the rest
   Changed,  ///< write missing goldens and those that fail their comparison
   All,      ///< rewrite every golden
 };
