@@ -11,6 +11,7 @@ if(TARGET impulse2d_golden_scenes)
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_threads.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_child.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_processes.cpp
+            ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_metadata.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_support.cpp
             ${CMAKE_CURRENT_SOURCE_DIR}/test_render_support.cpp
     LIBS impulse2d_golden_scenes)

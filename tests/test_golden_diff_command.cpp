@@ -163,5 +163,43 @@ TEST_F(GoldenDiffCommand, BadLimitsAreUsageErrorsNamingTheOption) {
   EXPECT_NE(error_of(pixels).find("--max-diff-pixels -1"), std::string::npos);
 }
 
+/// A 20x10 frame with the metadata the golden tools write.
+Image frame_with_metadata(const std::string& state_hash, const std::string& renderer) {
+  Image image = make_image(20, 10, Rgba{10, 20, 30, 255});
+  image.text = {{png_keys::kScene, "stack"},       {png_keys::kParameters, "defaults"},
+                {png_keys::kStep, "60"},           {png_keys::kTime, "1"},
+                {png_keys::kStateHash, state_hash}, {png_keys::kRenderer, renderer},
+                {png_keys::kSoftware, "impulse2d 0.1.0"}};
+  return image;
+}
+
+TEST_F(GoldenDiffCommand, MetadataRoundTripsAndTellsPhysicsFromPixels) {
+  const fs::path a = temp_.path() / "meta_a.png";
+  const fs::path b = temp_.path() / "meta_b.png";
+  const fs::path c = temp_.path() / "meta_c.png";
+  save_png(a, frame_with_metadata("00000000000000aa", "llvmpipe"));
+  Image moved = frame_with_metadata("00000000000000bb", "llvmpipe");
+  set_pixel(moved, 3, 3, Rgba{200, 0, 0, 255});
+  save_png(b, moved);
+  Image redrawn = frame_with_metadata("00000000000000aa", "softpipe");
+  set_pixel(redrawn, 3, 3, Rgba{11, 20, 30, 255});
+  save_png(c, redrawn);
+  EXPECT_EQ(load_png(a).text.at(png_keys::kStateHash), "00000000000000aa");
+  EXPECT_EQ(load_png(a).pixels, make_image(20, 10, Rgba{10, 20, 30, 255}).pixels);
+
+  out_.str("");
+  EXPECT_EQ(run_diff_command(a.string(), b.string(), "", out_, err_), kDiffDiffers);
+  EXPECT_NE(out_.str().find("state 00000000000000aa"), std::string::npos) << out_.str();
+  EXPECT_NE(out_.str().find("Physics state differs: simulation diverged"), std::string::npos)
+      << out_.str();
+  out_.str("");
+  EXPECT_EQ(run_diff_command(a.string(), c.string(), "", out_, err_), kDiffDiffers);
+  EXPECT_NE(out_.str().find("Same physics state, different renderers"), std::string::npos)
+      << out_.str();
+  out_.str("");
+  EXPECT_EQ(run(b), kDiffDiffers);  // a.png of the fixture has no metadata: no verdict line
+  EXPECT_EQ(out_.str().find("metadata:"), std::string::npos) << out_.str();
+}
+
 }  // namespace
 }  // namespace impulse2d::golden

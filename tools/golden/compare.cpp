@@ -62,7 +62,7 @@ DiffMetrics measure(const Image& expected, const Image& actual, const Tolerance&
     for (int x = 0; x < width; ++x) {
       const std::size_t offset = expected.offset(x, y);
       if (std::any_of(tolerance.masks.begin(), tolerance.masks.end(),
-                      [x, y](const MaskRect& mask) { return mask.contains(x, y); })) {
+                      [x, y](const MaskRect& rect) { return rect.contains(x, y); })) {
         if (max_channel_delta_at(expected, actual, x, y) > 0) ++metrics.masked_pixels;
         continue;
       }

@@ -19,7 +19,9 @@ inline constexpr int kDiffDiffers = 1;
 inline constexpr int kDiffError = 2;
 
 /// Compares `expected_png` (a) with `actual_png` (b) under the tolerance `limits` describe
-/// (strict by default) and prints one verdict paragraph to `out`. When they are not an exact match and `out_dir`
+/// (strict by default) and prints one verdict paragraph to `out`; when both PNGs carry the
+/// golden tools' metadata (png_text.h), a second line says what they were and whether the
+/// physics state or only the pixels differ. When they are not an exact match and `out_dir`
 /// is not empty, writes into it expected.png, actual.png, diff.png and heatmap.png (the last
 /// two when the sizes agree), metrics.json and index.html, and prints the report's path.
 /// Errors go to `err`, naming the file or option. Returns kDiffSame, kDiffDiffers or

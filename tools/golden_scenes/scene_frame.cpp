@@ -1,6 +1,8 @@
 /// @file scene_frame.cpp
 #include "tools/golden_scenes/scene_frame.h"
 
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 #include "demos/frame_sequence.h"
@@ -10,6 +12,7 @@
 #include "tools/golden_scenes/golden_run.h"
 #include "render/frame_renderer.h"
 #include "tools/golden/error.h"
+#include "tools/golden/hex_hash.h"
 
 namespace impulse2d::golden {
 
@@ -24,6 +27,25 @@ RendererFingerprint split_fingerprint(const std::string& fingerprint) {
 }
 
 }  // namespace
+
+PngText frame_metadata(const GoldenSpec& spec, const World& world,
+                       const RendererFingerprint& renderer) {
+  std::string parameters;
+  for (const auto& [name, value] : spec.params) {
+    parameters += (parameters.empty() ? "" : " ") + name + "=" + value;
+  }
+  std::ostringstream time;
+  time << std::setprecision(9) << world.time();
+  PngText text;
+  text[png_keys::kSoftware] = std::string("impulse2d ") + IMPULSE2D_VERSION;
+  text[png_keys::kScene] = spec.scene_file.empty() ? spec.scene : spec.scene + " (" + spec.scene_file + ")";
+  text[png_keys::kParameters] = parameters.empty() ? "defaults" : parameters;
+  text[png_keys::kStep] = std::to_string(world.step_count());
+  text[png_keys::kTime] = time.str();
+  text[png_keys::kStateHash] = to_hex_hash(world.state_hash());
+  text[png_keys::kRenderer] = renderer.describe();
+  return text;
+}
 
 render::FrameRenderer& shared_golden_renderer() {
   static render::FrameRenderer renderer(kGoldenWidth, kGoldenHeight);
@@ -59,10 +81,11 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
   const render::Frame frame =
       renderer.render(run.world(), demos::frame_camera(camera, run), options, hud);
 
-  produced.image = Image{frame.width, frame.height, frame.rgba};
+  produced.image = Image{frame.width, frame.height, frame.rgba, {}};
   produced.state_hash = run.world().state_hash();
   produced.bodies = body_poses(run.world());
   produced.renderer = split_fingerprint(renderer.fingerprint());
+  produced.image.text = frame_metadata(spec, run.world(), produced.renderer);
   return produced;
 }
 

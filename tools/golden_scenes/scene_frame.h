@@ -13,11 +13,20 @@ namespace impulse2d::demos {
 struct Scene;
 }
 
+namespace impulse2d {
+class World;
+}
+
 namespace impulse2d::render {
 class FrameRenderer;
 }
 
 namespace impulse2d::golden {
+
+/// What a golden frame's PNG says about itself (png_text.h): scene (and file), parameter
+/// overrides, step, simulated time, state hash, renderer and program version.
+PngText frame_metadata(const GoldenSpec& spec, const World& world,
+                       const RendererFingerprint& renderer);
 
 /// The renderer of this process at kGoldenWidth x kGoldenHeight, created on first use and
 /// shared by every golden check in the process (one OSMesa context per process).
