@@ -199,10 +199,18 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
   }
 
   if (settings.artifact_root.empty()) return outcome;
+  // Another renderer's failure is filed under its baseline's name, so promoting it writes
+  // that baseline and never the golden; with other physics it is not promotable at all.
+  GoldenCheck artifact_check = check;
+  if (other_renderer) {
+    artifact_check.name = fs::path(check.renderer_baseline).replace_extension().generic_string();
+  }
+  const bool promote_sidecar =
+      promotable && (!other_renderer || actual.state_hash == golden_sidecar->state_hash);
   const RootLock lock(settings.artifact_root);
   if (outcome.passed()) {
     // A failure of an earlier run must not linger in the report once the golden passes.
-    const fs::path stale = settings.artifact_root / fs::path(name);
+    const fs::path stale = settings.artifact_root / fs::path(artifact_check.name);
     if (fs::exists(stale / "metrics.json")) {
       fs::remove_all(stale);
       for (fs::path parent = stale.parent_path();
@@ -214,9 +222,9 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
     }
     return outcome;
   }
-  outcome.artifact_dir = write_failure_artifacts(settings.artifact_root, check, actual.image,
-                                                 expected ? &*expected : nullptr,
-                                                 promotable ? &actual_sidecar : nullptr);
+  outcome.artifact_dir = write_failure_artifacts(settings.artifact_root, artifact_check,
+                                                 actual.image, expected ? &*expected : nullptr,
+                                                 promote_sidecar ? &actual_sidecar : nullptr);
   write_html_report(settings.artifact_root);
   outcome.report = settings.artifact_root / "index.html";
   return outcome;

@@ -36,7 +36,8 @@ struct ProducedFrame {
 /// time only when the first result does not match the golden (or there is none).
 using FrameProducer = std::function<ProducedFrame()>;
 
-/// Measures the golden's noise envelope (reruns of its scene with one-ulp perturbations).
+/// Measures the golden's noise envelope (reruns of its scene with rounding-sized
+/// perturbations).
 /// Called only when a sidecar is about to be written: a golden, or a failure's promotable
 /// actual.json.
 using NoiseMeasurer = std::function<NoiseEnvelope()>;

@@ -5,7 +5,7 @@
 /// noise* (a chaotic scene amplified a rounding change), one beyond it is *behaviour
 /// changed*, naming the bodies and quantities that left the envelope.
 ///
-/// The envelope is measured by rerunning the golden's scene with one-ulp perturbations
+/// The envelope is measured by rerunning the golden's scene with perturbations of 1 and 16 ulps
 /// (tools/golden_scenes/noise_probe.h); this file holds the data and the pure judgement,
 /// no physics.
 

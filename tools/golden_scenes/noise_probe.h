@@ -1,7 +1,7 @@
 #pragma once
 /// @file noise_probe.h
 /// Measures a golden's noise envelope: the scene run as the golden runs it and, side by
-/// side, runs with one-ulp perturbations of its inputs; how far each perturbed run strays
+/// side, runs with its inputs perturbed by 1 and 16 ulps; how far each perturbed run strays
 /// from the unperturbed one, per body over every step up to the golden's frame and per
 /// whole-world quantity at the checkpoint steps, is what rounding alone can do to the scene.
 
