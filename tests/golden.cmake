@@ -1,8 +1,9 @@
 # The golden-image suite: one test per golden of the built-in scenes, the golden inventory
 # (unused or unpaired files), sensitivity to small physics changes (behaviour changed),
 # rounding changes classed as numerical noise, cross-process nondeterminism, insensitivity to
-# the rasteriser's thread count (child processes), PNG metadata. Goldens live in golden_images/; failures leave
-# their artifacts and index.html in GOLDEN_ARTIFACT_DIR (default: <build>/golden_artifacts).
+# the rasteriser's thread count (child processes), PNG metadata. Goldens live in
+# golden_images/; failures leave their artifacts and index.html in GOLDEN_ARTIFACT_DIR
+# (default: <build>/golden_artifacts).
 if(TARGET impulse2d_golden_scenes)
   impulse2d_add_test(test_golden
     SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_golden_scenes.cpp
