@@ -37,10 +37,6 @@ class FieldReader {
   const nlohmann::json& array(const std::string& field) const;
   /// Throws for the first field not in `known`.
   void reject_unknown(const std::set<std::string>& known) const;
-  /// The origin given at construction, e.g. "sidecar 'circles/start.json'".
-  const std::string& origin() const { return origin_; }
-  /// The path prefix given at construction.
-  const std::string& prefix() const { return prefix_; }
 
  private:
   const nlohmann::json& object_;
