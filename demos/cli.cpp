@@ -15,6 +15,8 @@
 #include "demos/scene_registry.h"
 #include "demos/usage_error.h"
 #include "tools/golden/diff_command.h"
+#include "tools/golden/diff_limits.h"
+#include "tools/golden_scenes/golden_command.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -124,6 +126,46 @@ int run_cli(int argc, char** argv) {
   diff_command->add_option("--out,-d", diff_out,
                            "on a mismatch, write expected/actual/diff/heatmap PNGs, "
                            "metrics.json and index.html into this directory");
+  golden::DiffLimits diff_limits;
+  diff_command->add_option("--max-diff-pixels", diff_limits.max_diff_pixels,
+                           "pass when at most this many pixels differ (default: none may)");
+  diff_command->add_option("--max-diff-ratio", diff_limits.max_diff_ratio,
+                           "pass when at most this fraction (0..1) of pixels differs");
+  diff_command->add_option("--threshold", diff_limits.threshold,
+                           "a pixel differs when a channel changes by more than this (0..255)")
+      ->capture_default_str();
+  diff_command->add_option("--mask", diff_limits.masks,
+                           "x,y,w,h: ignore this rectangle (pixels from the top-left; "
+                           "repeatable)")
+      ->take_all();
+
+  golden::GoldenCommandArguments golden_arguments;
+  CLI::App* golden_command = app.add_subcommand(
+      "golden",
+      "golden images of JSON scene files with a \"golden\" block: check (exit 0 all match, 1 "
+      "a failure, 2 bad input), update, frame");
+  golden_command->require_subcommand(1);
+  CLI::App* golden_check = golden_command->add_subcommand(
+      "check", "check every golden frame of the scene files (classified failures, report)");
+  CLI::App* golden_update = golden_command->add_subcommand(
+      "update", "write missing and failing goldens (each rendered in two processes first)");
+  for (CLI::App* sub : {golden_check, golden_update}) {
+    sub->add_option("files", golden_arguments.files, "scene files (.json)")->required();
+    sub->add_option("--report", golden_arguments.report_dir,
+                    "artifacts and index.html of this run (emptied first)")
+        ->capture_default_str();
+    sub->add_option("--junit", golden_arguments.junit, "also write JUnit XML to this file");
+  }
+  golden_check->add_option("--repeat", golden_arguments.repeat,
+                           "2: also render each frame in a second process (nondeterminism)")
+      ->capture_default_str();
+  golden_update->add_flag("--all", golden_arguments.all, "rewrite every golden, not only failing");
+  CLI::App* golden_frame = golden_command->add_subcommand(
+      "frame", "render one golden frame into --out PNG and its state hash into PNG.hash");
+  std::string golden_frame_file;
+  golden_frame->add_option("file", golden_frame_file, "scene file (.json)")->required();
+  golden_frame->add_option("name", golden_arguments.frame, "golden frame name")->required();
+  golden_frame->add_option("--out", golden_arguments.out, "PNG to write")->required();
 
   lab::LabArguments lab_arguments;
   CLI::App* lab_command = app.add_subcommand(
@@ -202,8 +244,16 @@ int run_cli(int argc, char** argv) {
       lab::run_lab(lab_arguments, std::cout);
     } else if (tune_command->parsed()) {
       lab::run_tune(tune_arguments, std::cout);
+    } else if (golden_command->parsed()) {
+      golden_arguments.action = golden_check->parsed()    ? "check"
+                                : golden_update->parsed() ? "update"
+                                                          : "frame";
+      if (golden_frame->parsed()) golden_arguments.files = {golden_frame_file};
+      golden_arguments.executable = "/proc/self/exe";  // this program, for the second process
+      return golden::run_golden_command(golden_arguments, std::cout, std::cerr);
     } else if (diff_command->parsed()) {
-      return golden::run_diff_command(diff_expected, diff_actual, diff_out, std::cout, std::cerr);
+      return golden::run_diff_command(diff_expected, diff_actual, diff_out, std::cout, std::cerr,
+                                      diff_limits);
     } else {
       RenderArguments demo;
       demo.scene.scene = default_scene().name;

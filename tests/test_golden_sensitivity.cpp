@@ -1,8 +1,8 @@
 /// @file test_golden_sensitivity.cpp
 /// The suite catches what matters: a scene run with one small physics change (a mixing rule
 /// swapped, a coefficient or constant off by 5%, one solver iteration fewer) fails against
-/// the committed golden as *simulation diverged*, naming the bodies that moved; the
-/// unchanged run passes. Variants never write goldens or artifacts.
+/// the committed golden as *behaviour changed* (it leaves the golden's noise envelope),
+/// naming what left it and the bodies that moved; the unchanged run passes. Variants never write goldens or artifacts.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -64,10 +64,12 @@ CheckOutcome check_variant(const SceneVariant& change, const std::string& golden
 
 class GoldenSensitivity : public ::testing::TestWithParam<Variant> {};
 
-TEST_P(GoldenSensitivity, FailsAsSimulationDiverged) {
+TEST_P(GoldenSensitivity, FailsAsBehaviourChanged) {
   const CheckOutcome outcome = check_variant(GetParam().change, GetParam().golden);
   std::cout << GetParam().name << ": " << outcome.message() << "\n";
-  EXPECT_EQ(outcome.failure_class, FailureClass::SimulationDiverged) << outcome.message();
+  EXPECT_EQ(outcome.failure_class, FailureClass::BehaviourChanged) << outcome.message();
+  ASSERT_TRUE(outcome.check.noise.has_value()) << outcome.message();
+  EXPECT_FALSE(outcome.check.noise->escapes.empty()) << outcome.message();
   EXPECT_FALSE(outcome.check.moved_bodies.empty()) << outcome.message();
   EXPECT_FALSE(outcome.golden_written);
 }

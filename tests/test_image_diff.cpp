@@ -501,13 +501,16 @@ TEST(GoldenUpdateMode, ParsesEveryModeAndRejectsOthers) {
 }
 
 TEST(GoldenUpdateMode, CiForcesNoneAndSaysWhy) {
-  for (const char* ci : {"true", "TRUE", "1"}) {
+  for (const char* ci : {"true", "TRUE", "1", "yes", "Yes", "on"}) {
     const UpdateModeChoice choice = resolve_update_mode("all", ci);
     EXPECT_EQ(choice.mode, UpdateMode::None) << ci;
     EXPECT_NE(choice.note.find("GOLDEN_UPDATE=all ignored"), std::string::npos) << choice.note;
     EXPECT_NE(choice.note.find("forces none"), std::string::npos) << choice.note;
   }
   EXPECT_TRUE(resolve_update_mode("none", "true").note.empty());
+  for (const char* not_ci : {"false", "FALSE", "0", "no", "off", ""}) {
+    EXPECT_EQ(resolve_update_mode("all", not_ci).mode, UpdateMode::All) << not_ci;
+  }
 }
 
 TEST(GoldenUpdateMode, ReadsTheEnvironment) {

@@ -26,6 +26,19 @@ json check_to_json(const GoldenCheck& check, const json& files) {
                       {"rotation", drift.rotation},
                       {"note", drift.note}});
   }
+  json noise = nullptr;
+  if (check.noise) {
+    json escapes = json::array();
+    for (const EnvelopeEscape& escape : check.noise->escapes) {
+      escapes.push_back({{"what", escape.what},
+                         {"measured", escape.measured},
+                         {"envelope", escape.envelope},
+                         {"unit", escape.unit}});
+    }
+    noise = {{"within", check.noise->within()},
+             {"compared", check.noise->compared},
+             {"escapes", std::move(escapes)}};
+  }
   return {{"name", check.name},
           {"class", failure_class_id(failure_class)},
           {"class_name", failure_class_name(failure_class)},
@@ -35,9 +48,11 @@ json check_to_json(const GoldenCheck& check, const json& files) {
                                       : json(nullptr)},
           {"actual_state_hash", to_hex_hash(check.actual_state_hash)},
           {"second_render_identical", check.second_render_identical},
+          {"other_process_identical", check.other_process_identical},
           {"expected_renderer", check.expected_renderer.describe()},
           {"actual_renderer", check.actual_renderer.describe()},
           {"moved_bodies", drifts},
+          {"noise", noise},
           {"comparison", check.comparison ? comparison_to_json(*check.comparison) : json(nullptr)},
           {"files", files}};
 }

@@ -5,7 +5,8 @@
 ///   expected.png   the golden, when it exists
 ///   diff.png       `diff_overlay`, when the sizes agree
 ///   heatmap.png    `diff_heatmap`, when the sizes agree
-///   metrics.json   class, message, comparison metrics, tolerance, state hashes, renderers
+///   metrics.json   class, message, comparison metrics, tolerance, state hashes, renderers,
+///                  the noise-envelope judgement (when there was one)
 
 #include "tools/golden/failure.h"
 #include "tools/golden/image.h"

@@ -61,6 +61,11 @@ DiffMetrics measure(const Image& expected, const Image& actual, const Tolerance&
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const std::size_t offset = expected.offset(x, y);
+      if (std::any_of(tolerance.masks.begin(), tolerance.masks.end(),
+                      [x, y](const MaskRect& rect) { return rect.contains(x, y); })) {
+        if (max_channel_delta_at(expected, actual, x, y) > 0) ++metrics.masked_pixels;
+        continue;
+      }
       int pixel_delta = 0;
       for (int channel = 0; channel < kChannels; ++channel) {
         const int delta = std::abs(int{expected.pixels[offset + channel]} -
@@ -198,6 +203,11 @@ std::string CompareResult::message() const {
     text << "; changes within " << box_text(metrics.differing_box);
   }
   if (metrics.alpha_only) text << "; only alpha differs, RGB is identical";
+  if (metrics.masked_pixels > 0) {
+    text << "; " << metrics.masked_pixels << " changed pixels inside "
+         << tolerance.masks.size() << " mask" << (tolerance.masks.size() == 1 ? "" : "s")
+         << " ignored";
+  }
   for (const RuleViolation& violation : violations) text << "; " << violation.text;
   return text.str();
 }

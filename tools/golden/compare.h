@@ -27,7 +27,8 @@ struct PixelBox {
 /// Measurements of a mismatch. "Changed" means any channel differs; "differing" means the
 /// largest channel delta exceeds the tolerance's max_channel_delta.
 struct DiffMetrics {
-  std::int64_t changed_pixels = 0;    ///< pixels with any channel delta > 0
+  std::int64_t changed_pixels = 0;    ///< unmasked pixels with any channel delta > 0
+  std::int64_t masked_pixels = 0;     ///< changed pixels inside the tolerance's masks (ignored)
   std::int64_t differing_pixels = 0;  ///< pixels beyond the per-channel tolerance
   double differing_ratio = 0.0;       ///< differing_pixels / pixel count
   int max_channel_delta = 0;          ///< largest delta of any channel of any pixel, 0-255

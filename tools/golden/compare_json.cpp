@@ -56,6 +56,7 @@ json comparison_to_json(const CompareResult& result) {
           {"actual_rgba_hash", to_hex_hash(result.actual_hash)},
           {"metrics",
            {{"changed_pixels", metrics.changed_pixels},
+            {"masked_pixels", metrics.masked_pixels},
             {"differing_pixels", metrics.differing_pixels},
             {"differing_ratio", metrics.differing_ratio},
             {"max_channel_delta", metrics.max_channel_delta},

@@ -7,7 +7,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "tools/golden/tolerance.h"
+#include "tools/golden/diff_limits.h"
 
 namespace impulse2d::golden {
 
@@ -18,13 +18,16 @@ inline constexpr int kDiffDiffers = 1;
 /// Exit status of `run_diff_command`: an input could not be read or an output written.
 inline constexpr int kDiffError = 2;
 
-/// Compares `expected_png` (a) with `actual_png` (b) under `tolerance` (strict by default)
-/// and prints one verdict paragraph to `out`. When they are not an exact match and `out_dir`
+/// Compares `expected_png` (a) with `actual_png` (b) under the tolerance `limits` describe
+/// (strict by default) and prints one verdict paragraph to `out`; when both PNGs carry the
+/// golden tools' metadata (png_text.h), a second line says what they were and whether the
+/// physics state or only the pixels differ. When they are not an exact match and `out_dir`
 /// is not empty, writes into it expected.png, actual.png, diff.png and heatmap.png (the last
 /// two when the sizes agree), metrics.json and index.html, and prints the report's path.
-/// Errors go to `err`, naming the file. Returns kDiffSame, kDiffDiffers or kDiffError.
+/// Errors go to `err`, naming the file or option. Returns kDiffSame, kDiffDiffers or
+/// kDiffError (also for limits out of range).
 int run_diff_command(const std::string& expected_png, const std::string& actual_png,
                      const std::string& out_dir, std::ostream& out, std::ostream& err,
-                     const Tolerance& tolerance = Tolerance{});
+                     const DiffLimits& limits = DiffLimits{});
 
 }  // namespace impulse2d::golden

@@ -2,10 +2,13 @@
 /// @file failure.h
 /// Why a golden check failed, as one of a few classes, each with its own message. The class
 /// comes from the physics state hashes and a repeat render before any pixel is blamed, so
-/// a failure says *simulation diverged* or *rasterisation differs*, not just "pixels differ".
+/// a failure says *simulation diverged* or *rasterisation differs*, not just "pixels differ";
+/// when the golden carries a noise envelope, a divergence is further told apart as
+/// *numerical noise* or *behaviour changed*.
 
 #include "tools/golden/body_drift.h"
 #include "tools/golden/compare.h"
+#include "tools/golden/noise_envelope.h"
 #include "tools/golden/sidecar.h"
 
 #include <cstdint>
@@ -18,11 +21,21 @@ namespace impulse2d::golden {
 /// The kinds of golden failure, most fundamental first.
 enum class FailureClass {
   None,                  ///< the check passed
-  Nondeterminism,        ///< two renders (or runs) of the same frame differ
+  Nondeterminism,        ///< two renders of the same frame differ (in one or two processes)
   MissingGolden,         ///< no golden image for this name
   SizeMismatch,          ///< golden and actual sizes differ
-  SimulationDiverged,    ///< the physics state hash differs from the sidecar's
+  /// The physics state hash differs from the sidecar's, which has no noise envelope.
+  SimulationDiverged,
+  /// The state hash differs, but every body and quantity stayed inside the golden's noise
+  /// envelope: a chaotic scene amplified a rounding change (safe to promote after a look).
+  NumericalNoise,
+  /// The state hash differs and bodies or quantities left the golden's noise envelope: the
+  /// physics behaves differently (a regression unless intended).
+  BehaviourChanged,
   RasterisationDiffers,  ///< same physics state, pixels beyond tolerance
+  /// Drawn by another renderer than the golden, with no baseline for it: the physics was
+  /// checked and matches, the pixels could not be. Not a failure.
+  NoRendererBaseline,
 };
 
 /// Everything known about one golden check; the caller fills what it measured.
@@ -40,17 +53,31 @@ struct GoldenCheck {
   /// and the same RGBA hash. Nondeterminism is a failure of its own, never absorbed by
   /// tolerance.
   bool second_render_identical = true;
+  /// True unless the frame was also produced in another process (`CheckSettings::repeat`,
+  /// or before a golden is written) and that gave a different state hash or RGBA hash: a
+  /// value that depends on the process (an address under ASLR, the pid, the clock).
+  bool other_process_identical = true;
+  /// The judgement against the golden's noise envelope; present when the state hashes
+  /// differ and the golden's sidecar has an envelope.
+  std::optional<NoiseVerdict> noise;
   /// The bodies that moved most relative to the golden run (see `largest_drifts`).
   std::vector<BodyDrift> moved_bodies;
+  /// True when this run's renderer differs from the golden's and no baseline for it exists:
+  /// only the physics is checked.
+  bool renderer_baseline_missing = false;
+  /// The renderer baseline this run's pixels would be compared with (or written to), relative
+  /// to the golden directory; empty when the golden's own renderer drew the frame.
+  std::string renderer_baseline;
   /// The renderer recorded in the golden's sidecar.
   RendererFingerprint expected_renderer;
   /// The renderer of this run.
   RendererFingerprint actual_renderer;
 };
 
-/// Classifies a check: Nondeterminism, then MissingGolden, SizeMismatch, SimulationDiverged
-/// (state hashes differ, whatever the pixels say), RasterisationDiffers (same state, the
-/// comparison failed), else None.
+/// Classifies a check: Nondeterminism, then MissingGolden, SizeMismatch; when the state
+/// hashes differ (whatever the pixels say) NumericalNoise or BehaviourChanged by `noise`, or
+/// SimulationDiverged without one; then NoRendererBaseline when the pixels had nothing to be
+/// compared with; RasterisationDiffers (same state, the comparison failed), else None.
 FailureClass classify_failure(const GoldenCheck& check);
 
 /// Human name of a class, e.g. "simulation diverged".

@@ -75,6 +75,7 @@ Image load_png(const std::filesystem::path& file) {
   if (!decode_png_bytes(bytes, image, reason)) {
     throw GoldenError("cannot decode PNG '" + file.string() + "': " + reason);
   }
+  image.text = read_png_text(bytes);
   return image;
 }
 
@@ -85,9 +86,9 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
                       std::to_string(image.height) + " with " +
                       std::to_string(image.pixels.size()) + " bytes is not a valid RGBA image");
   }
-  std::vector<std::uint8_t> bytes = encode_png_bytes(image);
+  const std::vector<std::uint8_t> bytes = encode_png_bytes(image);
   if (bytes.empty()) throw GoldenError("encode_png: the PNG encoder failed");
-  return bytes;
+  return image.text.empty() ? bytes : with_png_text(bytes, image.text);
 }
 
 void save_png(const std::filesystem::path& file, const Image& image) {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "tools/golden/png_text.h"
+
 namespace impulse2d::golden {
 
 /// Channels per pixel: red, green, blue, alpha, in that order.
@@ -18,6 +20,8 @@ struct Image {
   int width = 0;                     ///< pixels per row
   int height = 0;                    ///< rows
   std::vector<std::uint8_t> pixels;  ///< width * height * 4 bytes, RGBA, row-major
+  /// tEXt metadata, written by `save_png` and read by `load_png`; not part of `rgba_hash`.
+  PngText text;
 
   /// Number of pixels (width * height).
   std::size_t pixel_count() const {
@@ -51,11 +55,12 @@ Rgba get_pixel(const Image& image, int x, int y);
 /// identity of the decoded content, independent of how the PNG was compressed.
 std::uint64_t rgba_hash(const Image& image);
 
-/// Decodes a PNG file into RGBA8 (grey, RGB and 16-bit files are converted). Throws
+/// Decodes a PNG file into RGBA8 (grey, RGB and 16-bit files are converted), with its tEXt
+/// chunks in `text`. Throws
 /// `GoldenError` naming the file when it cannot be read or decoded.
 Image load_png(const std::filesystem::path& file);
 
-/// Encodes as an RGBA8 PNG in memory.
+/// Encodes as an RGBA8 PNG in memory, with `image.text` as tEXt chunks.
 std::vector<std::uint8_t> encode_png(const Image& image);
 
 /// Writes an RGBA8 PNG, through a temporary file renamed into place so a reader never sees

@@ -2,6 +2,7 @@
 #include "tools/golden/inventory.h"
 
 #include "tools/golden/error.h"
+#include "tools/golden/renderer_baseline.h"
 
 #include <algorithm>
 #include <iterator>
@@ -42,7 +43,7 @@ std::vector<std::string> unused_goldens(const std::vector<std::string>& goldens,
   const std::set<std::string> used_set(used.begin(), used.end());
   std::vector<std::string> unused;
   for (const std::string& name : goldens) {
-    if (used_set.count(name) == 0) unused.push_back(name);
+    if (used_set.count(baseline_owner(name)) == 0) unused.push_back(name);
   }
   std::sort(unused.begin(), unused.end());
   return unused;

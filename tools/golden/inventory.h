@@ -20,7 +20,8 @@ struct GoldenInventory {
 /// `GoldenError` when the directory cannot be read.
 GoldenInventory scan_goldens(const std::filesystem::path& golden_dir);
 
-/// The names in `goldens` that are not in `used`, sorted.
+/// The names in `goldens` that are not in `used`, sorted; a renderer baseline
+/// ("<name>@<renderer key>") counts as used when its golden is.
 std::vector<std::string> unused_goldens(const std::vector<std::string>& goldens,
                                         const std::vector<std::string>& used);
 

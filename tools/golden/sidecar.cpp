@@ -4,86 +4,15 @@
 #include "tools/golden/error.h"
 #include "tools/golden/file_io.h"
 #include "tools/golden/hex_hash.h"
+#include "tools/golden/json_fields.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
-#include <limits>
 #include <optional>
-#include <set>
-#include <utility>
 
 namespace impulse2d::golden {
 
-namespace {
-
 using nlohmann::json;
-
-/// Reads fields of one JSON object, each access validated, errors naming origin and field.
-class FieldReader {
- public:
-  FieldReader(const json& object, std::string origin, std::string prefix)
-      : object_(object), origin_(std::move(origin)), prefix_(std::move(prefix)) {
-    if (!object_.is_object()) {
-      const std::string where =
-          prefix_.empty() ? "top level" : "field '" + prefix_.substr(0, prefix_.size() - 1) + "'";
-      throw GoldenError(origin_ + ": " + where + ": expected a JSON object, got " +
-                        object_.dump());
-    }
-  }
-
-  [[noreturn]] void fail(const std::string& field, const std::string& reason) const {
-    throw GoldenError(origin_ + ": field '" + prefix_ + field + "': " + reason);
-  }
-
-  bool has(const std::string& field) const { return object_.contains(field); }
-
-  const json& get(const std::string& field) const {
-    if (!object_.contains(field)) fail(field, "missing");
-    return object_.at(field);
-  }
-
-  std::string string(const std::string& field, bool allow_empty) const {
-    const json& value = get(field);
-    if (!value.is_string()) fail(field, "expected a string, got " + value.dump());
-    std::string text = value.get<std::string>();
-    if (!allow_empty && text.empty()) fail(field, "must not be empty");
-    return text;
-  }
-
-  int integer(const std::string& field, int minimum) const {
-    const json& value = get(field);
-    if (!value.is_number_integer()) fail(field, "expected an integer, got " + value.dump());
-    const auto number = value.get<std::int64_t>();
-    if (number < minimum || number > std::numeric_limits<int>::max()) {
-      fail(field, value.dump() + " is out of range (minimum " + std::to_string(minimum) + ")");
-    }
-    return static_cast<int>(number);
-  }
-
-  double number(const std::string& field) const {
-    const json& value = get(field);
-    if (!value.is_number()) fail(field, "expected a number, got " + value.dump());
-    const double number = value.get<double>();
-    if (!std::isfinite(number)) fail(field, "must be finite");
-    return number;
-  }
-
-  void reject_unknown(const std::set<std::string>& known) const {
-    for (const auto& item : object_.items()) {
-      if (known.count(item.key()) == 0) fail(item.key(), "unknown field");
-    }
-  }
-
-  const std::string& origin() const { return origin_; }
-
- private:
-  const json& object_;
-  std::string origin_;
-  std::string prefix_;
-};
-
-}  // namespace
 
 std::string RendererFingerprint::describe() const {
   if (gl_renderer.empty() && gl_version.empty()) return "not recorded";
@@ -104,7 +33,7 @@ Sidecar sidecar_from_json(const json& object, const std::string& origin) {
   const FieldReader top(object, origin, "");
   top.reject_unknown(
       {"format", "scene", "frame", "width", "height", "state_hash", "renderer", "tolerance",
-       "bodies"});
+       "bodies", "noise"});
   const int format = top.integer("format", 1);
   if (format != kSidecarFormat) {
     top.fail("format", "version " + std::to_string(format) + " is not supported (expected " +
@@ -137,6 +66,7 @@ Sidecar sidecar_from_json(const json& object, const std::string& origin) {
           {body.string("name", false), body.number("x"), body.number("y"), body.number("angle")});
     }
   }
+  if (top.has("noise")) sidecar.noise = noise_envelope_from_json(top.get("noise"), origin);
   return sidecar;
 }
 
@@ -156,6 +86,7 @@ json sidecar_to_json(const Sidecar& sidecar) {
                    {"gl_version", sidecar.renderer.gl_version}}},
                  {"tolerance", tolerance_to_json(sidecar.tolerance)}};
   if (!sidecar.bodies.empty()) object["bodies"] = std::move(bodies);
+  if (!sidecar.noise.empty()) object["noise"] = noise_envelope_to_json(sidecar.noise);
   return object;
 }
 

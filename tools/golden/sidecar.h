@@ -10,10 +10,12 @@
 ///   "state_hash": "0123456789abcdef",
 ///   "renderer": {"gl_renderer": "llvmpipe (LLVM 15.0.6, 256 bits)", "gl_version": "4.5 ..."},
 ///   "tolerance": {"max_channel_delta": 0, ...},            (optional; strict when absent)
-///   "bodies": [{"name": "body 0", "x": 0.0, "y": 1.5, "angle": 0.0}, ...]   (optional)
+///   "bodies": [{"name": "body 0", "x": 0.0, "y": 1.5, "angle": 0.0}, ...],  (optional)
+///   "noise": {...}   the golden's noise envelope (noise_envelope.h)             (optional)
 /// }
 
 #include "tools/golden/body_drift.h"
+#include "tools/golden/noise_envelope.h"
 #include "tools/golden/tolerance.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -48,6 +50,9 @@ struct Sidecar {
   RendererFingerprint renderer;   ///< what drew it
   Tolerance tolerance;            ///< limits the golden is held to (strict by default)
   std::vector<BodyPose> bodies;   ///< body poses at that frame, for drift reports (optional)
+  /// How far rounding noise carries the scene up to this frame; empty when not measured
+  /// (then a physics change can only be called *simulation diverged*).
+  NoiseEnvelope noise;
 };
 
 /// The current sidecar format version.

@@ -31,7 +31,7 @@ std::int64_t read_count(const nlohmann::json& value, const std::string& origin,
 
 bool Tolerance::is_strict() const {
   return max_channel_delta == 0 && max_differing_pixels == 0 && max_differing_ratio == 0.0 &&
-         max_window_pixels == 0;
+         max_window_pixels == 0 && masks.empty();
 }
 
 std::string Tolerance::describe_origin() const {
@@ -60,12 +60,28 @@ Tolerance tolerance_from_json(const nlohmann::json& object, const std::string& o
     } else if (field == "window_size") {
       tolerance.window_size = static_cast<int>(read_count(value, origin, field, kIntLimit));
       if (tolerance.window_size == 0) fail(origin, field, "must be at least 1");
+    } else if (field == "masks") {
+      if (!value.is_array()) fail(origin, field, "expected an array of [x, y, width, height]");
+      for (const auto& item : value) {
+        if (!item.is_array() || item.size() != 4) {
+          fail(origin, field, "each mask is [x, y, width, height], got " + item.dump());
+        }
+        MaskRect mask;
+        mask.x = static_cast<int>(read_count(item[0], origin, field + ".x", kIntLimit));
+        mask.y = static_cast<int>(read_count(item[1], origin, field + ".y", kIntLimit));
+        mask.width = static_cast<int>(read_count(item[2], origin, field + ".width", kIntLimit));
+        mask.height = static_cast<int>(read_count(item[3], origin, field + ".height", kIntLimit));
+        if (mask.width < 1 || mask.height < 1) {
+          fail(origin, field, "a mask's width and height must be at least 1, got " + item.dump());
+        }
+        tolerance.masks.push_back(mask);
+      }
     } else if (field == "max_window_pixels") {
       tolerance.max_window_pixels = static_cast<int>(read_count(value, origin, field, kIntLimit));
     } else {
       fail(origin, field,
            "unknown field (known: max_channel_delta, max_differing_pixels, "
-           "max_differing_ratio, window_size, max_window_pixels)");
+           "max_differing_ratio, window_size, max_window_pixels, masks)");
     }
   }
   // The three pixel-count layers must all hold, so loosening one while another stays 0
@@ -86,12 +102,44 @@ Tolerance tolerance_from_json(const nlohmann::json& object, const std::string& o
   return tolerance;
 }
 
+MaskRect parse_mask(const std::string& text, const std::string& origin) {
+  MaskRect mask;
+  int* fields[] = {&mask.x, &mask.y, &mask.width, &mask.height};
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::size_t end = i < 3 ? text.find(',', start) : text.size();
+    const std::string part =
+        end == std::string::npos ? std::string() : text.substr(start, end - start);
+    const bool digits = !part.empty() && part.size() <= 9 &&
+                        part.find_first_not_of("0123456789") == std::string::npos;
+    if (!digits || (i == 3 && text.find(',', start) != std::string::npos)) {
+      throw GoldenError(origin + " '" + text +
+                        "': expected x,y,w,h (four non-negative integers, pixels from the "
+                        "top-left corner)");
+    }
+    *fields[i] = std::stoi(part);
+    start = end + 1;
+  }
+  if (mask.width < 1 || mask.height < 1) {
+    throw GoldenError(origin + " '" + text + "': width and height must be at least 1");
+  }
+  return mask;
+}
+
 nlohmann::json tolerance_to_json(const Tolerance& tolerance) {
-  return nlohmann::json{{"max_channel_delta", tolerance.max_channel_delta},
+  nlohmann::json object{{"max_channel_delta", tolerance.max_channel_delta},
                         {"max_differing_pixels", tolerance.max_differing_pixels},
                         {"max_differing_ratio", tolerance.max_differing_ratio},
                         {"window_size", tolerance.window_size},
                         {"max_window_pixels", tolerance.max_window_pixels}};
+  if (!tolerance.masks.empty()) {
+    nlohmann::json masks = nlohmann::json::array();
+    for (const MaskRect& mask : tolerance.masks) {
+      masks.push_back({mask.x, mask.y, mask.width, mask.height});
+    }
+    object["masks"] = std::move(masks);
+  }
+  return object;
 }
 
 }  // namespace impulse2d::golden

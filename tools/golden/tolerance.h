@@ -7,8 +7,23 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace impulse2d::golden {
+
+/// A rectangle of pixels a comparison ignores (a clock, a frame counter): x, y of its
+/// top-left pixel (rows counted from the top), width and height in pixels.
+struct MaskRect {
+  int x = 0;       ///< leftmost column
+  int y = 0;       ///< top row
+  int width = 0;   ///< columns, >= 1
+  int height = 0;  ///< rows, >= 1
+
+  /// True when pixel (px, py) lies inside.
+  bool contains(int px, int py) const {
+    return px >= x && py >= y && px - x < width && py - y < height;
+  }
+};
 
 /// Limits an image comparison is held to. Each layer must hold. The default is strict: any
 /// pixel whose channels differ at all fails.
@@ -25,24 +40,31 @@ struct Tolerance {
   /// Most differing pixels any window_size x window_size window may hold: a compact cluster
   /// fails even when the image-wide count and ratio are within their limits.
   int max_window_pixels = 0;
+  /// Regions whose pixels count as equal whatever they hold.
+  std::vector<MaskRect> masks;
   /// Where these limits came from when they are not the strict default, e.g.
   /// "sidecar 'circles/start.json'"; named in failure messages.
   std::string origin;
 
-  /// True when every limit is the strict default (window_size does not matter then).
+  /// True when every limit is the strict default and nothing is masked (window_size does
+  /// not matter then).
   bool is_strict() const;
   /// "strict default" or "override from <origin>", for failure messages.
   std::string describe_origin() const;
 };
 
 /// Reads limits from a JSON object whose keys are the field names above (all optional;
-/// missing keys keep the strict default). `origin` is stored and used in error messages.
+/// missing keys keep the strict default); "masks" is an array of [x, y, width, height]. `origin` is stored and used in error messages.
 /// Throws `GoldenError` naming `origin` and the field for unknown keys, wrong types and
 /// out-of-range values, and when max_differing_pixels, max_differing_ratio and
 /// max_window_pixels are not either all 0 or all above 0 (a lone loosened layer is a no-op).
 Tolerance tolerance_from_json(const nlohmann::json& object, const std::string& origin);
 
-/// The limits as a JSON object with every field (origin excluded).
+/// Parses "x,y,w,h" (non-negative integers, w and h at least 1). Throws `GoldenError`
+/// naming `origin` (e.g. "--mask") and the reason.
+MaskRect parse_mask(const std::string& text, const std::string& origin);
+
+/// The limits as a JSON object with every field (origin excluded; masks only when any).
 nlohmann::json tolerance_to_json(const Tolerance& tolerance);
 
 }  // namespace impulse2d::golden

@@ -20,6 +20,11 @@ std::string lower_case(std::string text) {
 
 }  // namespace
 
+bool is_ci(const char* ci) {
+  const std::string value = lower_case(ci != nullptr ? ci : "");
+  return !value.empty() && value != "false" && value != "0" && value != "no" && value != "off";
+}
+
 UpdateModeChoice resolve_update_mode(const char* golden_update, const char* ci) {
   const std::string requested = golden_update != nullptr ? golden_update : "";
   UpdateModeChoice choice;
@@ -35,8 +40,7 @@ UpdateModeChoice resolve_update_mode(const char* golden_update, const char* ci) 
     throw GoldenError("GOLDEN_UPDATE='" + requested +
                       "' is not a mode; use one of none, missing, changed, all");
   }
-  const std::string ci_value = lower_case(ci != nullptr ? ci : "");
-  if ((ci_value == "true" || ci_value == "1") && choice.mode != UpdateMode::None) {
+  if (is_ci(ci) && choice.mode != UpdateMode::None) {
     choice.note = "GOLDEN_UPDATE=" + requested + " ignored: CI=" + std::string(ci) +
                   " forces none, so CI never writes its own goldens";
     choice.mode = UpdateMode::None;
@@ -65,7 +69,8 @@ bool should_write_golden(UpdateMode mode, FailureClass outcome) {
   if (outcome == FailureClass::Nondeterminism) return false;
   switch (mode) {
     case UpdateMode::None: return false;
-    case UpdateMode::Missing: return outcome == FailureClass::MissingGolden;
+    case UpdateMode::Missing:
+      return outcome == FailureClass::MissingGolden || outcome == FailureClass::NoRendererBaseline;
     case UpdateMode::Changed: return outcome != FailureClass::None;
     case UpdateMode::All: return true;
   }

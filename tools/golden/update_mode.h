@@ -12,7 +12,7 @@ namespace impulse2d::golden {
 /// Which goldens a run writes.
 enum class UpdateMode {
   None,     ///< never write goldens; a missing golden fails (the default)
-  Missing,  ///< write goldens that do not exist yet; compare the rest
+  Missing,  ///< write goldens (and renderer baselines) that do not exist yet; compare the rest
   Changed,  ///< write missing goldens and those that fail their comparison
   All,      ///< rewrite every golden
 };
@@ -23,9 +23,13 @@ struct UpdateModeChoice {
   std::string note;  ///< e.g. "GOLDEN_UPDATE=all ignored: CI=true forces none"; else empty
 };
 
+/// True when the CI variable's value says "this is CI": any non-empty value except
+/// "false", "0", "no" and "off" (any case). CI services set "true", "1" or "yes".
+bool is_ci(const char* ci);
+
 /// Resolves the mode from the two variables' values (null when unset). Unset or empty
-/// GOLDEN_UPDATE means none. CI "true" or "1" (any case) forces none, with a note when
-/// another mode was asked for. Throws `GoldenError` for a value that is not a mode, even
+/// GOLDEN_UPDATE means none. CI (`is_ci`) forces none, with a note when another mode was
+/// asked for. Throws `GoldenError` for a value that is not a mode, even
 /// under CI.
 UpdateModeChoice resolve_update_mode(const char* golden_update, const char* ci);
 

@@ -28,18 +28,29 @@ constexpr SceneFrames kSceneFrames[] = {
     {"random_polygons", 120, 600}, {"platformer", 470, 1110}, {"push", 60, 120},
 };
 
+/// A built-in scene's golden at the default size, parameters and theme.
+GoldenSpec builtin(const std::string& scene, const char* name, std::int64_t step,
+                   std::uint32_t overlays) {
+  GoldenSpec spec;
+  spec.scene = scene;
+  spec.name = name;
+  spec.step = step;
+  spec.overlays = overlays;
+  return spec;
+}
+
 std::vector<GoldenSpec> make_catalog() {
   std::vector<GoldenSpec> catalog;
   for (const SceneFrames& frames : kSceneFrames) {
     const std::string scene = frames.scene;
-    catalog.push_back({scene, "start", 0, 0, {}});
-    catalog.push_back({scene, "motion", frames.motion, 0, {}});
-    catalog.push_back({scene, "settled", frames.settled, 0, {}});
-    catalog.push_back({scene, "motion_overlays", frames.motion, kPhysicsOverlays, {}});
-    catalog.push_back({scene, "settled_overlays", frames.settled, kPhysicsOverlays, {}});
+    catalog.push_back(builtin(scene, "start", 0, 0));
+    catalog.push_back(builtin(scene, "motion", frames.motion, 0));
+    catalog.push_back(builtin(scene, "settled", frames.settled, 0));
+    catalog.push_back(builtin(scene, "motion_overlays", frames.motion, kPhysicsOverlays));
+    catalog.push_back(builtin(scene, "settled_overlays", frames.settled, kPhysicsOverlays));
   }
   // Every overlay once, on the scene with every shape pair in contact.
-  catalog.push_back({"shape_pairs", "motion_all_overlays", 30, draw_all, {}});
+  catalog.push_back(builtin("shape_pairs", "motion_all_overlays", 30, draw_all));
   return catalog;
 }
 

@@ -15,15 +15,20 @@ inline constexpr int kGoldenWidth = 320;
 /// Height of every golden frame, pixels.
 inline constexpr int kGoldenHeight = 240;
 
-/// One golden image of a built-in scene.
+/// One golden image of a built-in scene or of a JSON scene file.
 struct GoldenSpec {
-  std::string scene;      ///< built-in scene name, e.g. "pyramid"
+  std::string scene;      ///< scene name, e.g. "pyramid" (a file's "name", else its stem)
   std::string name;       ///< golden name within the scene, e.g. "settled_overlays"
   std::int64_t step = 0;  ///< steps simulated before the frame is drawn
   /// `DebugDrawFlag`s; 0 means the scene's own default overlays.
   std::uint32_t overlays = 0;
   /// Parameter overrides ("rows", "8"), applied over the scene's defaults.
   std::vector<std::pair<std::string, std::string>> params;
+  /// The JSON scene file the scene comes from; empty for a built-in scene.
+  std::string scene_file;
+  bool dark_theme = false;     ///< draw with the dark theme instead of the light one
+  int width = kGoldenWidth;    ///< frame width, pixels
+  int height = kGoldenHeight;  ///< frame height, pixels
 
   /// "<scene>/<name>": the golden's path below golden_images/ without extension.
   std::string id() const { return scene + "/" + name; }

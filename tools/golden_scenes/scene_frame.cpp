@@ -1,14 +1,18 @@
 /// @file scene_frame.cpp
 #include "tools/golden_scenes/scene_frame.h"
 
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 #include "demos/frame_sequence.h"
 #include "demos/scene_camera.h"
 #include "demos/scene_registry.h"
 #include "demos/scene_run.h"
+#include "tools/golden_scenes/golden_run.h"
 #include "render/frame_renderer.h"
 #include "tools/golden/error.h"
+#include "tools/golden/hex_hash.h"
 
 namespace impulse2d::golden {
 
@@ -22,25 +26,26 @@ RendererFingerprint split_fingerprint(const std::string& fingerprint) {
   return RendererFingerprint{fingerprint.substr(0, at), fingerprint.substr(at + separator.size())};
 }
 
-/// "body 7" for the first body of slot 7, "body 7 (generation 2)" for a later one, so a body
-/// created in a removed body's slot is never compared with its predecessor.
-std::string body_name(BodyId id) {
-  std::string name = "body " + std::to_string(id.index);
-  if (id.generation != 1) name += " (generation " + std::to_string(id.generation) + ")";
-  return name;
-}
-
-std::vector<BodyPose> body_poses(const World& world) {
-  std::vector<BodyPose> poses;
-  for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
-    poses.push_back(
-        BodyPose{body_name(id), body.transform.position.x, body.transform.position.y, body.angle});
-  }
-  return poses;
-}
-
 }  // namespace
+
+PngText frame_metadata(const GoldenSpec& spec, const World& world,
+                       const RendererFingerprint& renderer) {
+  std::string parameters;
+  for (const auto& [name, value] : spec.params) {
+    parameters += (parameters.empty() ? "" : " ") + name + "=" + value;
+  }
+  std::ostringstream time;
+  time << std::setprecision(9) << world.time();
+  PngText text;
+  text[png_keys::kSoftware] = std::string("impulse2d ") + IMPULSE2D_VERSION;
+  text[png_keys::kScene] = spec.scene_file.empty() ? spec.scene : spec.scene + " (" + spec.scene_file + ")";
+  text[png_keys::kParameters] = parameters.empty() ? "defaults" : parameters;
+  text[png_keys::kStep] = std::to_string(world.step_count());
+  text[png_keys::kTime] = time.str();
+  text[png_keys::kStateHash] = to_hex_hash(world.state_hash());
+  text[png_keys::kRenderer] = renderer.describe();
+  return text;
+}
 
 render::FrameRenderer& shared_golden_renderer() {
   static render::FrameRenderer renderer(kGoldenWidth, kGoldenHeight);
@@ -49,21 +54,25 @@ render::FrameRenderer& shared_golden_renderer() {
 
 ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
                                   const SceneVariant& variant) {
-  const demos::Scene* builtin = demos::find_builtin_scene(spec.scene);
-  if (builtin == nullptr)
-    throw GoldenError("golden '" + spec.id() + "': no built-in scene '" + spec.scene + "'");
-  demos::Scene scene = *builtin;
-  if (variant) variant(scene);
-  demos::Params params(scene.params);
-  for (const auto& [name, value] : spec.params) params.set(name, value);
-
-  demos::SceneRun run(scene, params);
+  if (renderer.width() != spec.width || renderer.height() != spec.height) {
+    throw GoldenError("golden '" + spec.id() + "' is " + std::to_string(spec.width) + "x" +
+                      std::to_string(spec.height) + ", the renderer draws " +
+                      std::to_string(renderer.width()) + "x" + std::to_string(renderer.height()));
+  }
+  GoldenRun golden_run(spec, variant);
+  const demos::Scene& scene = golden_run.scene();
+  demos::SceneRun& run = golden_run.run();
   const render::Camera camera =
       demos::scene_camera(scene.view.camera, run.world(), renderer.width(), renderer.height());
-  while (run.step_count() < spec.step) run.step();
+  ProducedFrame produced;
+  for (const std::int64_t checkpoint : noise_checkpoint_steps(spec.step)) {
+    while (run.step_count() < checkpoint) run.step();
+    produced.samples.push_back(sample_physics(run.world()));
+  }
 
   render::FrameOptions options;
   options.draw = scene.view.draw;
+  options.theme = spec.dark_theme ? render::Theme::Dark : render::Theme::Light;
   if (spec.overlays != 0) options.draw.flags = spec.overlays;
   options.extra_overlays = run.script_overlays();
   render::HudInfo hud;
@@ -72,16 +81,20 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
   const render::Frame frame =
       renderer.render(run.world(), demos::frame_camera(camera, run), options, hud);
 
-  ProducedFrame produced;
-  produced.image = Image{frame.width, frame.height, frame.rgba};
+  produced.image = Image{frame.width, frame.height, frame.rgba, {}};
   produced.state_hash = run.world().state_hash();
   produced.bodies = body_poses(run.world());
   produced.renderer = split_fingerprint(renderer.fingerprint());
+  produced.image.text = frame_metadata(spec, run.world(), produced.renderer);
   return produced;
 }
 
 FrameProducer scene_frame_producer(const GoldenSpec& spec, const SceneVariant& variant) {
   return [spec, variant] { return produce_scene_frame(spec, shared_golden_renderer(), variant); };
+}
+
+FrameProducer scene_frame_producer(const GoldenSpec& spec, render::FrameRenderer& renderer) {
+  return [spec, &renderer] { return produce_scene_frame(spec, renderer); };
 }
 
 }  // namespace impulse2d::golden

@@ -7,9 +7,14 @@
 
 #include "tools/golden/check_run.h"
 #include "tools/golden_scenes/golden_catalog.h"
+#include "tools/golden_scenes/golden_run.h"
 
 namespace impulse2d::demos {
 struct Scene;
+}
+
+namespace impulse2d {
+class World;
 }
 
 namespace impulse2d::render {
@@ -18,8 +23,10 @@ class FrameRenderer;
 
 namespace impulse2d::golden {
 
-/// Changes a copy of a scene before it runs, e.g. a solver setting for sensitivity tests.
-using SceneVariant = std::function<void(demos::Scene&)>;
+/// What a golden frame's PNG says about itself (png_text.h): scene (and file), parameter
+/// overrides, step, simulated time, state hash, renderer and program version.
+PngText frame_metadata(const GoldenSpec& spec, const World& world,
+                       const RendererFingerprint& renderer);
 
 /// The renderer of this process at kGoldenWidth x kGoldenHeight, created on first use and
 /// shared by every golden check in the process (one OSMesa context per process).
@@ -27,12 +34,18 @@ render::FrameRenderer& shared_golden_renderer();
 
 /// Simulates `spec`'s scene (with `variant` applied, when given) from scratch to `spec.step`
 /// with the scene's camera, then renders it with the HUD and legend as `impulse2d` draws
-/// them. Bodies are named "body <slot>", with the slot's generation when it was reused.
-/// Throws `GoldenError` for an unknown scene, and whatever the scene's run throws.
+/// them (dark theme when `spec.dark_theme`), with the body poses (`body_poses`) and the physics samples at
+/// `noise_checkpoint_steps(spec.step)` the noise envelope is judged on. Throws `GoldenError`
+/// for an unknown scene or a renderer of another size than the golden's, and whatever the
+/// scene's run throws.
 ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
                                   const SceneVariant& variant = nullptr);
 
 /// A `FrameProducer` of `produce_scene_frame` on the shared renderer.
 FrameProducer scene_frame_producer(const GoldenSpec& spec, const SceneVariant& variant = nullptr);
+
+/// A `FrameProducer` of `produce_scene_frame` on `renderer` (of the golden's size), which
+/// must outlive it.
+FrameProducer scene_frame_producer(const GoldenSpec& spec, render::FrameRenderer& renderer);
 
 }  // namespace impulse2d::golden

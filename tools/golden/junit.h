@@ -1,0 +1,28 @@
+#pragma once
+/// @file junit.h
+/// A JUnit XML report of golden checks, the format CI test reporters (GitLab, Jenkins,
+/// GitHub actions that publish test results) read.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace impulse2d::golden {
+
+/// One golden check as a JUnit test case.
+struct JUnitCase {
+  std::string classname;  ///< the scene, e.g. "dominoes"
+  std::string name;       ///< the golden frame, e.g. "landed"
+  double seconds = 0.0;   ///< how long the check took
+  bool failed = false;    ///< true for a failure
+  std::string skipped;    ///< why only part was checked (e.g. no baseline); empty: none
+  std::string failure_type;     ///< the failure class id, e.g. "behaviour_changed"
+  std::string failure_message;  ///< the full failure message
+};
+
+/// Writes `<testsuites><testsuite name=suite ...><testcase .../>...` to `file` atomically.
+/// Throws `GoldenError` when the write fails.
+void write_junit(const std::filesystem::path& file, const std::string& suite,
+                 const std::vector<JUnitCase>& cases);
+
+}  // namespace impulse2d::golden

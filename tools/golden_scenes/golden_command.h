@@ -1,0 +1,48 @@
+#pragma once
+/// @file golden_command.h
+/// `impulse2d golden check|update|frame`: the golden harness for any JSON scene file with a
+/// `golden` block (golden_block.h), as a user's CI runs it.
+///
+/// - `check FILE...`  checks every golden frame of every file; exit 0 all match, 1 any
+///   failure (classified as the suite classifies), 2 bad input. `--repeat 2` also renders
+///   each frame in a second process (nondeterminism across processes).
+/// - `update FILE...` writes missing and failing goldens (`--all`: every one), each only after
+///   a second process rendered the same frame, with its noise envelope; refused under CI.
+/// - `frame FILE NAME --out PNG` renders one golden frame (the second process of the other
+///   two) into PNG and its state hash into PNG.hash.
+/// Failures leave their artifacts and index.html in `--report DIR` (default
+/// golden_artifacts), which holds only this run's results; `--junit FILE` writes JUnit XML.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace impulse2d::golden {
+
+/// The command's arguments, as the CLI parses them.
+struct GoldenCommandArguments {
+  std::string action;               ///< "check", "update" or "frame"
+  std::vector<std::string> files;   ///< scene files
+  std::string report_dir = "golden_artifacts";  ///< artifacts and index.html of this run
+  std::string junit;                ///< JUnit XML file; empty: none
+  int repeat = 1;                   ///< check: processes per frame (1 or 2)
+  bool all = false;                 ///< update: rewrite every golden, not only failing ones
+  std::string frame;                ///< frame: the golden frame's name
+  std::string out;                  ///< frame: the PNG to write
+  std::string executable;           ///< this program, for the second process
+};
+
+/// Exit status: every golden matched (or was written).
+inline constexpr int kGoldenPassed = 0;
+/// Exit status: at least one golden failed, or the run itself failed (a write, the
+/// renderer, the second process).
+inline constexpr int kGoldenFailed = 1;
+/// Exit status: bad usage or input (nothing checked or written).
+inline constexpr int kGoldenBadInput = 2;
+
+/// Runs the command; progress and verdicts to `out`, errors to `err`. Every scene file is
+/// read and validated before any frame is rendered or any file written.
+int run_golden_command(const GoldenCommandArguments& arguments, std::ostream& out,
+                       std::ostream& err);
+
+}  // namespace impulse2d::golden
