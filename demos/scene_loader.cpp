@@ -35,7 +35,7 @@ WorldSettings read_settings(const JsonCursor& node) {
                    "restitution_threshold", "friction_mixing", "restitution_mixing", "integrator",
                    "broad_phase", "sleep_linear_speed", "sleep_angular_speed", "time_to_sleep",
                    "max_linear_speed", "contact_hertz", "contact_damping_ratio",
-                   "contact_push_max_speed", "speculative_margin"});
+                   "contact_push_max_speed", "speculative_margin", "contact_recycle_distance"});
   WorldSettings settings;
   if (auto field = node.optional_field("gravity")) {
     settings.gravity = field->vector_at_most(limits::max_gravity, limits::gravity_reason);
@@ -61,6 +61,9 @@ WorldSettings read_settings(const JsonCursor& node) {
   }
   if (auto field = node.optional_field("speculative_margin")) {
     settings.speculative_margin = field->non_negative();
+  }
+  if (auto field = node.optional_field("contact_recycle_distance")) {
+    settings.contact_recycle_distance = field->non_negative();
   }
   if (auto field = node.optional_field("warm_starting")) settings.warm_starting = field->boolean();
   if (auto field = node.optional_field("block_solver")) settings.block_solver = field->boolean();

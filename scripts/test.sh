@@ -11,7 +11,13 @@ build_dir="${1:-build}"
 scripts/setup.sh "$build_dir"
 ctest --test-dir "$build_dir" --output-on-failure -j "$(nproc)"
 
-if [ "${CI:-}" = "true" ] || [ "${FULL:-}" = "1" ]; then
+# CI means CI for any value but empty, false, 0, no or off (as the golden harness reads it).
+ci_value=$(printf '%s' "${CI:-}" | tr '[:upper:]' '[:lower:]')
+case "$ci_value" in
+  ""|false|0|no|off) in_ci=0 ;;
+  *) in_ci=1 ;;
+esac
+if [ "$in_ci" = "1" ] || [ "${FULL:-}" = "1" ]; then
   export LSAN_OPTIONS="suppressions=$PWD/scripts/sanitizer_suppressions.txt:print_suppressions=0"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
   sanitized="${build_dir}-asan"
