@@ -1,5 +1,5 @@
 /// @file platformer.cpp
-/// The platformer character (core/character.h) on a course that shows every move: a short
+/// The platformer character (gameplay/character.h) on a course that shows every move: a short
 /// hop and a full jump, up through a one-way platform and down through it again, idle on a
 /// 30-degree slope, a coyote jump off a ledge followed by a double jump, a buffered jump on
 /// landing, a ride on a moving kinematic platform, and wall jumps up a shaft. The run is
