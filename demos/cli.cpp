@@ -11,9 +11,9 @@
 #include "bench/lab/lab_command.h"
 #include "demos/commands.h"
 #include "demos/interrupt.h"
-#include "demos/overlays.h"
+#include "scene/overlays.h"
 #include "demos/scene_registry.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 #include "tools/golden/diff_command.h"
 
 namespace impulse2d::demos {

@@ -5,8 +5,8 @@
 /// landing, a ride on a moving kinematic platform, and wall jumps up a shaft. The run is
 /// scripted with button events (left, right, jump, down), so it is the same every time.
 #include "core/world.h"
-#include "demos/character_script.h"
-#include "demos/scene.h"
+#include "scene/character_script.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 #include <optional>

@@ -10,7 +10,7 @@
 
 #include "gameplay/character.h"
 #include "gameplay/one_way_platform.h"
-#include "demos/step_script.h"
+#include "scene/step_script.h"
 
 namespace impulse2d::demos {
 
