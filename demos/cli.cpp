@@ -11,6 +11,7 @@
 #include "bench/lab/lab_command.h"
 #include "demos/commands.h"
 #include "demos/interrupt.h"
+#include "render/offscreen_backend.h"
 #include "scene/overlays.h"
 #include "demos/scene_registry.h"
 #include "scene/usage_error.h"
@@ -26,6 +27,13 @@ std::string overlay_help() {
   std::string text = "comma-separated overlays:";
   for (const OverlayName& each : overlay_names()) text += std::string(" ") + each.name;
   return text + " (default: the scene's)";
+}
+
+/// `--backend osmesa|egl` on a command that renders.
+void add_backend_option(CLI::App& command, std::string& backend) {
+  command.add_option("--backend", backend,
+                     "offscreen renderer: osmesa or egl (default: $IMPULSE2D_BACKEND, else osmesa)")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
 }
 
 void add_scene_options(CLI::App& command, SceneArguments& arguments, bool scene_required) {
@@ -60,6 +68,7 @@ int run_cli(int argc, char** argv) {
   app.require_subcommand(0, 1);
   app.footer("Exit status: 0 success, 1 runtime failure, 2 bad usage or invalid scene file.");
 
+  std::string backend;
   CLI::App* list =
       app.add_subcommand("list", "list the built-in scenes with their parameters and models");
 
@@ -67,6 +76,7 @@ int run_cli(int argc, char** argv) {
   CLI::App* render_command =
       app.add_subcommand("render", "render a scene into a PNG frame sequence");
   add_scene_options(*render_command, render.scene, true);
+  add_backend_option(*render_command, backend);
   render_command->add_option(
       "--frames,-f", render.frames,
       "steps to draw: A:B[:k] ranges, comma-separated (frame n = world after n steps)");
@@ -101,6 +111,7 @@ int run_cli(int argc, char** argv) {
   CLI::App* sheet_command = app.add_subcommand(
       "sheet", "tile chosen frames of a run into one labelled PNG (a contact sheet)");
   add_scene_options(*sheet_command, sheet.scene, false);
+  add_backend_option(*sheet_command, backend);
   sheet_command->add_option("--frames,-f", sheet.frames,
                             "steps to show: A:B[:k] ranges (default: --count spread)");
   sheet_command->add_option("--count,-c", sheet.count, "frames spread evenly over the run")
@@ -188,6 +199,7 @@ int run_cli(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
   install_interrupt_handlers();
   try {
+    if (!backend.empty()) render::set_default_backend(render::parse_backend(backend, "--backend"));
     if (list->parsed()) {
       list_scenes(std::cout);
     } else if (render_command->parsed()) {
