@@ -27,6 +27,10 @@ else()
   set(IMPULSE2D_PC_LIBS "-limpulse2d_scene -limpulse2d_gameplay -limpulse2d_core")
   set(IMPULSE2D_PC_REQUIRES "glm nlohmann_json")
 endif()
+# Relocatable: the prefix is found from the .pc file's own folder, so `cmake --install
+# --prefix P` works whatever CMAKE_INSTALL_PREFIX was at configure time.
+file(RELATIVE_PATH IMPULSE2D_PC_PREFIX_FROM_PC_DIR /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+string(REGEX REPLACE "/$" "" IMPULSE2D_PC_PREFIX_FROM_PC_DIR "${IMPULSE2D_PC_PREFIX_FROM_PC_DIR}")
 configure_file(${PROJECT_SOURCE_DIR}/cmake/impulse2d.pc.in ${PROJECT_BINARY_DIR}/impulse2d.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/impulse2d.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -12,6 +12,7 @@
 #include "demos/commands.h"
 #include "demos/interrupt.h"
 #include "render/offscreen_backend.h"
+#include "render/render_error.h"
 #include "scene/overlays.h"
 #include "demos/scene_registry.h"
 #include "scene/usage_error.h"
@@ -199,7 +200,16 @@ int run_cli(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
   install_interrupt_handlers();
   try {
-    if (!backend.empty()) render::set_default_backend(render::parse_backend(backend, "--backend"));
+    if (render_command->parsed() || sheet_command->parsed()) {
+      // The backend (option, else environment) is checked before any work: a bad one is
+      // bad usage (exit 2), not a renderer failure half-way.
+      try {
+        render::set_default_backend(backend.empty() ? render::default_backend()
+                                                    : render::parse_backend(backend, "--backend"));
+      } catch (const render::RenderError& error) {
+        throw UsageError(error.what());
+      }
+    }
     if (list->parsed()) {
       list_scenes(std::cout);
     } else if (render_command->parsed()) {

@@ -22,8 +22,8 @@ constexpr const char* kLevel = R"({
   "settings": {"gravity": [0, -10]},
   "model": {"shapes": ["box", "circle"]},
   "bodies": [
-    {"name": "ground", "shape": {"type": "box", "half_extents": [20, 0.5]}, "position": [0, -0.5],
-     "density": 0},
+    {"name": "ground", "type": "static", "shape": {"type": "box", "half_extents": [20, 0.5]},
+     "position": [0, -0.5]},
     {"name": "ball", "shape": {"type": "circle", "radius": 0.5}, "position": [-3, 4]}
   ]
 })";
@@ -51,9 +51,9 @@ int main() {
     character.update(world, walk);
     world.step();
   }
-  const float ball_y = world.body(world.body_ids().at(1)).position.y;  // created second
+  const float ball_y = world.body(world.body_ids().at(1)).transform.position.y;  // created second
   if (std::fabs(ball_y - 0.5f) > 0.05f) return fail("the ball does not rest on the ground", ball_y);
-  const float walked = world.body(character.body()).position.x;
+  const float walked = world.body(character.body()).transform.position.x;
   if (walked < 1.0f) return fail("the character did not walk right", walked);
 
   render::FrameRenderer renderer(64, 48);

@@ -4,7 +4,8 @@
 #   installed     `cmake --install BUILD_DIR --prefix WORK_DIR/prefix`, the consumer configured
 #                 with find_package(impulse2d CONFIG) and -ffast-math in its own flags (the
 #                 core's usage requirements must switch it off again), then main.cpp compiled
-#                 by hand with `pkg-config --cflags --libs impulse2d`;
+#                 by hand with `pkg-config --cflags --libs impulse2d`; both must print the
+#                 same state hash;
 #   subdirectory  the consumer adds SOURCE_DIR with add_subdirectory while GoogleTest, CLI11
 #                 and zlib are hidden (CMAKE_DISABLE_FIND_PACKAGE_*): none of them is needed.
 # Any failing step stops the test with the step's output.
@@ -47,6 +48,7 @@ if(MODE STREQUAL "installed")
   run("build" ${CMAKE_COMMAND} --build ${work}/build)
   run("run" ${work}/build/consumer)
   expect_ok("find_package consumer")
+  set(cmake_output "${last_output}")
 
   set(ENV{PKG_CONFIG_PATH} ${prefix}/lib/pkgconfig)
   run("pkg-config" pkg-config --cflags --libs impulse2d)
@@ -56,6 +58,13 @@ if(MODE STREQUAL "installed")
       ${flags})
   run("run" ${work}/consumer_pc)
   expect_ok("pkg-config consumer")
+  # Same source, two build systems, one of them asking for -ffast-math: the same state.
+  string(REGEX MATCH "state hash [0-9a-f]+" cmake_hash "${cmake_output}")
+  string(REGEX MATCH "state hash [0-9a-f]+" pc_hash "${last_output}")
+  if(NOT cmake_hash STREQUAL pc_hash)
+    message(FATAL_ERROR "consumer (installed): ${cmake_hash} with CMake and -ffast-math, "
+                        "${pc_hash} with pkg-config: the usage requirements did not hold")
+  endif()
 elseif(MODE STREQUAL "subdirectory")
   run("configure with add_subdirectory" ${configure} -DIMPULSE2D_SOURCE_DIR=${SOURCE_DIR}
       -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
