@@ -40,5 +40,4 @@ function(impulse2d_library target export_name)
           LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
           RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   install(DIRECTORY ${staged_dir} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/impulse2d)
-  set_property(GLOBAL APPEND PROPERTY IMPULSE2D_INSTALLED_LIBRARIES ${target})
 endfunction()
