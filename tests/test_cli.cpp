@@ -3,6 +3,7 @@
 // matches the exact answer up to semi-implicit Euler's known error g t dt / 2.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,12 +36,14 @@ void write_file(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-/// A fresh, empty directory for one test.
+/// A fresh, empty directory for one test (the process id keeps two suites running at once on
+/// one machine, from two build trees, out of each other's way).
 class CliTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("impulse2d_test_cli_" + std::string(info->name()));
+    dir_ = fs::temp_directory_path() / ("impulse2d_test_cli_" + std::string(info->name()) + "_" +
+                                        std::to_string(getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
