@@ -53,10 +53,12 @@ struct ContactPoint {
   /// (Newton's cradle) instead of being shared by the whole row at once.
   bool waiting = false;
   bool friction_at_limit = false;   ///< the last friction pass was clamped by the Coulomb limit
-  /// Contact recycling (`contact_recycle.h`): the point as the manifold last found it, in each
-  /// body's frame (metres), and its separation then (metres, > 0 apart).
+  /// Contact recycling (`contact_recycle.h`): the point as the manifold last found it, in A's
+  /// frame, metres.
   vec2 recycle_anchor_a{0.0f, 0.0f};
+  /// The same point in B's frame, metres.
   vec2 recycle_anchor_b{0.0f, 0.0f};
+  /// The point's separation when the manifold was last found, metres (> 0 apart).
   float base_separation = 0.0f;
 };
 

@@ -1,6 +1,8 @@
 #pragma once
 /// @file error.h
-/// The single exception type the core throws on API misuse.
+/// The exception type the core throws on API misuse, and the base of the one error type of
+/// each layer above it (`render::RenderError`, `demos::UsageError` for scene files and
+/// command lines), so a program can catch everything impulse2d throws as `impulse2d::Error`.
 
 #include <stdexcept>
 #include <string>

@@ -28,7 +28,7 @@ struct Manifold {
 };
 
 /// Builds a feature id from the feature indices of the two shapes:
-/// (A's feature, B's feature) packed as two 16-bit halves, with `kind` tagging what made it.
+/// (A's feature, B's feature) packed as two 16-bit halves.
 constexpr std::uint32_t make_feature_id(std::uint32_t feature_a, std::uint32_t feature_b) {
   return ((feature_a & 0xFFFFu) << 16) | (feature_b & 0xFFFFu);
 }

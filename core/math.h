@@ -46,8 +46,6 @@ struct Rotation {
     const CosSin values = cos_sin(angle);
     return {values.cosine, values.sine};
   }
-  /// The angle in radians, in (-pi, pi].
-  float angle() const { return std::atan2(sine, cosine); }
   /// Rotates a vector by this rotation.
   vec2 rotate(vec2 v) const { return vec2(cosine * v.x - sine * v.y, sine * v.x + cosine * v.y); }
   /// Rotates a vector by the inverse of this rotation.

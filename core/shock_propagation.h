@@ -38,11 +38,13 @@ struct SupportOrder {
   std::vector<int> contacts_upward;
   /// Per body slot: 1 when a heavy body rests on it, directly or through other bodies.
   std::vector<std::uint8_t> under_heavy;
-  /// Scratch: per-slot edge offsets (size slots + 1), edge targets, the search queue, and
-  /// per-level counts for the sort.
+  /// Scratch: per-slot offsets into `edge_body` (size slots + 1).
   std::vector<int> edge_start;
+  /// Scratch: the other body of each supporting contact, grouped by body.
   std::vector<int> edge_body;
+  /// Scratch: the breadth-first queue, then the contacts between levels in ascending order.
   std::vector<int> queue;
+  /// Scratch: contacts per level, then each level's first place in the sorted order.
   std::vector<int> level_count;
 };
 

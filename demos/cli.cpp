@@ -11,9 +11,11 @@
 #include "bench/lab/lab_command.h"
 #include "demos/commands.h"
 #include "demos/interrupt.h"
-#include "demos/overlays.h"
+#include "render/offscreen_backend.h"
+#include "render/render_error.h"
+#include "scene/overlays.h"
 #include "demos/scene_registry.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 #include "tools/golden/diff_command.h"
 #include "tools/golden/diff_limits.h"
 #include "tools/golden_scenes/golden_command.h"
@@ -28,6 +30,13 @@ std::string overlay_help() {
   std::string text = "comma-separated overlays:";
   for (const OverlayName& each : overlay_names()) text += std::string(" ") + each.name;
   return text + " (default: the scene's)";
+}
+
+/// `--backend osmesa|egl` on a command that renders.
+void add_backend_option(CLI::App& command, std::string& backend) {
+  command.add_option("--backend", backend,
+                     "offscreen renderer: osmesa or egl (default: $IMPULSE2D_BACKEND, else osmesa)")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
 }
 
 void add_scene_options(CLI::App& command, SceneArguments& arguments, bool scene_required) {
@@ -62,6 +71,7 @@ int run_cli(int argc, char** argv) {
   app.require_subcommand(0, 1);
   app.footer("Exit status: 0 success, 1 runtime failure, 2 bad usage or invalid scene file.");
 
+  std::string backend;
   CLI::App* list =
       app.add_subcommand("list", "list the built-in scenes with their parameters and models");
 
@@ -69,6 +79,7 @@ int run_cli(int argc, char** argv) {
   CLI::App* render_command =
       app.add_subcommand("render", "render a scene into a PNG frame sequence");
   add_scene_options(*render_command, render.scene, true);
+  add_backend_option(*render_command, backend);
   render_command->add_option(
       "--frames,-f", render.frames,
       "steps to draw: A:B[:k] ranges, comma-separated (frame n = world after n steps)");
@@ -103,6 +114,7 @@ int run_cli(int argc, char** argv) {
   CLI::App* sheet_command = app.add_subcommand(
       "sheet", "tile chosen frames of a run into one labelled PNG (a contact sheet)");
   add_scene_options(*sheet_command, sheet.scene, false);
+  add_backend_option(*sheet_command, backend);
   sheet_command->add_option("--frames,-f", sheet.frames,
                             "steps to show: A:B[:k] ranges (default: --count spread)");
   sheet_command->add_option("--count,-c", sheet.count, "frames spread evenly over the run")
@@ -230,6 +242,16 @@ int run_cli(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
   install_interrupt_handlers();
   try {
+    if (render_command->parsed() || sheet_command->parsed()) {
+      // The backend (option, else environment) is checked before any work: a bad one is
+      // bad usage (exit 2), not a renderer failure half-way.
+      try {
+        render::set_default_backend(backend.empty() ? render::default_backend()
+                                                    : render::parse_backend(backend, "--backend"));
+      } catch (const render::RenderError& error) {
+        throw UsageError(error.what());
+      }
+    }
     if (list->parsed()) {
       list_scenes(std::cout);
     } else if (render_command->parsed()) {

@@ -8,13 +8,13 @@
 
 #include "demos/contact_sheet.h"
 #include "demos/frame_sequence.h"
-#include "demos/overlays.h"
+#include "scene/overlays.h"
 #include "demos/progress.h"
 #include "demos/run_limits.h"
 #include "demos/scene_registry.h"
 #include "demos/scene_run.h"
 #include "demos/trace_writer.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 #include "demos/video_encoder.h"
 
 namespace impulse2d::demos {

@@ -10,7 +10,7 @@
 #include "demos/output_guard.h"
 #include "demos/run_limits.h"
 #include "demos/scene_camera.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 #include "render/frame_renderer.h"
 #include "render/png_encoder.h"
 

@@ -2,16 +2,15 @@
 #include "demos/frame_plan.h"
 
 #include "demos/run_limits.h"
-#include "demos/usage_error.h"
-#include "render/render_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 
 FramePlan plan_frames(const std::string& spec, std::int64_t run_steps) {
-  render::FrameSelection selection;
+  FrameSelection selection;
   try {
-    selection = render::FrameSelection::parse(spec);
-  } catch (const render::RenderError& error) {
+    selection = FrameSelection::parse(spec);
+  } catch (const UsageError& error) {
     throw UsageError(std::string("--frames: ") + error.what());
   }
   const std::string run =

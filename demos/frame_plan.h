@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/frame_selection.h"
+#include "scene/frame_selection.h"
 
 namespace impulse2d::demos {
 
@@ -16,7 +16,7 @@ struct FramePlan {
   std::vector<std::int64_t> frames;  ///< selected steps, ascending, at least one
 };
 
-/// Parses `spec` (`A:B:k` ranges, see `render::FrameSelection`) and keeps the steps in
+/// Parses `spec` (`A:B:k` ranges, see `FrameSelection`) and keeps the steps in
 /// 0..`run_steps`; the run is then cut short after the last selected step. Throws
 /// `UsageError` for a malformed spec, a range that ends after the run (naming both), a
 /// selection with no step inside the run, or more than `limits::max_frames` frames. Costs

@@ -8,7 +8,7 @@
 #include "demos/interrupt.h"
 #include "demos/output_guard.h"
 #include "demos/output_staging.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 #include "demos/scene_camera.h"
 #include "demos/video_encoder.h"
 #include "render/frame_renderer.h"

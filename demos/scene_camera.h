@@ -2,7 +2,7 @@
 /// @file scene_camera.h
 /// The camera of a scene's view for a given image size.
 
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "render/camera.h"
 
 namespace impulse2d::demos {

@@ -1,8 +1,8 @@
 /// @file scene_registry.cpp
 #include "demos/scene_registry.h"
 
-#include "demos/scene_loader.h"
-#include "demos/usage_error.h"
+#include "scene/scene_loader.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 

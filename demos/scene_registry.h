@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "demos/scene.h"
+#include "scene/scene.h"
 
 namespace impulse2d::demos {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "demos/interrupt.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 namespace {

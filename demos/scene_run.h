@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 
 namespace impulse2d::demos {
 

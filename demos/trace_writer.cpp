@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 namespace {

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "core/world.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 #include "render/motion_trails.h"
 
 namespace impulse2d::demos {

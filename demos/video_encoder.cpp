@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 namespace {

@@ -5,6 +5,7 @@
 /// include it, so callers do not see GL.
 
 #ifndef GL_GLEXT_PROTOTYPES
+/// Asks <GL/glext.h> for the prototypes of every entry point (no loader).
 #define GL_GLEXT_PROTOTYPES 1
 #endif
 #include <GL/gl.h>

@@ -1,22 +1,17 @@
 /// @file osmesa_context.cpp
 #include "render/osmesa_context.h"
 
+#include "render/context_support.h"
 #include "render/gl_api.h"
 #include "render/render_error.h"
 
 #include <GL/osmesa.h>
 
 #include <cstdlib>
-#include <cstring>
 
 namespace impulse2d::render {
 
 namespace {
-
-constexpr int kRequestedMajor = 3;
-constexpr int kRequestedMinor = 3;
-// Largest size accepted before a context exists; the driver's own limit is checked after.
-constexpr int kMaxSize = 16384;
 
 // The gallium driver OSMesa will pick, for error messages.
 std::string driver_name() {
@@ -26,23 +21,13 @@ std::string driver_name() {
 }
 
 std::string describe_request(int width, int height) {
-  return "OSMesa with " + driver_name() + ", OpenGL " + std::to_string(kRequestedMajor) + "." +
-         std::to_string(kRequestedMinor) + " core profile, " + std::to_string(width) + "x" +
-         std::to_string(height) + " RGBA8";
-}
-
-std::string gl_string(GLenum name) {
-  const GLubyte* text = glGetString(name);
-  return text != nullptr ? std::string(reinterpret_cast<const char*>(text)) : std::string("?");
+  return context_support::describe_request("OSMesa with " + driver_name(), width, height);
 }
 
 }  // namespace
 
-OsmesaContext::OsmesaContext(int width, int height) : width_(width), height_(height) {
-  if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize) {
-    throw RenderError("cannot create offscreen context (" + describe_request(width, height) +
-                      "): size must be 1.." + std::to_string(kMaxSize) + " pixels each way");
-  }
+OsmesaContext::OsmesaContext(int width, int height) : OffscreenContext(width, height) {
+  context_support::check_size(describe_request(width, height), width, height);
   const int attributes[] = {OSMESA_FORMAT,
                             OSMESA_RGBA,
                             OSMESA_DEPTH_BITS,
@@ -54,9 +39,9 @@ OsmesaContext::OsmesaContext(int width, int height) : width_(width), height_(hei
                             OSMESA_PROFILE,
                             OSMESA_CORE_PROFILE,
                             OSMESA_CONTEXT_MAJOR_VERSION,
-                            kRequestedMajor,
+                            context_support::requested_major,
                             OSMESA_CONTEXT_MINOR_VERSION,
-                            kRequestedMinor,
+                            context_support::requested_minor,
                             0};
   context_ = OSMesaCreateContextAttribs(attributes, nullptr);
   if (context_ == nullptr) {
@@ -66,16 +51,14 @@ OsmesaContext::OsmesaContext(int width, int height) : width_(width), height_(hei
   }
   buffer_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
   make_current();
-  renderer_ = gl_string(GL_RENDERER);
-  version_ = gl_string(GL_VERSION);
-  GLint viewport_limits[2] = {0, 0};
-  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport_limits);
-  if (width > viewport_limits[0] || height > viewport_limits[1]) {
+  read_gl_strings();
+  try {
+    context_support::check_viewport_limit(describe_request(width, height), renderer(), width,
+                                          height);
+  } catch (const RenderError&) {
     OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
     OSMesaDestroyContext(context_);
-    throw RenderError("cannot create offscreen context (" + describe_request(width, height) +
-                      "): " + renderer_ + " draws at most " + std::to_string(viewport_limits[0]) +
-                      "x" + std::to_string(viewport_limits[1]) + " pixels");
+    throw;
   }
 }
 
@@ -86,25 +69,16 @@ OsmesaContext::~OsmesaContext() {
 
 void OsmesaContext::make_current() {
   if (OSMesaGetCurrentContext() == context_) return;
-  if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_)) {
-    throw RenderError("OSMesaMakeCurrent failed for the " + std::to_string(width_) + "x" +
-                      std::to_string(height_) + " context (" + driver_name() + ")");
+  if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width(), height())) {
+    throw RenderError("OSMesaMakeCurrent failed for the " + std::to_string(width()) + "x" +
+                      std::to_string(height()) + " context (" + driver_name() + ")");
   }
 }
 
 void OsmesaContext::read_pixels(Frame& frame) {
   make_current();
   glFinish();  // OSMesa copies the finished image into buffer_, bottom row first
-  frame.resize(width_, height_);
-  const std::size_t stride = frame.stride();
-  for (int row = 0; row < height_; ++row) {
-    const std::uint8_t* source = buffer_.data() + static_cast<std::size_t>(height_ - 1 - row) * stride;
-    std::memcpy(frame.rgba.data() + static_cast<std::size_t>(row) * stride, source, stride);
-  }
-}
-
-std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height) {
-  return std::make_unique<OsmesaContext>(width, height);
+  context_support::copy_bottom_up(buffer_.data(), width(), height(), frame);
 }
 
 }  // namespace impulse2d::render

@@ -23,19 +23,11 @@ class OsmesaContext final : public OffscreenContext {
   OsmesaContext& operator=(const OsmesaContext&) = delete;
 
   void make_current() override;
-  int width() const override { return width_; }
-  int height() const override { return height_; }
   void read_pixels(Frame& frame) override;
-  std::string renderer() const override { return renderer_; }
-  std::string version() const override { return version_; }
 
  private:
   osmesa_context* context_ = nullptr;
-  int width_ = 0;
-  int height_ = 0;
   std::vector<std::uint8_t> buffer_;  // OSMesa's colour buffer, bottom row first
-  std::string renderer_;
-  std::string version_;
 };
 
 }  // namespace impulse2d::render

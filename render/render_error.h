@@ -2,17 +2,16 @@
 /// @file render_error.h
 /// The exception type of the renderer: context creation, shaders, bad sizes, file output.
 
-#include <stdexcept>
-#include <string>
+#include "core/error.h"
 
 namespace impulse2d::render {
 
 /// Thrown when the renderer cannot do what it was asked. The message names the thing that
 /// failed (driver, shader, file path, argument) and the reason.
-class RenderError : public std::runtime_error {
+class RenderError : public Error {
  public:
   /// An error carrying a complete, human-readable message.
-  explicit RenderError(const std::string& message) : std::runtime_error(message) {}
+  using Error::Error;
 };
 
 }  // namespace impulse2d::render

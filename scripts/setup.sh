@@ -6,10 +6,10 @@ cd "$(dirname "$0")/.."
 
 packages=(
   build-essential cmake pkg-config git
-  libosmesa6-dev libglm-dev libstb-dev libgtest-dev
+  libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev libstb-dev libgtest-dev
   nlohmann-json3-dev libcli11-dev libdeflate-dev zlib1g-dev
   gnuplot-nox libbox2d-dev libchipmunk-dev
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev doxygen
 )
 
 missing=()

@@ -5,6 +5,7 @@
 // create none. Cases with exit status 0 are valid inputs that must stay accepted.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -92,7 +93,9 @@ class BadInputCatalogue : public ::testing::TestWithParam<Case> {};
 
 TEST_P(BadInputCatalogue, ExitStatusMessageAndNoFileChanged) {
   const json& spec = GetParam().spec;
-  const fs::path root = fs::temp_directory_path() / ("impulse2d_catalogue_" + GetParam().name);
+  // The process id keeps suites of two build trees running at once apart.
+  const fs::path root = fs::temp_directory_path() /
+                        ("impulse2d_catalogue_" + GetParam().name + "_" + std::to_string(getpid()));
   const fs::path work = root / "work";
   fs::remove_all(root);
   fs::create_directories(work);

@@ -1,8 +1,8 @@
 #pragma once
 // Shared set-up of the character suites: a world at a chosen time step with static boxes and
 // slopes, a character, and a loop that drives it with an input script.
-#include "core/character.h"
-#include "core/one_way_platform.h"
+#include "gameplay/character.h"
+#include "gameplay/one_way_platform.h"
 #include "core/world.h"
 
 #include <cmath>

@@ -3,6 +3,7 @@
 // matches the exact answer up to semi-implicit Euler's known error g t dt / 2.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,12 +36,14 @@ void write_file(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-/// A fresh, empty directory for one test.
+/// A fresh, empty directory for one test (the process id keeps two suites running at once on
+/// one machine, from two build trees, out of each other's way).
 class CliTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("impulse2d_test_cli_" + std::string(info->name()));
+    dir_ = fs::temp_directory_path() / ("impulse2d_test_cli_" + std::string(info->name()) + "_" +
+                                        std::to_string(getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -116,6 +119,32 @@ TEST_F(CliTest, RendersAFrameSequenceAndPrintsWhereItWent) {
   EXPECT_EQ(files().size(), 3u);
   // Not a terminal: plain progress lines on stderr.
   EXPECT_NE(result.err.find("pyramid: 3/3 frames"), std::string::npos) << result.err;
+}
+
+TEST_F(CliTest, BackendOptionAndVariableGiveTheSameFiles) {
+  const std::string frames = "render pyramid --param rows=4 --frames 0:20:20 --size 160x120 ";
+  ASSERT_EQ(run(frames + "--backend osmesa --out osmesa").status, 0);
+  ASSERT_EQ(run(frames + "--backend egl --out egl").status, 0);
+  ASSERT_EQ(run(frames + "--out variable", "IMPULSE2D_BACKEND=egl").status, 0);
+  for (const char* name : {"pyramid_00000.png", "pyramid_00020.png"}) {
+    const std::string reference = read_file(dir_ / "osmesa" / name);
+    ASSERT_GT(reference.size(), 8u) << name;
+    EXPECT_TRUE(read_file(dir_ / "egl" / name) == reference) << name << " differs with --backend egl";
+    EXPECT_TRUE(read_file(dir_ / "variable" / name) == reference) << name << " differs with IMPULSE2D_BACKEND=egl";
+  }
+}
+
+TEST_F(CliTest, BadBackendIsBadUsageBeforeAnyFile) {
+  const Result option = run("render pyramid --backend vulkan --out frames");
+  EXPECT_EQ(option.status, 2);
+  EXPECT_NE(option.err.find("--backend"), std::string::npos) << option.err;
+  const Result variable = run("render pyramid --out frames", "IMPULSE2D_BACKEND=vulkan");
+  EXPECT_EQ(variable.status, 2);
+  EXPECT_NE(variable.err.find("environment variable IMPULSE2D_BACKEND: unknown renderer backend "
+                              "'vulkan' (use osmesa or egl)"),
+            std::string::npos)
+      << variable.err;
+  EXPECT_TRUE(files().empty());
 }
 
 TEST_F(CliTest, WithoutArgumentsRendersTheDefaultDemoIntoOut) {

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "demos/params.h"
+#include "scene/params.h"
 #include "demos/scene_registry.h"
 #include "demos/scene_run.h"
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_run.h"
 
 namespace impulse2d::demos {

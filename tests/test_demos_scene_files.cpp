@@ -10,9 +10,9 @@
 
 #include "core/world.h"
 #include "demos/scene_camera.h"
-#include "demos/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "demos/scene_run.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 using namespace impulse2d;
 using namespace impulse2d::demos;

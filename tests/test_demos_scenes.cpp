@@ -7,12 +7,12 @@
 
 #include "core/world.h"
 #include "demos/frame_plan.h"
-#include "demos/params.h"
+#include "scene/params.h"
 #include "demos/scene_camera.h"
 #include "demos/scene_random.h"
 #include "demos/scene_registry.h"
 #include "demos/scene_run.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 #include "render/frame_renderer.h"
 
 using namespace impulse2d;

@@ -15,7 +15,7 @@
 
 #include "core/shape.h"
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "tests/test_golden_support.h"
 #include "tools/golden_scenes/golden_catalog.h"
 #include "tools/golden_scenes/scene_frame.h"

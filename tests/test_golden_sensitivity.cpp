@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "tests/test_golden_support.h"
 #include "tools/golden_scenes/golden_catalog.h"
 #include "tools/golden_scenes/scene_frame.h"

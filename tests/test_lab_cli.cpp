@@ -3,6 +3,7 @@
 // and leaves no file behind.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -32,7 +33,9 @@ class LabCliTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("impulse2d_test_lab_cli_" + std::string(info->name()));
+    // The process id keeps suites of two build trees running at once apart.
+    dir_ = fs::temp_directory_path() / ("impulse2d_test_lab_cli_" + std::string(info->name()) +
+                                        "_" + std::to_string(getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -8,7 +8,7 @@
 #include "bench/lab/label_layout.h"
 #include "bench/lab/lab_command.h"
 #include "bench/lab/lab_result.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::lab {
 namespace {

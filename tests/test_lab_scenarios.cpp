@@ -8,7 +8,7 @@
 #include "bench/lab/lab_peers.h"
 #include "bench/lab/lab_scenario.h"
 #include "bench/lab/lab_sweep.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::lab {
 namespace {

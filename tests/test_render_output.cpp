@@ -1,7 +1,6 @@
 // Frames out: PNG round trips through stb_image, atomic writes that leave nothing behind on
-// failure, the frame-sequence writer and frame selection.
+// failure and the frame-sequence writer.
 #include "render/frame_renderer.h"
-#include "render/frame_selection.h"
 #include "render/frame_writer.h"
 #include "render/png_encoder.h"
 #include "render/render_error.h"
@@ -174,45 +173,4 @@ TEST(RenderFrameWriter, FailedWriteIsReportedAndLeavesNoPartialFile) {
   EXPECT_THROW(writer.finish(), RenderError);
   EXPECT_EQ(count_entries(directory), 1);  // the blocking directory, no temporary file
   fs::remove_all(directory);
-}
-
-TEST(RenderFrameSelection, EveryKthAndRanges) {
-  const FrameSelection all;
-  EXPECT_TRUE(all.contains(0));
-  EXPECT_TRUE(all.contains(12345));
-  EXPECT_FALSE(all.last().has_value());
-
-  const FrameSelection every = FrameSelection::every(10);
-  EXPECT_TRUE(every.contains(0));
-  EXPECT_TRUE(every.contains(30));
-  EXPECT_FALSE(every.contains(31));
-
-  const FrameSelection ranges = FrameSelection::parse("5,10:20:5,100:");
-  EXPECT_TRUE(ranges.contains(5));
-  EXPECT_FALSE(ranges.contains(6));
-  EXPECT_TRUE(ranges.contains(10));
-  EXPECT_TRUE(ranges.contains(15));
-  EXPECT_TRUE(ranges.contains(20));
-  EXPECT_FALSE(ranges.contains(25));
-  EXPECT_FALSE(ranges.contains(99));
-  EXPECT_TRUE(ranges.contains(100));
-  EXPECT_TRUE(ranges.contains(101));
-  EXPECT_FALSE(ranges.last().has_value());
-
-  EXPECT_TRUE(FrameSelection::parse("::25").contains(50));
-  EXPECT_FALSE(FrameSelection::parse("::25").contains(51));
-  EXPECT_EQ(FrameSelection::parse("0:59:10").last(), std::optional<std::int64_t>(50));
-  EXPECT_EQ(FrameSelection::parse("3").last(), std::optional<std::int64_t>(3));
-}
-
-TEST(RenderFrameSelection, BadSpecsNameTheProblem) {
-  for (const char* spec : {"", "a", "1:2:3:4", "5:1", "0:10:0", "-1:", "1,,2"}) {
-    try {
-      FrameSelection::parse(spec);
-      FAIL() << "'" << spec << "' was accepted";
-    } catch (const RenderError& error) {
-      EXPECT_NE(std::string(error.what()).find(std::string("'") + spec + "'"), std::string::npos) << error.what();
-    }
-  }
-  EXPECT_THROW(FrameSelection::every(0), RenderError);
 }

@@ -16,7 +16,7 @@
 #include <filesystem>
 #include "demos/scene_registry.h"
 #include "demos/progress.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::lab {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/settings.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 
 namespace impulse2d::lab {
 

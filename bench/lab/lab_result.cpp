@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::lab {
 namespace {

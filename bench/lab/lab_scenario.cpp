@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "demos/json_cursor.h"
-#include "demos/scene_loader.h"
-#include "demos/usage_error.h"
+#include "scene/json_cursor.h"
+#include "scene/scene_loader.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::lab {
 namespace {

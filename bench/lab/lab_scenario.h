@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "bench/lab/lab_metric.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 
 namespace impulse2d::lab {
 

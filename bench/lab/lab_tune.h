@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "bench/lab/lab_method.h"
-#include "demos/params.h"
-#include "demos/scene.h"
+#include "scene/params.h"
+#include "scene/scene.h"
 
 namespace impulse2d::lab {
 

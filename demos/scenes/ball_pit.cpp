@@ -3,7 +3,7 @@
 /// O(n log n); balls do not need to spin, so rotation is off; sleeping lets the settled pit
 /// cost little.
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

@@ -7,7 +7,7 @@
 /// 0): with the default margin the fast plain ball is caught a step ahead too, and the
 /// contrast between discrete and swept collision it exists to show would vanish.
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

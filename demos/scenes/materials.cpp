@@ -4,7 +4,7 @@
 /// ball's own restitution (apex heights e^(2k) h). The seventh, Static, has density 0: its
 /// ball hangs where it was placed.
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

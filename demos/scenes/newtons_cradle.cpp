@@ -4,7 +4,7 @@
 /// as came in, at the same speed; a sequential impulse solver only approximates this, which
 /// is what the scene is for.
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

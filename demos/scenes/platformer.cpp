@@ -1,12 +1,12 @@
 /// @file platformer.cpp
-/// The platformer character (core/character.h) on a course that shows every move: a short
+/// The platformer character (gameplay/character.h) on a course that shows every move: a short
 /// hop and a full jump, up through a one-way platform and down through it again, idle on a
 /// 30-degree slope, a coyote jump off a ledge followed by a double jump, a buffered jump on
 /// landing, a ride on a moving kinematic platform, and wall jumps up a shaft. The run is
 /// scripted with button events (left, right, jump, down), so it is the same every time.
 #include "core/world.h"
-#include "demos/character_script.h"
-#include "demos/scene.h"
+#include "scene/character_script.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 #include <optional>

@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

@@ -3,7 +3,7 @@
 /// rotate, so the model leaves rotation off and the narrow phase uses the AABB tests only.
 /// With accumulated impulses and warm starting it stands; the tutorial's solver cannot hold it.
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

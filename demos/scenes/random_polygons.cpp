@@ -2,7 +2,7 @@
 /// Random convex polygons (3 to 8 vertices) dropped into a box: SAT with reference/incident
 /// face clipping, 2-point manifolds and rotation under load.
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

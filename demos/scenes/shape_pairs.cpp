@@ -6,7 +6,7 @@
 #include <array>
 
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

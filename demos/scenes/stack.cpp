@@ -2,7 +2,7 @@
 /// A tall stack of rotating boxes (oriented boxes, so rotation is on and the polygon clipper
 /// does the work): a resting stack must not drift by more than the slop.
 #include "core/world.h"
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {

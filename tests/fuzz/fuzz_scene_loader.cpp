@@ -6,10 +6,10 @@
 #include <string>
 
 #include "core/error.h"
-#include "demos/params.h"
-#include "demos/scene_loader.h"
+#include "scene/params.h"
+#include "scene/scene_loader.h"
 #include "demos/scene_run.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace impulse2d;

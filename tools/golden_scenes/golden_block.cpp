@@ -5,9 +5,9 @@
 
 #include <set>
 
-#include "demos/overlays.h"
-#include "demos/scene_loader.h"
-#include "demos/usage_error.h"
+#include "scene/overlays.h"
+#include "scene/scene_loader.h"
+#include "scene/usage_error.h"
 #include "tools/golden/diff_limits.h"
 #include "tools/golden/error.h"
 #include "tools/golden/file_io.h"

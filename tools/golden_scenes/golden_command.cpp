@@ -14,7 +14,7 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 #include "render/frame_renderer.h"
 #include "tools/golden/error.h"
 #include "tools/golden/file_io.h"

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "demos/scene_loader.h"
+#include "scene/scene_loader.h"
 #include "demos/scene_registry.h"
 #include "demos/trace_writer.h"
 #include "tools/golden/error.h"

@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "demos/scene.h"
+#include "scene/scene.h"
 #include "demos/scene_run.h"
 #include "tools/golden/body_drift.h"
 #include "tools/golden/noise_envelope.h"

@@ -13,10 +13,10 @@
 #include "core/debug_draw.h"
 #include "core/settings.h"
 #include "core/shape.h"
-#include "demos/params.h"
-#include "demos/scene_event.h"
-#include "demos/scene_model.h"
-#include "demos/step_script.h"
+#include "scene/params.h"
+#include "scene/scene_event.h"
+#include "scene/scene_model.h"
+#include "scene/step_script.h"
 
 namespace impulse2d {
 class World;

@@ -1,12 +1,12 @@
 /// @file json_cursor.cpp
-#include "demos/json_cursor.h"
+#include "scene/json_cursor.h"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <set>
 
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 

@@ -11,7 +11,7 @@
 /// `Character::update(world, input)`, then `world.step()`.
 
 #include "core/body.h"
-#include "core/character_input.h"
+#include "gameplay/character_input.h"
 #include "core/debug_draw.h"
 #include "core/material.h"
 #include "core/world.h"

@@ -1,8 +1,8 @@
 /// @file scene_model.cpp
-#include "demos/scene_model.h"
+#include "scene/scene_model.h"
 
 #include "core/world.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 namespace {

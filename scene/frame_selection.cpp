@@ -1,18 +1,18 @@
 /// @file frame_selection.cpp
-#include "render/frame_selection.h"
+#include "scene/frame_selection.h"
 
-#include "render/render_error.h"
+#include "scene/usage_error.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 
-namespace impulse2d::render {
+namespace impulse2d::demos {
 
 namespace {
 
 [[noreturn]] void reject(const std::string& spec, const std::string& reason) {
-  throw RenderError("frame selection '" + spec + "': " + reason);
+  throw UsageError("frame selection '" + spec + "': " + reason);
 }
 
 // A non-negative decimal integer, or nothing for an empty field.
@@ -43,7 +43,7 @@ std::vector<std::string> split(const std::string& text, char separator) {
 FrameSelection::FrameSelection() : ranges_{Range{}} {}
 
 FrameSelection FrameSelection::every(std::int64_t k) {
-  if (k < 1) throw RenderError("frame selection: every " + std::to_string(k) + " steps (need k >= 1)");
+  if (k < 1) throw UsageError("frame selection: every " + std::to_string(k) + " steps (need k >= 1)");
   return FrameSelection({Range{0, std::nullopt, k}});
 }
 
@@ -108,4 +108,4 @@ std::vector<std::int64_t> FrameSelection::steps_up_to(std::int64_t last_step,
   return steps;
 }
 
-}  // namespace impulse2d::render
+}  // namespace impulse2d::demos

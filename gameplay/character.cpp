@@ -1,7 +1,7 @@
-#include "core/character.h"
+#include "gameplay/character.h"
 
 #include "core/error.h"
-#include "core/one_way_platform.h"
+#include "gameplay/one_way_platform.h"
 
 #include <algorithm>
 #include <climits>

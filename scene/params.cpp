@@ -1,11 +1,11 @@
 /// @file params.cpp
-#include "demos/params.h"
+#include "scene/params.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 

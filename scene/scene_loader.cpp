@@ -1,5 +1,5 @@
 /// @file scene_loader.cpp
-#include "demos/scene_loader.h"
+#include "scene/scene_loader.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -10,13 +10,12 @@
 #include "core/error.h"
 #include "core/material.h"
 #include "core/world.h"
-#include "demos/character_script.h"
-#include "demos/json_cursor.h"
-#include "demos/overlays.h"
-#include "demos/scene_limits.h"
-#include "demos/usage_error.h"
-#include "render/frame_selection.h"
-#include "render/render_error.h"
+#include "scene/character_script.h"
+#include "scene/json_cursor.h"
+#include "scene/overlays.h"
+#include "scene/scene_limits.h"
+#include "scene/usage_error.h"
+#include "scene/frame_selection.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -573,8 +572,8 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     if (auto frames = run->optional_field("frames")) {
       scene.view.frames = frames->string();
       try {
-        render::FrameSelection::parse(scene.view.frames);
-      } catch (const render::RenderError& error) {
+        FrameSelection::parse(scene.view.frames);
+      } catch (const UsageError& error) {
         frames->fail(error.what());
       }
     }

@@ -1,7 +1,7 @@
 /// @file character_draw.cpp
 /// The character's debug overlays, through core's `DebugDraw` interface.
 
-#include "core/character.h"
+#include "gameplay/character.h"
 
 #include <algorithm>
 #include <string>

@@ -1,4 +1,4 @@
-#include "core/one_way_platform.h"
+#include "gameplay/one_way_platform.h"
 
 #include "core/error.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file character_script.h
-/// A scene script that plays a platformer character (core/character.h) from button events:
+/// A scene script that plays a platformer character (gameplay/character.h) from button events:
 /// `left`, `right`, `jump`, `down`. Used by the built-in `platformer` scene and by JSON scene
 /// files with a `character` object.
 
@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "core/character.h"
-#include "core/one_way_platform.h"
-#include "demos/step_script.h"
+#include "gameplay/character.h"
+#include "gameplay/one_way_platform.h"
+#include "scene/step_script.h"
 
 namespace impulse2d::demos {
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "demos/scene.h"
+#include "scene/scene.h"
 
 namespace impulse2d::demos {
 

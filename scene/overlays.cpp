@@ -1,8 +1,8 @@
 /// @file overlays.cpp
-#include "demos/overlays.h"
+#include "scene/overlays.h"
 
 #include "core/debug_draw.h"
-#include "demos/usage_error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::demos {
 

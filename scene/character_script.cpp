@@ -1,5 +1,5 @@
 /// @file character_script.cpp
-#include "demos/character_script.h"
+#include "scene/character_script.h"
 
 #include "core/world.h"
 

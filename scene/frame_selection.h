@@ -7,18 +7,18 @@
 #include <string>
 #include <vector>
 
-namespace impulse2d::render {
+namespace impulse2d::demos {
 
 /// A set of step numbers (>= 0) to turn into frames.
 class FrameSelection {
  public:
   /// Every step.
   FrameSelection();
-  /// Steps 0, k, 2k, ... Throws `RenderError` unless k >= 1.
+  /// Steps 0, k, 2k, ... Throws `UsageError` unless k >= 1.
   static FrameSelection every(std::int64_t k);
   /// Parses a comma-separated list of ranges. Each range is `A:B:k` (A, A+k, ... up to and
   /// including B), `A:B` (k = 1) or `A` (that step alone); A defaults to 0 and B to no end,
-  /// so `::10` is every 10th step and `100:` is every step from 100. Throws `RenderError`
+  /// so `::10` is every 10th step and `100:` is every step from 100. Throws `UsageError`
   /// naming the spec and the reason for anything else (negative numbers, k < 1, B < A).
   static FrameSelection parse(const std::string& spec);
 
@@ -41,4 +41,4 @@ class FrameSelection {
   std::vector<Range> ranges_;
 };
 
-}  // namespace impulse2d::render
+}  // namespace impulse2d::demos

@@ -1,4 +1,4 @@
-#include "core/character_input.h"
+#include "gameplay/character_input.h"
 
 #include "core/error.h"
 
