@@ -65,7 +65,6 @@ struct ContactPoint {
 /// Where a contact's bodies stood when its manifold was last computed, for contact recycling.
 struct ManifoldPose {
   vec2 relative_position{0.0f, 0.0f};  ///< B's centre in A's frame, metres
-  Rotation relative_rotation;          ///< B's rotation relative to A's
   Rotation rotation_a;                 ///< A's rotation
   Rotation rotation_b;                 ///< B's rotation
 };

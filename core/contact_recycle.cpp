@@ -16,28 +16,26 @@ float shape_extent(const Shape& shape) {
   switch (shape.type) {
     case ShapeType::Circle: return shape.circle.radius;
     case ShapeType::Box: return std::sqrt(length_squared(shape.box.half_extents));
-    case ShapeType::Polygon: {
-      float farthest_squared = 0.0f;
-      for (int i = 0; i < shape.polygon.count; ++i) {
-        farthest_squared = std::max(farthest_squared, length_squared(shape.polygon.vertices[i]));
-      }
-      return std::sqrt(farthest_squared);
-    }
+    case ShapeType::Polygon: return polygon_radius(shape.polygon);
   }
   return 0.0f;
 }
 
-// B's pose relative to A's: B's centre in A's frame, and B's rotation relative to A's.
+// Where the bodies stand now: B's centre in A's frame and both rotations.
 ManifoldPose pose_of(const Body& a, const Body& b) {
   const Rotation& qa = a.transform.rotation;
-  const Rotation& qb = b.transform.rotation;
   ManifoldPose pose;
   pose.relative_position = qa.inverse_rotate(b.transform.position - a.transform.position);
-  pose.relative_rotation = {qa.cosine * qb.cosine + qa.sine * qb.sine,
-                            qa.cosine * qb.sine - qa.sine * qb.cosine};
   pose.rotation_a = qa;
-  pose.rotation_b = qb;
+  pose.rotation_b = b.transform.rotation;
   return pose;
+}
+
+// B's rotation relative to A's in `pose`.
+Rotation relative_rotation(const ManifoldPose& pose) {
+  const Rotation& qa = pose.rotation_a;
+  const Rotation& qb = pose.rotation_b;
+  return {qa.cosine * qb.cosine + qa.sine * qb.sine, qa.cosine * qb.sine - qa.sine * qb.cosine};
 }
 
 // Cosine of the angle between two rotations.
@@ -79,7 +77,7 @@ bool may_recycle(const Body& a, const Body& b, const Contact& contact, float rec
   const float extent_a = a.type == BodyType::Static ? 0.0f : shape_extent(a.shape);
   const float extent_b = b.type == BodyType::Static ? 0.0f : shape_extent(b.shape);
   const float moved = std::sqrt(length_squared(now.relative_position - then.relative_position));
-  const float turned = std::fabs(sine_between(now.relative_rotation, then.relative_rotation));
+  const float turned = std::fabs(sine_between(relative_rotation(now), relative_rotation(then)));
   bool touching = false;
   for (int i = 0; i < contact.point_count; ++i) touching = touching || contact.points[i].depth >= 0.0f;
   const float tolerance = touching ? recycle_distance : std::min(recycle_distance, apart_distance);

@@ -284,6 +284,14 @@ Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out) {
   return shape;
 }
 
+float polygon_radius(const Polygon& polygon) {
+  float farthest_squared = 0.0f;
+  for (int i = 0; i < polygon.count; ++i) {
+    farthest_squared = std::max(farthest_squared, length_squared(polygon.vertices[i]));
+  }
+  return std::sqrt(farthest_squared);
+}
+
 Shape make_oriented_box(vec2 half_extents) {
   validate_half_extents("make_oriented_box", half_extents);
   Shape shape;

@@ -60,6 +60,9 @@ Shape make_box(vec2 half_extents);
 /// self-overlapping outline, repeated points, or a degenerate (near zero) area.
 Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out = nullptr);
 
+/// Distance (m) of the polygon's farthest vertex from its centre (the body's centre of mass).
+float polygon_radius(const Polygon& polygon);
+
 /// A rectangle that rotates with its body: a 4-vertex polygon of the given half extents.
 Shape make_oriented_box(vec2 half_extents);
 

@@ -38,6 +38,23 @@ bool lower_is_below(const Contact& contact, vec2 up, const std::vector<int>& lev
   return b_on_top == (level_a < level_b);
 }
 
+// The contact's body on top (the normal points from A to B, so B is on top when it points up).
+std::uint32_t upper_body(const Contact& contact, vec2 up) {
+  return glm::dot(contact.normal, up) > 0.0f ? contact.body_b.index : contact.body_a.index;
+}
+
+// The contact's body below.
+std::uint32_t lower_body(const Contact& contact, vec2 up) {
+  return glm::dot(contact.normal, up) > 0.0f ? contact.body_a.index : contact.body_b.index;
+}
+
+// True when the body on top is heavier than the one below by more than `mass_ratio`.
+bool heavy_on_light(const Contact& contact, vec2 up, const std::vector<Body>& bodies,
+                    float mass_ratio) {
+  return bodies[lower_body(contact, up)].inverse_mass >
+         mass_ratio * bodies[upper_body(contact, up)].inverse_mass;
+}
+
 // The level of the contact's body nearer the ground.
 int lower_level(const Contact& contact, const std::vector<int>& level) {
   return std::min(level[contact.body_a.index], level[contact.body_b.index]);
@@ -95,14 +112,20 @@ float shock_mass_ratio(int velocity_iterations) {
 
 void build_support_order(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                          vec2 gravity, int velocity_iterations, SupportOrder& order) {
-  const int slots = static_cast<int>(bodies.size());
-  order.level.assign(bodies.size(), -1);
-  order.edge_start.assign(bodies.size() + 1, 0);
   order.contacts_upward.clear();
-  order.queue.clear();
   const float g = glm::length(gravity);
   if (!(g > 0.0f)) return;
   const vec2 up = -gravity / g;
+  // Most steps have no heavy-on-light pair at all: then there is no chain to order.
+  const float mass_ratio = shock_mass_ratio(velocity_iterations);
+  const auto needs_order = [&](const Contact& contact) {
+    return supports(contact, up) && heavy_on_light(contact, up, bodies, mass_ratio);
+  };
+  if (std::none_of(contacts.begin(), contacts.end(), needs_order)) return;
+  const int slots = static_cast<int>(bodies.size());
+  order.level.assign(bodies.size(), -1);
+  order.edge_start.assign(bodies.size() + 1, 0);
+  order.queue.clear();
   // Adjacency in compressed rows: count each body's supporting contacts, then fill.
   for (const Contact& contact : contacts) {
     if (!supports(contact, up)) continue;
@@ -155,17 +178,12 @@ void build_support_order(const std::vector<Contact>& contacts, const std::vector
   }
   // From the top down: a contact takes part when it is heavy-on-light or its upper body rests
   // (through contacts that take part) under one; then its lower body does too.
-  const float mass_ratio = shock_mass_ratio(velocity_iterations);
   order.under_heavy.assign(bodies.size(), 0);
   for (auto it = order.queue.rbegin(); it != order.queue.rend(); ++it) {
     const Contact& contact = contacts[*it];
-    const bool b_on_top = glm::dot(contact.normal, up) > 0.0f;
-    const std::uint32_t upper = b_on_top ? contact.body_b.index : contact.body_a.index;
-    const std::uint32_t lower = b_on_top ? contact.body_a.index : contact.body_b.index;
-    const float inverse_mass_upper = bodies[upper].inverse_mass;
-    const float inverse_mass_lower = bodies[lower].inverse_mass;
-    if (order.under_heavy[upper] != 0 || inverse_mass_lower > mass_ratio * inverse_mass_upper) {
-      order.under_heavy[lower] = 1;
+    if (order.under_heavy[upper_body(contact, up)] != 0 ||
+        heavy_on_light(contact, up, bodies, mass_ratio)) {
+      order.under_heavy[lower_body(contact, up)] = 1;
       order.contacts_upward.push_back(*it);
     }
   }

@@ -58,7 +58,9 @@ float shock_mass_ratio(int velocity_iterations);
 /// exchange). Fixed bodies (zero inverse mass) are level 0. `contacts_upward` holds, from the
 /// ground up, the supporting contacts whose lower-level body lies below the other and either
 /// is lighter than it by more than `shock_mass_ratio(velocity_iterations)` or carries such a
-/// pair above it: the whole chain that carries the heavy body down to the ground.
+/// pair above it: the whole chain that carries the heavy body down to the ground. When no
+/// supporting contact is heavy-on-light (most steps), it returns at once with
+/// `contacts_upward` empty and the rest of `order` left as it was.
 void build_support_order(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                          vec2 gravity, int velocity_iterations, SupportOrder& order);
 

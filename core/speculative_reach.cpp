@@ -10,12 +10,7 @@ namespace {
 // Farthest distance (m) of a rotating shape's surface from the centre of mass; 0 for a circle
 // (turning about its centre moves no surface point) and for a box (never rotates).
 float rotation_radius(const Shape& shape) {
-  if (shape.type != ShapeType::Polygon) return 0.0f;
-  float farthest_squared = 0.0f;
-  for (int i = 0; i < shape.polygon.count; ++i) {
-    farthest_squared = std::max(farthest_squared, length_squared(shape.polygon.vertices[i]));
-  }
-  return std::sqrt(farthest_squared);
+  return shape.type == ShapeType::Polygon ? polygon_radius(shape.polygon) : 0.0f;
 }
 
 }  // namespace

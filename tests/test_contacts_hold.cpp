@@ -29,6 +29,16 @@ constexpr float mu_d = 0.3f;
 // Both bodies carry the same coefficients, so every mixing rule gives them back.
 Material block_material() { return Material{"Block", 1.0f, 0.0f, mu_s, mu_d}; }
 
+// A static slab of the block material, `half_width` metres either side of x = 0, its top at y = 0.
+void add_block_ground(World& world, float half_width) {
+  BodyDef ground;
+  ground.type = BodyType::Static;
+  ground.material = block_material();
+  ground.material.density = 0.0f;
+  ground.position = {0.0f, -0.5f};
+  world.create_body(ground, make_oriented_box({half_width, 0.5f}));
+}
+
 WorldSettings settings_with_iterations(int iterations) {
   WorldSettings settings;
   settings.friction_mixing = FrictionMixing::Minimum;
@@ -77,12 +87,7 @@ struct Push {
   BodyId box;
   float weight = 0.0f;
   explicit Push(const WorldSettings& settings) : world(settings) {
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.material = block_material();
-    ground.material.density = 0.0f;
-    ground.position = {0.0f, -0.5f};
-    world.create_body(ground, make_oriented_box({200.0f, 0.5f}));
+    add_block_ground(world, 200.0f);
     BodyDef def;
     def.material = block_material();
     def.position = {0.0f, 0.5f};
@@ -390,12 +395,7 @@ struct HeavyOnLight {
   BodyId heavy;
   std::vector<vec2> start;
   HeavyOnLight(const WorldSettings& settings, float ratio, int light_count) : world(settings) {
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.material = block_material();
-    ground.material.density = 0.0f;
-    ground.position = {0.0f, -0.5f};
-    world.create_body(ground, make_oriented_box({10.0f, 0.5f}));
+    add_block_ground(world, 10.0f);
     BodyDef def;
     def.material = block_material();
     for (int i = 0; i < light_count; ++i) {
