@@ -3,12 +3,14 @@
 // metre apart, density 1, friction 0.6, gravity -10, 1/60 s, sleeping off. For each solver
 // method: CPU time per step (median of the measured steps), its ratio to the default measured
 // in the same run, and whether it stands by the criteria after `steps` steps:
-//   sag     - how far the top box sits below where it was built (metres; at most 0.73)
+//   sag     - how far the top box sits below where it was built (metres; at most 0.732, Box2D
+//             v3's own sag on this scene measured on this machine: the "0.73 m")
 //   side    - the largest sideways move of any box (metres; at most 0.1)
 //   over    - how many boxes moved sideways more than 0.1 m
 //   turn    - the largest turn of any box (degrees; at most 5)
 // Box2D v3 is not in Debian; README "Measured figures: physics" quotes it built from source
-// beside this program. Usage: bench_large_pyramid [--rows R] [--steps N]
+// beside this program. Usage: bench_large_pyramid [--rows R] [--steps N] [--check]
+// --check runs the soft step alone and exits 1 unless it stands (a ctest in optimised builds).
 #include "core/world.h"
 
 #include <algorithm>
@@ -93,9 +95,12 @@ Outcome run(const WorldSettings& settings, int rows, int steps) {
 
 int main(int argc, char** argv) {
   int rows = 100, steps = 500;
+  bool check = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if ((arg == "--rows" || arg == "--steps") && i + 1 < argc) {
+    if (arg == "--check") {
+      check = true;
+    } else if ((arg == "--rows" || arg == "--steps") && i + 1 < argc) {
       const int value = std::atoi(argv[++i]);
       if (value < 1 || value > 1000) {
         std::fprintf(stderr, "bench_large_pyramid: %s must be 1..1000\n", arg.c_str());
@@ -103,21 +108,24 @@ int main(int argc, char** argv) {
       }
       (arg == "--rows" ? rows : steps) = value;
     } else {
-      std::fprintf(stderr, "usage: bench_large_pyramid [--rows R] [--steps N]\n");
+      std::fprintf(stderr, "usage: bench_large_pyramid [--rows R] [--steps N] [--check]\n");
       return 2;
     }
   }
   std::printf("large pyramid: %d rows (%d boxes), %d steps of 1/60 s, CPU time\n", rows,
               rows * (rows + 1) / 2, steps);
   std::printf("%-38s %8s %6s %7s %7s %6s %7s %s\n", "method", "ms/step", "ratio", "sag m", "side m",
-              "over", "turn °", "stands (sag <= 0.73, side <= 0.1, turn <= 5)");
+              "over", "turn °", "stands (sag <= 0.732, side <= 0.1, turn <= 5)");
   double baseline = 0;
+  bool all_stand = true;
   for (const Method& method : methods()) {
+    if (check && method.settings.solver != SolverMethod::SoftStep) continue;
     const Outcome o = run(method.settings, rows, steps);
     if (baseline == 0) baseline = o.ms_per_step;
-    const bool stands = o.sag <= 0.73f && o.side <= 0.1f && o.turn_degrees <= 5.0f;
+    const bool stands = o.sag <= 0.732f && o.side <= 0.1f && o.turn_degrees <= 5.0f;
+    all_stand = all_stand && stands;
     std::printf("%-38s %8.3f %6.2f %7.3f %7.3f %6d %7.2f %s\n", method.name, o.ms_per_step,
                 o.ms_per_step / baseline, o.sag, o.side, o.over, o.turn_degrees, stands ? "yes" : "no");
   }
-  return 0;
+  return check && !all_stand ? 1 : 0;
 }

@@ -60,6 +60,10 @@ struct ContactPoint {
   vec2 recycle_anchor_b{0.0f, 0.0f};
   /// The point's separation when the manifold was last found, metres (> 0 apart).
   float base_separation = 0.0f;
+  /// Offset (m, along the contact's tangent) of B's recycle anchor from A's where the point
+  /// last stuck: the soft step's friction pulls the point back to it while the contact sticks
+  /// (see `friction_drift`), and moves it along while the point slips.
+  float stick_offset = 0.0f;
 };
 
 /// Where a contact's bodies stood when its manifold was last computed, for contact recycling.

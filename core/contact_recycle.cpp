@@ -62,6 +62,7 @@ void remember_manifold_pose(const Body& a, const Body& b, Contact& contact) {
     point.recycle_anchor_a = a.transform.apply_inverse(point.point);
     point.recycle_anchor_b = b.transform.apply_inverse(point.point);
     point.base_separation = -point.depth;
+    point.stick_offset = 0.0f;
   }
 }
 

@@ -59,6 +59,15 @@ inline void push_normal_to(Body& a, Body& b, const Contact& contact, ContactPoin
   apply_impulse(a, b, contact.mass, point, contact.normal * change);
 }
 
+/// Tangential offset (m) of the point's anchor on B from its anchor on A, along the contact's
+/// tangent, less the offset at which the point last stuck.
+inline float friction_drift(const Body& a, const Body& b, const Contact& contact,
+                            const ContactPoint& point) {
+  const vec2 on_a = a.transform.apply(point.recycle_anchor_a);
+  const vec2 on_b = b.transform.apply(point.recycle_anchor_b);
+  return glm::dot(on_b - on_a, tangent_of(contact.normal)) - point.stick_offset;
+}
+
 /// One pass of Coulomb friction over a contact's points with accumulated impulses: the
 /// accumulated tangent impulse is clamped to mu_s * Pn while the contact sticks and mu_d * Pn
 /// once it slides; `friction_at_limit` records whether the clamp acted.

@@ -3,9 +3,12 @@
 #include "core/contact_bounce.h"
 #include "core/contact_friction_state.h"
 #include "core/contact_prepare.h"
+#include "core/contact_solver_internal.h"
 #include "core/soft_contact_solver.h"
 
 namespace impulse2d {
+
+using namespace contact_detail;
 
 void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) const {
   const float h = context.substep;
@@ -28,7 +31,19 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     }
     apply_bounces(contacts, bodies);
   }
-  if (context.friction) update_friction_state(contacts, bodies);
+  if (context.friction) {
+    update_friction_state(contacts, bodies);
+    // A sliding contact sticks, when it does, where it came to rest: its points' drift so far
+    // is no longer taken back.
+    for (Contact& contact : contacts) {
+      if (!contact.sliding || !is_solvable(contact)) continue;
+      const Body& a = bodies[contact.body_a.index];
+      const Body& b = bodies[contact.body_b.index];
+      for (int i = 0; i < contact.point_count; ++i) {
+        contact.points[i].stick_offset += friction_drift(a, b, contact, contact.points[i]);
+      }
+    }
+  }
 }
 
 }  // namespace impulse2d
