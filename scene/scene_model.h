@@ -28,7 +28,7 @@ struct SceneModel {
 
   bool sleeping = false;        ///< bodies at rest are put to sleep
   int velocity_iterations = WorldSettings{}.velocity_iterations;  ///< solver passes per step
-  int position_iterations = 3;  ///< position-correction passes per step (NGS only)
+  int position_iterations = WorldSettings{}.position_iterations;  ///< position-correction passes per step (NGS only)
 
   /// True when the model declares shapes of kind `type`.
   bool allows(ShapeType type) const;
