@@ -41,11 +41,12 @@ BouncePlan plan_bounce(float approach_speed, float gap, float approach_accelerat
   return plan;
 }
 
-float current_separation(const Body& a, const Body& b, const Contact& contact,
-                         const ContactPoint& point) {
-  const vec2 surface_a = a.transform.apply(point.local_anchor_a);
-  const vec2 surface_b = b.transform.apply(point.local_anchor_b);
-  return glm::dot(surface_b - surface_a, contact.normal);
+bool any_contact_may_bounce(const std::vector<Contact>& contacts, const SolverContext& context) {
+  if (!context.restitution) return false;
+  for (const Contact& contact : contacts) {
+    if (is_solvable(contact) && contact.restitution > 0.0f) return true;
+  }
+  return false;
 }
 
 void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,

@@ -52,8 +52,17 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
 /// `bounce_speed` (accumulated impulse kept >= 0), and ends its bounce.
 void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies);
 
-/// Current separation (m) of a prepared point, from its local anchors: > 0 apart.
-float current_separation(const Body& a, const Body& b, const Contact& contact,
-                         const ContactPoint& point);
+/// Current separation (m) of a prepared point, from its local anchors: > 0 apart. Inline: the
+/// soft step asks it for every point in every pass.
+inline float current_separation(const Body& a, const Body& b, const Contact& contact,
+                                const ContactPoint& point) {
+  const vec2 surface_a = a.transform.apply(point.local_anchor_a);
+  const vec2 surface_b = b.transform.apply(point.local_anchor_b);
+  return glm::dot(surface_b - surface_a, contact.normal);
+}
+
+/// True when some solvable contact may bounce this step (restitution on and > 0): without one,
+/// `plan_contact_speeds(..., bounces_only = true, ...)` and `apply_bounces` change nothing.
+bool any_contact_may_bounce(const std::vector<Contact>& contacts, const SolverContext& context);
 
 }  // namespace impulse2d

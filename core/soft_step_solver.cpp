@@ -17,10 +17,13 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   std::vector<Contact>& contacts = stages.solver_contacts();
   std::vector<Body>& bodies = stages.solver_bodies();
   prepare_contacts(contacts, bodies, context);
+  const bool may_bounce = any_contact_may_bounce(contacts, context);
   for (int substep = 0; substep < context.substeps; ++substep) {
     stages.integrate_velocities(h);
-    plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
-                        stages.solver_body_flags());
+    if (may_bounce) {
+      plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
+                          stages.solver_body_flags());
+    }
     if (context.warm_starting) warm_start_contacts(contacts, bodies);
     for (int i = 0; i < context.velocity_iterations; ++i) {
       solve_contacts_soft(contacts, bodies, context, /*use_bias=*/true);
@@ -29,7 +32,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     for (int i = 0; i < context.velocity_iterations; ++i) {
       solve_contacts_soft(contacts, bodies, context, /*use_bias=*/false);  // relax
     }
-    apply_bounces(contacts, bodies);
+    if (may_bounce) apply_bounces(contacts, bodies);
   }
   if (context.friction) {
     update_friction_state(contacts, bodies);
