@@ -134,28 +134,54 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
   if (arguments.threads < 1 || arguments.threads > 64) throw UsageError("--threads must be 1..64");
   options.writer_threads = arguments.threads;
   if (arguments.trails) options.trails = parse_trails(*arguments.trails, "--trails");
+  options.write_frames = !arguments.no_frames;
+  if (arguments.no_frames && !arguments.video) {
+    throw UsageError("--no-frames needs --video FILE (otherwise nothing would be written)");
+  }
+  if (arguments.fps) {
+    if (!arguments.video) throw UsageError("--fps sets the video's rate: it needs --video FILE");
+    if (!(*arguments.fps >= 1.0 && *arguments.fps <= 240.0)) {
+      throw UsageError("--fps " + format_param_value(*arguments.fps) + ": must be 1..240");
+    }
+    options.frames_per_second = *arguments.fps;
+  }
   if (arguments.video) {
     check_video_output(*arguments.video);
     options.video = std::filesystem::path(*arguments.video);
   }
+  for (const ParamSpec& spec : resolved.params.specs()) {
+    const double value = resolved.params.number(spec.name);
+    if (value == spec.default_value) continue;
+    options.parameters += (options.parameters.empty() ? "" : " ") + spec.name + "=" +
+                          format_param_value(value);
+  }
 
   const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
   check_trails(options.trails, *run, "--trails");
-  Progress progress(resolved.scene.name, static_cast<std::int64_t>(plan.frames.size()), stderr,
-                    is_terminal(stderr));
-  const FrameSequenceResult result =
-      render_frame_sequence(*run, plan, options, [&](std::int64_t done) { progress.update(done); });
-  progress.finish();
+  std::unique_ptr<Progress> progress;
+  if (!arguments.quiet) {
+    progress = std::make_unique<Progress>(
+        resolved.scene.name, static_cast<std::int64_t>(plan.frames.size()), stderr,
+        is_terminal(stderr));
+  }
+  const FrameSequenceResult result = render_frame_sequence(
+      *run, plan, options, [&](std::int64_t done) {
+        if (progress) progress->update(done);
+      });
+  if (progress) progress->finish();
   warn_divergences(*run);
-  out << "wrote " << result.frame_count << " frames of " << resolved.scene.name << " to "
-      << options.directory.string() << "/ (" << result.first_file.string() << " .. "
-      << result.last_file.string() << ")";
-  if (options.video) out << " and " << options.video->string();
+  if (arguments.quiet) return;
+  out << "wrote " << result.frame_count << " frames of " << resolved.scene.name;
+  if (options.write_frames) {
+    out << " to " << options.directory.string() << "/ (" << result.first_file.string() << " .. "
+        << result.last_file.string() << ", index " << result.index_file.string() << ")";
+    if (options.video) out << " and";
+  }
+  if (options.video) out << " to " << options.video->string();
   out << "\n";
 }
 
 void trace_scene(const TraceArguments& arguments, std::ostream& out) {
-  if (!arguments.scene.steps) throw UsageError("trace: --steps N is required");
   const ResolvedScene resolved = resolve(arguments.scene);
   TraceFormat format = TraceFormat::Csv;
   if (arguments.format == "json") {
@@ -205,6 +231,7 @@ void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
   const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
   const auto [width, height] = write_contact_sheet(*run, plan, options, output);
   warn_divergences(*run);
+  if (arguments.quiet) return;
   out << "wrote a " << width << "x" << height << " contact sheet of " << plan.frames.size()
       << " frames of " << resolved.scene.name << " to " << output.string() << "\n";
 }
