@@ -152,6 +152,9 @@ int run_cli(int argc, char** argv) {
   sheet_command->add_option("--tile", sheet.tile, "tile size WxH in pixels")->capture_default_str();
   sheet_command->add_option("--overlays", sheet.overlays, overlay_help());
   sheet_command->add_option("--theme", sheet.theme, "light or dark")->capture_default_str();
+  sheet_command->add_option("--trails", sheet.trails,
+                            "motion trails: 'dynamic' (every dynamic body) or body indices "
+                            "3,7,12 (as the ids overlay shows them)");
   sheet_command->add_option("--out,-o", sheet.out,
                             "PNG file (default: out/contact_sheet_<scene>.png)");
 

@@ -221,6 +221,12 @@ void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
   options.draw = resolved.scene.view.draw;
   if (arguments.overlays) options.draw.flags = parse_overlays(*arguments.overlays);
   options.theme = theme_of(arguments.theme);
+  if (arguments.trails) options.trails = parse_trails(*arguments.trails, "--trails");
+  options.caption = (resolved.params.specs().empty() ? "no parameters" : resolved.params.summary()) +
+                    "  |  overlays: " + overlay_list(options.draw.flags);
+  if (arguments.trails) options.caption += "  |  trails: " + *arguments.trails;
+  // Refused before the scene runs or anything renders.
+  contact_sheet_size(static_cast<int>(plan.frames.size()), options);
   const std::filesystem::path output =
       arguments.out
           ? std::filesystem::path(*arguments.out)
@@ -229,6 +235,7 @@ void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
     throw UsageError("--out " + output.string() + ": must end in .png");
 
   const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
+  check_trails(options.trails, *run, "--trails");
   const auto [width, height] = write_contact_sheet(*run, plan, options, output);
   warn_divergences(*run);
   if (arguments.quiet) return;

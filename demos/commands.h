@@ -54,6 +54,7 @@ struct SheetArguments {
   std::optional<std::string> overlays;  ///< overlay list; the scene's default when absent
   std::string theme = "light";          ///< light or dark
   std::optional<std::string> out;       ///< PNG path; out/contact_sheet_<scene>.png when absent
+  std::optional<std::string> trails;    ///< `dynamic` or body indices with motion trails
   bool quiet = false;                   ///< no summary line
 };
 
