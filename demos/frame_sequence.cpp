@@ -74,9 +74,11 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
                                   const std::vector<std::filesystem::path>& old_frames,
                                   std::int64_t& frames_done) {
   const std::string& scene_name = run.scene().name;
+  // Declared in this order so that the writer's workers stop before the metadata they read
+  // and the staging directory they write into go.
   std::unique_ptr<StagingDirectory> staging;
-  std::unique_ptr<render::AsyncFrameWriter> writer;
   PendingMetadata metadata;
+  std::unique_ptr<render::AsyncFrameWriter> writer;
   const int digits = frame_number_digits(static_cast<std::int64_t>(plan.frames.size()));
   if (options.write_frames) {
     staging = std::make_unique<StagingDirectory>(options.directory, scene_name);
