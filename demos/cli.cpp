@@ -88,6 +88,10 @@ int run_cli(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("--quiet,-q", quiet,
                "no progress and no summary lines (render, sheet); errors and warnings still print");
+  bool dry_run = false;
+  app.add_flag("--dry-run", dry_run,
+               "check the command line and stop: options, values and, for render, trace and "
+               "sheet, the scene, its parameters and --frames; nothing runs, nothing is written");
 
   std::string backend;
   CLI::App* list =
@@ -290,6 +294,12 @@ int run_cli(int argc, char** argv) {
       } catch (const render::RenderError& error) {
         throw UsageError(error.what());
       }
+    }
+    if (dry_run) {
+      if (render_command->parsed()) check_scene_arguments(render.scene, render.frames);
+      if (trace_command->parsed()) check_scene_arguments(trace.scene, std::nullopt);
+      if (sheet_command->parsed()) check_scene_arguments(sheet.scene, sheet.frames);
+      return 0;
     }
     if (list->parsed()) {
       list_scenes(std::cout);

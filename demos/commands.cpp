@@ -101,6 +101,14 @@ std::pair<int, int> parse_size(const std::string& text, const std::string& optio
   return {parse(text.substr(0, x)), parse(text.substr(x + 1))};
 }
 
+void check_scene_arguments(const SceneArguments& arguments,
+                           const std::optional<std::string>& frames) {
+  SceneArguments checked = arguments;
+  if (checked.scene.empty()) checked.scene = default_scene().name;
+  const ResolvedScene resolved = resolve(checked);
+  if (frames) plan_frames(*frames, resolved.steps);
+}
+
 void list_scenes(std::ostream& out) {
   for (const Scene& scene : builtin_scenes()) {
     out << scene.name << "\n  " << scene.description << "\n  model: " << describe_model(scene.model)

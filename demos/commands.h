@@ -68,6 +68,11 @@ void trace_scene(const TraceArguments& arguments, std::ostream& out);
 /// Writes a contact sheet; prints where it went unless `arguments.quiet`.
 void sheet_scene(const SheetArguments& arguments, std::ostream& out);
 
+/// Checks what a scene command would run without running it: the scene (name or file, the
+/// default scene when empty), its parameters and length, and `frames` when given. Throws
+/// `UsageError` as the command would, before any work.
+void check_scene_arguments(const SceneArguments& arguments, const std::optional<std::string>& frames);
+
 /// Parses "WxH" (each 16..8192). Throws `UsageError` naming `option`.
 std::pair<int, int> parse_size(const std::string& text, const std::string& option);
 

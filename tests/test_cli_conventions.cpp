@@ -157,3 +157,25 @@ TEST_F(CliTest, HelpSaysWhatEachOverlayShows) {
     EXPECT_NE(help.out.find("penetration: penetration depth"), std::string::npos) << help.out;
   }
 }
+
+// --dry-run checks a command line (the docs test runs every README command with it) and
+// writes nothing.
+TEST_F(CliTest, DryRunChecksTheCommandLineAndWritesNothing) {
+  for (const char* arguments :
+       {"--dry-run render pyramid -p rows=20 --frames 0:600:10 -o out/pyramid",
+        "sheet tutorial --frames 0:900:128 -o docs/sheet.png --dry-run", "--dry-run trace bullet",
+        "--dry-run lab --quick", "--dry-run"}) {
+    const Result result = run(arguments);
+    EXPECT_EQ(result.status, 0) << arguments << result.err;
+    EXPECT_EQ(result.out + result.err, "") << arguments;
+  }
+  EXPECT_TRUE(files().empty());
+  const Result frames = run("--dry-run render bullet --frames 0:500");
+  EXPECT_EQ(frames.status, 2);
+  EXPECT_NE(frames.err.find("after the end of the run"), std::string::npos) << frames.err;
+  const Result param = run("--dry-run sheet pyramid -p cols=3");
+  EXPECT_EQ(param.status, 2);
+  EXPECT_NE(param.err.find("unknown parameter 'cols'"), std::string::npos) << param.err;
+  EXPECT_EQ(run("--dry-run lab --quikc").status, 2);
+  EXPECT_TRUE(files().empty());
+}
