@@ -179,3 +179,12 @@ TEST_F(CliTest, DryRunChecksTheCommandLineAndWritesNothing) {
   EXPECT_EQ(run("--dry-run lab --quikc").status, 2);
   EXPECT_TRUE(files().empty());
 }
+
+TEST_F(CliTest, ErrorsOfDiffAndGoldenArePrefixedToo) {
+  const Result diff = run("diff nowhere.png other.png");
+  EXPECT_EQ(diff.status, 2);
+  EXPECT_EQ(diff.err.rfind("impulse2d: diff: ", 0), 0u) << diff.err;
+  const Result golden = run("golden check nowhere.json");
+  EXPECT_EQ(golden.status, 2);
+  EXPECT_EQ(golden.err.rfind("impulse2d: golden: ", 0), 0u) << golden.err;
+}
