@@ -6,7 +6,7 @@
 #             speed-accuracy lab's charts and maps (docs/lab/, 3-5 min) and the solver chart
 #             (docs/solver_speed_vs_accuracy.png, about a minute).
 # Not regenerated: docs/golden_report.png, a browser screenshot of the report of a
-# deliberately failing golden run (README "Review a failure" says what it shows).
+# deliberately failing golden run (docs/golden.md, "Review a failure", says what it shows).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
