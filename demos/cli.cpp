@@ -87,7 +87,9 @@ int run_cli(int argc, char** argv) {
   app.set_version_flag("--version", "impulse2d " + program_version(), "print the version and exit");
   bool quiet = false;
   app.add_flag("--quiet,-q", quiet,
-               "no progress and no summary lines (render, sheet); errors and warnings still print");
+               "no progress and no summary lines (render, sheet, lab, lab merge); errors and "
+               "warnings still print, and what a command is asked to print (list, trace, tune, "
+               "diff, golden) still does");
   bool dry_run = false;
   app.add_flag("--dry-run", dry_run,
                "check the command line and stop: options, values and, for render, trace and "
@@ -280,6 +282,9 @@ int run_cli(int argc, char** argv) {
   }
   render.quiet = quiet;
   sheet.quiet = quiet;
+  lab_arguments.quiet = quiet;
+  std::ostream discard(nullptr);  // where --quiet sends the lab's summary lines
+  std::ostream& summary = quiet ? discard : std::cout;
 
   // ffmpeg reading from a pipe may exit early; report that as an error, not a signal.
   std::signal(SIGPIPE, SIG_IGN);
@@ -310,9 +315,9 @@ int run_cli(int argc, char** argv) {
     } else if (sheet_command->parsed()) {
       sheet_scene(sheet, std::cout);
     } else if (merge_command->parsed()) {
-      lab::merge_lab(merge_arguments, std::cout);
+      lab::merge_lab(merge_arguments, summary);
     } else if (lab_command->parsed()) {
-      lab::run_lab(lab_arguments, std::cout);
+      lab::run_lab(lab_arguments, summary);
     } else if (tune_command->parsed()) {
       lab::run_tune(tune_arguments, std::cout);
     } else if (golden_command->parsed()) {

@@ -86,7 +86,8 @@ TEST_F(CliTest, QuietPrintsNothingOnSuccess) {
   for (const char* arguments :
        {"--quiet render pyramid -p rows=3 --frames 0:10:5 --size 64x64 -o a",
         "render pyramid -p rows=3 --frames 0:10:5 --size 64x64 -o b -q",
-        "sheet pyramid -p rows=3 --count 2 --tile 64x48 -o s.png --quiet"}) {
+        "sheet pyramid -p rows=3 --count 2 --tile 64x48 -o s.png --quiet",
+        "lab --quick --only projectile --no-stability --no-charts --no-peers --repeats 1 -o l -q"}) {
     const Result result = run(arguments);
     EXPECT_EQ(result.status, 0) << arguments << result.err;
     EXPECT_EQ(result.out, "") << arguments;
@@ -95,6 +96,7 @@ TEST_F(CliTest, QuietPrintsNothingOnSuccess) {
   EXPECT_TRUE(fs::exists(dir_ / "a/pyramid_00002.png"));
   EXPECT_TRUE(fs::exists(dir_ / "b/pyramid_00002.png"));
   EXPECT_TRUE(fs::exists(dir_ / "s.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "l/lab.csv"));
 }
 
 // -o is the output everywhere (it used to be --overlays, so `sheet stack -o sheet.png` failed).
