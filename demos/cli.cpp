@@ -11,6 +11,8 @@
 #include "bench/lab/lab_command.h"
 #include "demos/commands.h"
 #include "demos/interrupt.h"
+#include "demos/parse_error_message.h"
+#include "demos/version.h"
 #include "render/offscreen_backend.h"
 #include "render/render_error.h"
 #include "scene/overlays.h"
@@ -27,10 +29,18 @@ constexpr int exit_runtime_error = 1;
 constexpr int exit_usage_error = 2;
 
 std::string overlay_help() {
-  std::string text = "comma-separated overlays:";
-  for (const OverlayName& each : overlay_names()) text += std::string(" ") + each.name;
-  return text + " (default: the scene's)";
+  std::string text = "comma-separated overlays (default: the scene's):";
+  for (const OverlayName& each : overlay_names()) {
+    text += std::string("\n  ") + each.name + ": " + each.description;
+  }
+  return text;
 }
+
+/// The exit statuses, the same for every command except `diff` (which follows cmp and diff).
+const char* const exit_status_footer =
+    "Exit status: 0 success; 1 runtime failure (unwritable output, renderer, ffmpeg; for "
+    "`golden check`: a golden failed); 2 bad usage or invalid input (unknown command, option, "
+    "scene or parameter, invalid scene file); 128+N stopped by signal N (130 for Ctrl-C).";
 
 /// `--backend osmesa|egl` on a command that renders.
 void add_backend_option(CLI::App& command, std::string& backend) {
@@ -43,7 +53,9 @@ void add_scene_options(CLI::App& command, SceneArguments& arguments, bool scene_
   CLI::Option* scene = command.add_option(
       "scene", arguments.scene, "built-in scene name (see `impulse2d list`) or a .json scene file");
   if (scene_required) scene->required();
-  command.add_option("--param,-p", arguments.params, "scene parameter key=value (repeatable)");
+  command.add_option("--param,-p", arguments.params,
+                     "scene parameter key=value, one per flag (repeat it: -p rows=8 -p seed=3)")
+      ->allow_extra_args(false);
   command.add_flag("--strict", arguments.strict,
                    "a body that diverges (non-finite state) is an error (exit 1), not a warning");
 }
@@ -69,7 +81,19 @@ int run_cli(int argc, char** argv) {
           default_scene().name + ") into out/.",
       "impulse2d"};
   app.require_subcommand(0, 1);
-  app.footer("Exit status: 0 success, 1 runtime failure, 2 bad usage or invalid scene file.");
+  // Options of the program (--quiet, --version) may also come after the command's name.
+  app.fallthrough();
+  app.footer(exit_status_footer);
+  app.set_version_flag("--version", "impulse2d " + program_version(), "print the version and exit");
+  bool quiet = false;
+  app.add_flag("--quiet,-q", quiet,
+               "no progress and no summary lines (render, sheet, lab, lab merge); errors and "
+               "warnings still print, and what a command is asked to print (list, trace, tune, "
+               "diff, golden) still does");
+  bool dry_run = false;
+  app.add_flag("--dry-run", dry_run,
+               "check the command line and stop: options, values and, for render, trace and "
+               "sheet, the scene, its parameters and --frames; nothing runs, nothing is written");
 
   std::string backend;
   CLI::App* list =
@@ -82,16 +106,24 @@ int run_cli(int argc, char** argv) {
   add_backend_option(*render_command, backend);
   render_command->add_option(
       "--frames,-f", render.frames,
-      "steps to draw: A:B[:k] ranges, comma-separated (frame n = world after n steps)");
+      "steps to draw: A:B[:k] ranges, comma-separated (step n = the world after n steps)");
   render_command->add_option("--steps", render.scene.steps,
                              "length of the run in steps (default: the scene's)");
   render_command->add_option("--size,-s", render.size, "frame size WxH in pixels")
       ->capture_default_str();
-  render_command->add_option("--overlays,-o", render.overlays, overlay_help());
+  render_command->add_option("--overlays", render.overlays, overlay_help());
   render_command->add_option("--theme", render.theme, "light or dark")->capture_default_str();
-  render_command->add_option("--out,-d", render.out, "output directory")->capture_default_str();
+  render_command->add_option("--out,-o", render.out,
+                             "output directory: <scene>_00000.png, <scene>_00001.png, ... (one "
+                             "per frame, numbered from 0 whatever steps they show) and "
+                             "<scene>_frames.csv (frame,step,time,file)")
+      ->capture_default_str();
   render_command->add_option("--video", render.video,
-                             "also write a video (.mp4 or .gif; needs ffmpeg)");
+                             "also write a video (.mp4, .webm or .gif; needs ffmpeg)");
+  render_command->add_option("--fps", render.fps,
+                             "video frames per second, 1..240 (default: real time)");
+  render_command->add_flag("--no-frames", render.no_frames,
+                           "write the --video only, no PNG frames");
   render_command->add_option("--threads", render.threads, "PNG encoding threads")
       ->capture_default_str();
   render_command->add_option("--trails", render.trails,
@@ -105,7 +137,8 @@ int run_cli(int argc, char** argv) {
   CLI::App* trace_command = app.add_subcommand(
       "trace", "print per-step body states (step,t,body,x,y,angle,vx,vy,omega,contacts,energy)");
   add_scene_options(*trace_command, trace.scene, true);
-  trace_command->add_option("--steps,-n", trace.scene.steps, "steps to simulate")->required();
+  trace_command->add_option("--steps,-n", trace.scene.steps,
+                            "steps to simulate (default: the scene's)");
   trace_command->add_option("--every,-k", trace.every, "sample every k-th step")
       ->capture_default_str();
   trace_command->add_option("--format", trace.format, "csv or json")->capture_default_str();
@@ -123,19 +156,25 @@ int run_cli(int argc, char** argv) {
                             "length of the run in steps (default: the scene's)");
   sheet_command->add_option("--columns", sheet.columns, "tiles per row")->capture_default_str();
   sheet_command->add_option("--tile", sheet.tile, "tile size WxH in pixels")->capture_default_str();
-  sheet_command->add_option("--overlays,-o", sheet.overlays, overlay_help());
+  sheet_command->add_option("--overlays", sheet.overlays, overlay_help());
   sheet_command->add_option("--theme", sheet.theme, "light or dark")->capture_default_str();
-  sheet_command->add_option("--out", sheet.out,
+  sheet_command->add_option("--trails", sheet.trails,
+                            "motion trails: 'dynamic' (every dynamic body) or body indices "
+                            "3,7,12 (as the ids overlay shows them)");
+  sheet_command->add_option("--out,-o", sheet.out,
                             "PNG file (default: out/contact_sheet_<scene>.png)");
 
   std::string diff_expected, diff_actual, diff_out;
   CLI::App* diff_command = app.add_subcommand(
       "diff",
       "compare two PNG frames as the golden suite does (exact RGBA match first, metrics on a "
-      "mismatch); exit 0 same, 1 different, 2 unreadable input or unwritable output");
+      "mismatch; the frames' metadata says whether the physics or only the pixels differ)");
+  diff_command->footer(
+      "Exit status (as cmp and diff): 0 the frames match, 1 they differ, 2 trouble (bad usage, "
+      "an unreadable input, an unwritable --out).");
   diff_command->add_option("expected", diff_expected, "the reference PNG (a)")->required();
   diff_command->add_option("actual", diff_actual, "the PNG to check (b)")->required();
-  diff_command->add_option("--out,-d", diff_out,
+  diff_command->add_option("--out,-o", diff_out,
                            "on a mismatch, write expected/actual/diff/heatmap PNGs, "
                            "metrics.json and index.html into this directory");
   golden::DiffLimits diff_limits;
@@ -148,14 +187,14 @@ int run_cli(int argc, char** argv) {
       ->capture_default_str();
   diff_command->add_option("--mask", diff_limits.masks,
                            "x,y,w,h: ignore this rectangle (pixels from the top-left; "
-                           "repeatable)")
-      ->take_all();
+                           "one rectangle per flag, repeatable)")
+      ->take_all()
+      ->allow_extra_args(false);
 
   golden::GoldenCommandArguments golden_arguments;
   CLI::App* golden_command = app.add_subcommand(
       "golden",
-      "golden images of JSON scene files with a \"golden\" block: check (exit 0 all match, 1 "
-      "a failure, 2 bad input), update, frame");
+      "golden images of JSON scene files with a \"golden\" block: check, update, frame");
   golden_command->require_subcommand(1);
   CLI::App* golden_check = golden_command->add_subcommand(
       "check", "check every golden frame of the scene files (classified failures, report)");
@@ -177,7 +216,7 @@ int run_cli(int argc, char** argv) {
   std::string golden_frame_file;
   golden_frame->add_option("file", golden_frame_file, "scene file (.json)")->required();
   golden_frame->add_option("name", golden_arguments.frame, "golden frame name")->required();
-  golden_frame->add_option("--out", golden_arguments.out, "PNG to write")->required();
+  golden_frame->add_option("--out,-o", golden_arguments.out, "PNG to write")->required();
 
   lab::LabArguments lab_arguments;
   CLI::App* lab_command = app.add_subcommand(
@@ -190,7 +229,7 @@ int run_cli(int argc, char** argv) {
                           "directory of scenario files (default: the source tree's bench/lab/scenarios)");
   lab_command->add_option("--only", lab_arguments.only, "run only these scenarios (names)")
       ->delimiter(',');
-  lab_command->add_option("--out,-d", lab_arguments.out, "output directory")->capture_default_str();
+  lab_command->add_option("--out,-o", lab_arguments.out, "output directory")->capture_default_str();
   lab_command->add_option("--repeats", lab_arguments.repeats,
                           "timed repeats per configuration, interleaved (default 3; 2 with --quick)");
   lab_command->add_option("--shard", lab_arguments.shard,
@@ -205,7 +244,7 @@ int run_cli(int argc, char** argv) {
   CLI::App* merge_command = lab_command->add_subcommand(
       "merge", "join shard CSVs of `lab --shard K/N` into one lab.csv and draw the charts");
   merge_command->add_option("inputs", merge_arguments.inputs, "shard CSV files")->required();
-  merge_command->add_option("--out,-d", merge_arguments.out, "output directory")
+  merge_command->add_option("--out,-o", merge_arguments.out, "output directory")
       ->capture_default_str();
   merge_command->add_flag("!--no-charts", merge_arguments.charts, "write the CSV only");
 
@@ -216,7 +255,9 @@ int run_cli(int argc, char** argv) {
       "--max-error; print it as JSON settings for the scene file");
   tune_command->add_option("scene", tune_arguments.scene,
                            "built-in scene name or a .json scene file")->required();
-  tune_command->add_option("--param,-p", tune_arguments.params, "scene parameter key=value");
+  tune_command->add_option("--param,-p", tune_arguments.params,
+                           "scene parameter key=value, one per flag (repeatable)")
+      ->allow_extra_args(false);
   tune_command->add_option("--max-error", tune_arguments.max_error,
                            "largest allowed error, metres")->required();
   tune_command->add_option("--metric", tune_arguments.metric,
@@ -228,15 +269,22 @@ int run_cli(int argc, char** argv) {
   tune_command->add_flag("--quick", tune_arguments.quick, "a smaller search space");
   tune_command->add_option("--repeats", tune_arguments.repeats, "timed repeats per candidate")
       ->capture_default_str();
-  tune_command->add_option("--out,-d", tune_arguments.out,
+  tune_command->add_option("--out,-o", tune_arguments.out,
                            "also write the answer and its figures to this .json file");
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::Success& done) {
+    return app.exit(done);  // --help, --version
   } catch (const CLI::ParseError& error) {
-    const int status = app.exit(error);
-    return status == 0 ? 0 : exit_usage_error;
+    std::cerr << parse_error_message(app, error, std::vector<std::string>(argv + 1, argv + argc));
+    return exit_usage_error;
   }
+  render.quiet = quiet;
+  sheet.quiet = quiet;
+  lab_arguments.quiet = quiet;
+  std::ostream discard(nullptr);  // where --quiet sends the lab's summary lines
+  std::ostream& summary = quiet ? discard : std::cout;
 
   // ffmpeg reading from a pipe may exit early; report that as an error, not a signal.
   std::signal(SIGPIPE, SIG_IGN);
@@ -252,6 +300,12 @@ int run_cli(int argc, char** argv) {
         throw UsageError(error.what());
       }
     }
+    if (dry_run) {
+      if (render_command->parsed()) check_scene_arguments(render.scene, render.frames);
+      if (trace_command->parsed()) check_scene_arguments(trace.scene, std::nullopt);
+      if (sheet_command->parsed()) check_scene_arguments(sheet.scene, sheet.frames);
+      return 0;
+    }
     if (list->parsed()) {
       list_scenes(std::cout);
     } else if (render_command->parsed()) {
@@ -261,9 +315,9 @@ int run_cli(int argc, char** argv) {
     } else if (sheet_command->parsed()) {
       sheet_scene(sheet, std::cout);
     } else if (merge_command->parsed()) {
-      lab::merge_lab(merge_arguments, std::cout);
+      lab::merge_lab(merge_arguments, summary);
     } else if (lab_command->parsed()) {
-      lab::run_lab(lab_arguments, std::cout);
+      lab::run_lab(lab_arguments, summary);
     } else if (tune_command->parsed()) {
       lab::run_tune(tune_arguments, std::cout);
     } else if (golden_command->parsed()) {
@@ -278,6 +332,7 @@ int run_cli(int argc, char** argv) {
                                       diff_limits);
     } else {
       RenderArguments demo;
+      demo.quiet = quiet;
       demo.scene.scene = default_scene().name;
       demo.clean = true;  // the default demo always refreshes out/<default scene>_*.png
       render_scene(demo, std::cout);

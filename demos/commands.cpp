@@ -101,6 +101,14 @@ std::pair<int, int> parse_size(const std::string& text, const std::string& optio
   return {parse(text.substr(0, x)), parse(text.substr(x + 1))};
 }
 
+void check_scene_arguments(const SceneArguments& arguments,
+                           const std::optional<std::string>& frames) {
+  SceneArguments checked = arguments;
+  if (checked.scene.empty()) checked.scene = default_scene().name;
+  const ResolvedScene resolved = resolve(checked);
+  if (frames) plan_frames(*frames, resolved.steps);
+}
+
 void list_scenes(std::ostream& out) {
   for (const Scene& scene : builtin_scenes()) {
     out << scene.name << "\n  " << scene.description << "\n  model: " << describe_model(scene.model)
@@ -134,28 +142,54 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
   if (arguments.threads < 1 || arguments.threads > 64) throw UsageError("--threads must be 1..64");
   options.writer_threads = arguments.threads;
   if (arguments.trails) options.trails = parse_trails(*arguments.trails, "--trails");
+  options.write_frames = !arguments.no_frames;
+  if (arguments.no_frames && !arguments.video) {
+    throw UsageError("--no-frames needs --video FILE (otherwise nothing would be written)");
+  }
+  if (arguments.fps) {
+    if (!arguments.video) throw UsageError("--fps sets the video's rate: it needs --video FILE");
+    if (!(*arguments.fps >= 1.0 && *arguments.fps <= 240.0)) {
+      throw UsageError("--fps " + format_param_value(*arguments.fps) + ": must be 1..240");
+    }
+    options.frames_per_second = *arguments.fps;
+  }
   if (arguments.video) {
     check_video_output(*arguments.video);
     options.video = std::filesystem::path(*arguments.video);
   }
+  for (const ParamSpec& spec : resolved.params.specs()) {
+    const double value = resolved.params.number(spec.name);
+    if (value == spec.default_value) continue;
+    options.parameters += (options.parameters.empty() ? "" : " ") + spec.name + "=" +
+                          format_param_value(value);
+  }
 
   const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
   check_trails(options.trails, *run, "--trails");
-  Progress progress(resolved.scene.name, static_cast<std::int64_t>(plan.frames.size()), stderr,
-                    is_terminal(stderr));
-  const FrameSequenceResult result =
-      render_frame_sequence(*run, plan, options, [&](std::int64_t done) { progress.update(done); });
-  progress.finish();
+  std::unique_ptr<Progress> progress;
+  if (!arguments.quiet) {
+    progress = std::make_unique<Progress>(
+        resolved.scene.name, static_cast<std::int64_t>(plan.frames.size()), stderr,
+        is_terminal(stderr));
+  }
+  const FrameSequenceResult result = render_frame_sequence(
+      *run, plan, options, [&](std::int64_t done) {
+        if (progress) progress->update(done);
+      });
+  if (progress) progress->finish();
   warn_divergences(*run);
-  out << "wrote " << result.frame_count << " frames of " << resolved.scene.name << " to "
-      << options.directory.string() << "/ (" << result.first_file.string() << " .. "
-      << result.last_file.string() << ")";
-  if (options.video) out << " and " << options.video->string();
+  if (arguments.quiet) return;
+  out << "wrote " << result.frame_count << " frames of " << resolved.scene.name;
+  if (options.write_frames) {
+    out << " to " << options.directory.string() << "/ (" << result.first_file.string() << " .. "
+        << result.last_file.string() << ", index " << result.index_file.string() << ")";
+    if (options.video) out << " and";
+  }
+  if (options.video) out << " to " << options.video->string();
   out << "\n";
 }
 
 void trace_scene(const TraceArguments& arguments, std::ostream& out) {
-  if (!arguments.scene.steps) throw UsageError("trace: --steps N is required");
   const ResolvedScene resolved = resolve(arguments.scene);
   TraceFormat format = TraceFormat::Csv;
   if (arguments.format == "json") {
@@ -195,6 +229,12 @@ void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
   options.draw = resolved.scene.view.draw;
   if (arguments.overlays) options.draw.flags = parse_overlays(*arguments.overlays);
   options.theme = theme_of(arguments.theme);
+  if (arguments.trails) options.trails = parse_trails(*arguments.trails, "--trails");
+  options.caption = (resolved.params.specs().empty() ? "no parameters" : resolved.params.summary()) +
+                    "  |  overlays: " + overlay_list(options.draw.flags);
+  if (arguments.trails) options.caption += "  |  trails: " + *arguments.trails;
+  // Refused before the scene runs or anything renders.
+  contact_sheet_size(static_cast<int>(plan.frames.size()), options);
   const std::filesystem::path output =
       arguments.out
           ? std::filesystem::path(*arguments.out)
@@ -203,8 +243,10 @@ void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
     throw UsageError("--out " + output.string() + ": must end in .png");
 
   const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
+  check_trails(options.trails, *run, "--trails");
   const auto [width, height] = write_contact_sheet(*run, plan, options, output);
   warn_divergences(*run);
+  if (arguments.quiet) return;
   out << "wrote a " << width << "x" << height << " contact sheet of " << plan.frames.size()
       << " frames of " << resolved.scene.name << " to " << output.string() << "\n";
 }

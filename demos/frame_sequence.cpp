@@ -3,8 +3,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <memory>
+#include <mutex>
 
+#include "demos/frame_index.h"
+#include "demos/frame_metadata.h"
 #include "demos/interrupt.h"
 #include "demos/output_guard.h"
 #include "demos/output_staging.h"
@@ -14,6 +18,8 @@
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
 #include "render/motion_trails.h"
+#include "tools/golden/png_text.h"
+#include "tools/golden/sidecar.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -34,27 +40,72 @@ std::string scene_title(const Scene& scene) {
 
 namespace {
 
-/// The rendering itself, into `staging`; publishes the frames on success.
+/// PNG metadata of frames rendered but not yet written, by frame number: filled by the
+/// rendering thread, taken by the writer's worker threads.
+class PendingMetadata {
+ public:
+  /// Keeps `text` for frame `frame_number`.
+  void put(std::int64_t frame_number, golden::PngText text) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    texts_[frame_number] = std::move(text);
+  }
+  /// `png` with frame `frame_number`'s metadata inserted (and forgotten).
+  std::vector<std::uint8_t> annotate(std::int64_t frame_number, std::vector<std::uint8_t> png) {
+    golden::PngText text;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      const auto found = texts_.find(frame_number);
+      if (found == texts_.end()) return png;
+      text = std::move(found->second);
+      texts_.erase(found);
+    }
+    return golden::with_png_text(png, text);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::int64_t, golden::PngText> texts_;
+};
+
+/// The rendering itself: frames into `staging` (when given), the video, then publishes.
 FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
                                   const FrameSequenceOptions& options,
                                   const FrameProgress& progress, OutputGuard& guard,
                                   const std::vector<std::filesystem::path>& old_frames,
                                   std::int64_t& frames_done) {
-  StagingDirectory staging(options.directory, run.scene().name);
-  render::FrameWriterOptions writer_options;
-  writer_options.directory = staging.path();
-  writer_options.scene_name = run.scene().name;
-  writer_options.worker_threads = options.writer_threads;
-  render::AsyncFrameWriter writer(writer_options);
+  const std::string& scene_name = run.scene().name;
+  // Declared in this order so that the writer's workers stop before the metadata they read
+  // and the staging directory they write into go.
+  std::unique_ptr<StagingDirectory> staging;
+  PendingMetadata metadata;
+  std::unique_ptr<render::AsyncFrameWriter> writer;
+  const int digits = frame_number_digits(static_cast<std::int64_t>(plan.frames.size()));
+  if (options.write_frames) {
+    staging = std::make_unique<StagingDirectory>(options.directory, scene_name);
+    render::FrameWriterOptions writer_options;
+    writer_options.directory = staging->path();
+    writer_options.scene_name = scene_name;
+    writer_options.worker_threads = options.writer_threads;
+    writer_options.digits = digits;
+    writer_options.annotate = [&metadata](std::int64_t frame_number, std::vector<std::uint8_t> png) {
+      return metadata.annotate(frame_number, std::move(png));
+    };
+    writer = std::make_unique<render::AsyncFrameWriter>(writer_options);
+  }
 
   std::unique_ptr<VideoEncoder> video;
   if (options.video) {
     guard.will_write_file(*options.video);
-    video = std::make_unique<VideoEncoder>(*options.video, options.width, options.height,
-                                           real_time_rate(plan, run.world().settings().time_step));
+    const double rate = options.frames_per_second
+                            ? *options.frames_per_second
+                            : real_time_rate(plan, run.world().settings().time_step);
+    video = std::make_unique<VideoEncoder>(*options.video, options.width, options.height, rate);
   }
 
   render::FrameRenderer renderer(options.width, options.height);
+  const std::string fingerprint = golden::split_fingerprint(renderer.fingerprint()).describe();
+  const std::string scene_label =
+      run.scene().source == "built-in" ? scene_name : scene_name + " (" + run.scene().source + ")";
   const render::Camera camera =
       scene_camera(run.scene().view.camera, run.world(), options.width, options.height);
   render::FrameOptions frame_options;
@@ -71,6 +122,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
   }
 
   FrameSequenceResult result;
+  std::vector<FrameIndexRow> index;
   for (const std::int64_t frame_step : plan.frames) {
     while (run.step_count() < frame_step) {
       run.step();
@@ -78,25 +130,35 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     }
     check_interrupt();
     hud.frame = frame_step;
-    render::Frame frame = writer.take_spare_frame();
+    render::Frame frame = writer ? writer->take_spare_frame() : render::Frame{};
     renderer.render(run.world(), frame_camera(camera, run), frame_options, hud, frame);
     if (video) video->add(frame);
-    const std::filesystem::path file =
-        render::frame_file_path(options.directory, run.scene().name, frame_step);
-    if (result.frame_count == 0) result.first_file = file;
-    result.last_file = file;
-    writer.submit(frame_step, std::move(frame));
+    const std::int64_t number = result.frame_count;
+    if (writer) {
+      const std::filesystem::path file =
+          render::frame_file_path(options.directory, scene_name, number, digits);
+      if (number == 0) result.first_file = file;
+      result.last_file = file;
+      index.push_back(FrameIndexRow{number, frame_step, run.world().time(),
+                                    file.filename().string()});
+      metadata.put(number, frame_metadata(scene_label, options.parameters, run.world(), fingerprint));
+      writer->submit(number, std::move(frame));
+    }
     ++result.frame_count;
     frames_done = result.frame_count;
     if (progress) progress(result.frame_count);
   }
-  writer.finish();
+  if (writer) {
+    writer->finish();
+    write_frame_index(frame_index_path(staging->path(), scene_name), index);
+    result.index_file = frame_index_path(options.directory, scene_name);
+  }
   if (video) video->finish();
   check_interrupt();
   // Success: from here on signals wait until the frames are in place.
   std::error_code ignored;
   for (const std::filesystem::path& old : old_frames) std::filesystem::remove(old, ignored);
-  staging.publish(guard);
+  if (staging) staging->publish(guard);
   return result;
 }
 
@@ -106,21 +168,23 @@ FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
                                           const FrameSequenceOptions& options,
                                           const FrameProgress& progress) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<std::filesystem::path> old_frames =
-      existing_frames(options.directory, run.scene().name);
-  if (!old_frames.empty() && !options.clean) {
-    throw UsageError(options.directory.string() + "/ already holds " +
-                     std::to_string(old_frames.size()) + " frames of " + run.scene().name +
-                     " from an earlier run (" + old_frames.front().string() +
-                     " ..); pass --clean to replace them, or choose another --out");
-  }
   OutputGuard guard;
-  guard.will_create_directory(options.directory);
-  std::error_code error;
-  std::filesystem::create_directories(options.directory, error);
-  if (error) {
-    throw std::runtime_error("cannot create the output directory " + options.directory.string() +
-                             ": " + error.message());
+  std::vector<std::filesystem::path> old_frames;
+  if (options.write_frames) {
+    old_frames = existing_frames(options.directory, run.scene().name);
+    if (!old_frames.empty() && !options.clean) {
+      throw UsageError(options.directory.string() + "/ already holds " +
+                       std::to_string(old_frames.size()) + " frames of " + run.scene().name +
+                       " from an earlier run (" + old_frames.front().string() +
+                       " ..); pass --clean to replace them, or choose another --out");
+    }
+    guard.will_create_directory(options.directory);
+    std::error_code error;
+    std::filesystem::create_directories(options.directory, error);
+    if (error) {
+      throw std::runtime_error("cannot create the output directory " +
+                               options.directory.string() + ": " + error.message());
+    }
   }
   std::int64_t frames_done = 0;
   FrameSequenceResult result;

@@ -1,7 +1,8 @@
 #pragma once
 /// @file frame_sequence.h
-/// Renders a scene run into a PNG frame sequence (`dir/<scene>_<step:05>.png`), optionally
-/// also a video, with all-or-nothing output.
+/// Renders a scene run into a PNG frame sequence (`dir/<scene>_<frame:05>.png`, frames
+/// numbered 0, 1, 2, ... whatever steps they show, with the step in each PNG's metadata and
+/// in `dir/<scene>_frames.csv`), optionally also a video, with all-or-nothing output.
 
 #include <cstdint>
 #include <filesystem>
@@ -23,16 +24,20 @@ struct FrameSequenceOptions {
   DebugDrawOptions draw;                       ///< overlay flags and arrow scales
   render::Theme theme = render::Theme::Light;  ///< colours
   std::filesystem::path directory = "out";     ///< created if missing
-  std::optional<std::filesystem::path> video;  ///< also encode an .mp4 / .gif here
+  bool write_frames = true;                    ///< false: the video only (needs `video`)
+  std::optional<std::filesystem::path> video;  ///< also encode an .mp4 / .webm / .gif here
+  std::optional<double> frames_per_second;     ///< video rate; real time when absent
   int writer_threads = 2;                      ///< PNG encoding threads
   TrailSelection trails;                       ///< bodies whose recent path is drawn
   bool clean = false;  ///< replace frames of the same scene already in `directory`
+  std::string parameters;  ///< parameter overrides "rows=8 seed=3", for the PNG metadata
 };
 
 /// What was written.
 struct FrameSequenceResult {
-  std::filesystem::path first_file;  ///< the first frame
-  std::filesystem::path last_file;   ///< the last frame
+  std::filesystem::path first_file;  ///< the first frame (empty without `write_frames`)
+  std::filesystem::path last_file;   ///< the last frame (empty without `write_frames`)
+  std::filesystem::path index_file;  ///< `<scene>_frames.csv` (empty without `write_frames`)
   std::int64_t frame_count = 0;      ///< frames written
   double seconds = 0.0;              ///< wall-clock time of the whole job
 };
@@ -41,8 +46,9 @@ struct FrameSequenceResult {
 using FrameProgress = std::function<void(std::int64_t frames_done)>;
 
 /// Steps `run` to `plan.steps`, rendering each planned step into a staging directory inside
-/// `options.directory`, and moves the frames into place only when every frame (and the
-/// video) succeeded. Throws `UsageError` before any work when the directory already holds
+/// `options.directory`, and moves the frames and their index into place only when every
+/// frame (and the video) succeeded. Without `options.write_frames` only the video is written
+/// and the directory is left alone. Throws `UsageError` before any work when the directory already holds
 /// frames of the scene and `options.clean` is off (with it, they are removed just before the
 /// new frames move in). On any failure (unwritable directory, renderer, a scene event, a
 /// signal: `Interrupted` saying what was removed) every file and directory this call created

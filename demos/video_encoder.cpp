@@ -44,8 +44,8 @@ std::optional<std::filesystem::path> find_on_path(const char* name) {
 
 void check_video_output(const std::filesystem::path& output) {
   const std::string extension = output.extension().string();
-  if (extension != ".mp4" && extension != ".gif") {
-    throw UsageError("--video " + output.string() + ": the file must end in .mp4 or .gif");
+  if (extension != ".mp4" && extension != ".webm" && extension != ".gif") {
+    throw UsageError("--video " + output.string() + ": the file must end in .mp4, .webm or .gif");
   }
   if (!find_on_path("ffmpeg")) throw std::runtime_error(install_hint);
 }
@@ -57,10 +57,12 @@ VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height,
   const std::filesystem::path ffmpeg = *find_on_path("ffmpeg");
   temporary_ = output_.parent_path() / ("." + output_.stem().string() + ".partial-" +
                                         std::to_string(getpid()) + output_.extension().string());
+  const std::string extension = output_.extension().string();
+  const std::string even_size = "-pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'";
   const std::string filters =
-      output_.extension() == ".gif"
-          ? "-vf 'split[a][b];[a]palettegen[p];[b][p]paletteuse'"
-          : "-c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'";
+      extension == ".gif"    ? "-vf 'split[a][b];[a]palettegen[p];[b][p]paletteuse'"
+      : extension == ".webm" ? "-c:v libvpx-vp9 -crf 32 -b:v 0 -row-mt 1 " + even_size
+                             : "-c:v libx264 " + even_size;
   const std::string command = shell_quote(ffmpeg.string()) +
                               " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s " +
                               std::to_string(width) + "x" + std::to_string(height) +

@@ -15,11 +15,11 @@ namespace impulse2d::demos {
 /// The executable `name` on PATH, or nothing.
 std::optional<std::filesystem::path> find_on_path(const char* name);
 
-/// Encodes frames into an .mp4 (H.264) or .gif file.
+/// Encodes frames into an .mp4 (H.264), .webm (VP9) or .gif file.
 class VideoEncoder {
  public:
   /// Starts ffmpeg writing `output` from width x height frames at `frames_per_second`.
-  /// Throws `UsageError` for an extension other than .mp4 / .gif, and `std::runtime_error`
+  /// Throws `UsageError` for an extension other than .mp4 / .webm / .gif, and `std::runtime_error`
   /// saying how to install ffmpeg when it is not on PATH, or when it cannot be started.
   VideoEncoder(std::filesystem::path output, int width, int height, double frames_per_second);
   /// Stops ffmpeg and removes the unfinished file unless `finish` succeeded.
@@ -43,7 +43,7 @@ class VideoEncoder {
   std::FILE* pipe_ = nullptr;
 };
 
-/// Checks that `output` ends in .mp4 or .gif (throws `UsageError` otherwise) and that ffmpeg
+/// Checks that `output` ends in .mp4, .webm or .gif (throws `UsageError` otherwise) and that ffmpeg
 /// is on PATH (throws `std::runtime_error` with install instructions otherwise), before any
 /// work starts.
 void check_video_output(const std::filesystem::path& output);

@@ -44,9 +44,9 @@ void prepare_directory(const std::filesystem::path& directory) {
 }  // namespace
 
 std::filesystem::path frame_file_path(const std::filesystem::path& directory, const std::string& scene_name,
-                                      std::int64_t frame) {
+                                      std::int64_t frame, int digits) {
   char number[32];
-  std::snprintf(number, sizeof(number), "%05lld", static_cast<long long>(frame));
+  std::snprintf(number, sizeof(number), "%0*lld", digits, static_cast<long long>(frame));
   return directory / (scene_name + "_" + number + ".png");
 }
 
@@ -61,6 +61,9 @@ AsyncFrameWriter::AsyncFrameWriter(FrameWriterOptions options) : options_(std::m
                       " (need >= 1)");
   }
   if (options_.queue_capacity < 1) throw RenderError("frame writer: queue_capacity must be >= 1");
+  if (options_.digits < 1 || options_.digits > 18) {
+    throw RenderError("frame writer: digits is " + std::to_string(options_.digits) + " (need 1..18)");
+  }
   prepare_directory(options_.directory);
   for (int i = 0; i < options_.worker_threads; ++i) workers_.emplace_back([this] { work(); });
 }
@@ -68,7 +71,7 @@ AsyncFrameWriter::AsyncFrameWriter(FrameWriterOptions options) : options_(std::m
 AsyncFrameWriter::~AsyncFrameWriter() { stop_workers(); }
 
 std::filesystem::path AsyncFrameWriter::path_for(std::int64_t frame_number) const {
-  return frame_file_path(options_.directory, options_.scene_name, frame_number);
+  return frame_file_path(options_.directory, options_.scene_name, frame_number, options_.digits);
 }
 
 void AsyncFrameWriter::rethrow_failure_locked() {
@@ -140,7 +143,8 @@ void AsyncFrameWriter::work() {
     double write_seconds = 0.0;
     try {
       const Clock::time_point encode_start = Clock::now();
-      const std::vector<std::uint8_t> png = encode_png(job.frame, options_.encoding);
+      std::vector<std::uint8_t> png = encode_png(job.frame, options_.encoding);
+      if (options_.annotate) png = options_.annotate(job.frame_number, std::move(png));
       encode_seconds = seconds_since(encode_start);
       const Clock::time_point write_start = Clock::now();
       write_file_atomically(path_for(job.frame_number), png);

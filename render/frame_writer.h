@@ -11,12 +11,19 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
 
 namespace impulse2d::render {
+
+/// Applied to each encoded PNG before it is written (on a worker thread): frame number and
+/// PNG bytes in, PNG bytes out, e.g. to add metadata. Must be safe to call from several
+/// threads at once.
+using PngAnnotator =
+    std::function<std::vector<std::uint8_t>(std::int64_t frame_number, std::vector<std::uint8_t> png)>;
 
 /// Where and how a frame sequence is written.
 struct FrameWriterOptions {
@@ -25,6 +32,8 @@ struct FrameWriterOptions {
   PngEncoding encoding = PngEncoding::Fast;    ///< PNG compression path
   int worker_threads = 1;                      ///< encoding threads, >= 1
   std::size_t queue_capacity = 4;              ///< frames waiting before `submit` blocks, >= 1
+  int digits = 5;                              ///< frame numbers zero-padded to this width, 1..18
+  PngAnnotator annotate;                       ///< when set, rewrites each PNG before writing
 };
 
 /// Totals of what a writer has done so far.
@@ -35,9 +44,10 @@ struct FrameWriterStats {
   double write_seconds = 0.0;       ///< wall-clock time spent writing files, summed over workers
 };
 
-/// `directory/<scene>_<frame:05>.png` (more digits once frame >= 100000).
+/// `directory/<scene>_<frame>.png` with the frame number zero-padded to `digits` (more
+/// digits when the number needs them).
 std::filesystem::path frame_file_path(const std::filesystem::path& directory, const std::string& scene_name,
-                                      std::int64_t frame);
+                                      std::int64_t frame, int digits = 5);
 
 /// A bounded queue of frames and worker threads that encode and write them. Each file's
 /// bytes depend only on its frame, so the output is identical whatever the thread timing.

@@ -8,7 +8,11 @@ impulse2d_add_test(test_demos
 target_compile_definitions(test_demos PRIVATE IMPULSE2D_SCENES_DIR="${PROJECT_SOURCE_DIR}/demos/scenes")
 impulse2d_add_test(test_cli
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cli.cpp
-  LIBS impulse2d_demos)
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_conventions.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_frames.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_sheet.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_units.cpp
+  LIBS impulse2d_demos impulse2d_golden)
 target_compile_definitions(test_cli PRIVATE IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>")
 add_dependencies(test_cli impulse2d)
 # The bad-input catalogue: a table of broken scene files and command lines (data in

@@ -2,8 +2,6 @@
 // messages for bad input, and no partial files left behind. `trace` of a JSON projectile
 // matches the exact answer up to semi-implicit Euler's known error g t dt / 2.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,65 +13,11 @@
 #include <string>
 #include <vector>
 
-namespace fs = std::filesystem;
+#include "tests/cli_test_support.h"
+
+using namespace cli_test;
 
 namespace {
-
-struct Result {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_file(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-/// A fresh, empty directory for one test (the process id keeps two suites running at once on
-/// one machine, from two build trees, out of each other's way).
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("impulse2d_test_cli_" + std::string(info->name()) + "_" +
-                                        std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  /// Runs `impulse2d <arguments>` in the test directory; `environment` is prefixed (VAR=x).
-  Result run(const std::string& arguments, const std::string& environment = "") const {
-    const std::string command = "cd '" + dir_.string() + "' && " + environment +
-                                " '" IMPULSE2D_CLI "' " + arguments + " > stdout.txt 2> stderr.txt";
-    Result result;
-    const int status = std::system(command.c_str());
-    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_file(dir_ / "stdout.txt");
-    result.err = read_file(dir_ / "stderr.txt");
-    fs::remove(dir_ / "stdout.txt");
-    fs::remove(dir_ / "stderr.txt");
-    return result;
-  }
-
-  /// Every file under the test directory.
-  std::vector<std::string> files() const {
-    std::vector<std::string> found;
-    for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
-      if (entry.is_regular_file()) found.push_back(fs::relative(entry.path(), dir_).string());
-    }
-    return found;
-  }
-
-  fs::path dir_;
-};
 
 const char* const projectile = R"({
   "settings": {"gravity": [0, -9.81], "time_step": 0.01},
@@ -111,12 +55,12 @@ TEST_F(CliTest, RendersAFrameSequenceAndPrintsWhereItWent) {
   EXPECT_NE(result.out.find("wrote 3 frames of pyramid to frames/"), std::string::npos)
       << result.out;
   for (const char* name :
-       {"frames/pyramid_00000.png", "frames/pyramid_00010.png", "frames/pyramid_00020.png"}) {
+       {"frames/pyramid_00000.png", "frames/pyramid_00001.png", "frames/pyramid_00002.png"}) {
     const std::string png = read_file(dir_ / name);
     ASSERT_GT(png.size(), 8u) << name;
     EXPECT_EQ(png.substr(1, 3), "PNG");
   }
-  EXPECT_EQ(files().size(), 3u);
+  EXPECT_EQ(files().size(), 4u);  // and frames/pyramid_frames.csv
   // Not a terminal: plain progress lines on stderr.
   EXPECT_NE(result.err.find("pyramid: 3/3 frames"), std::string::npos) << result.err;
 }
@@ -126,7 +70,7 @@ TEST_F(CliTest, BackendOptionAndVariableGiveTheSameFiles) {
   ASSERT_EQ(run(frames + "--backend osmesa --out osmesa").status, 0);
   ASSERT_EQ(run(frames + "--backend egl --out egl").status, 0);
   ASSERT_EQ(run(frames + "--out variable", "IMPULSE2D_BACKEND=egl").status, 0);
-  for (const char* name : {"pyramid_00000.png", "pyramid_00020.png"}) {
+  for (const char* name : {"pyramid_00000.png", "pyramid_00001.png"}) {
     const std::string reference = read_file(dir_ / "osmesa" / name);
     ASSERT_GT(reference.size(), 8u) << name;
     EXPECT_TRUE(read_file(dir_ / "egl" / name) == reference) << name << " differs with --backend egl";
@@ -152,7 +96,7 @@ TEST_F(CliTest, WithoutArgumentsRendersTheDefaultDemoIntoOut) {
   ASSERT_EQ(result.status, 0) << result.err;
   EXPECT_NE(result.out.find("of tutorial to out/"), std::string::npos) << result.out;
   EXPECT_TRUE(fs::exists(dir_ / "out/tutorial_00000.png"));
-  EXPECT_TRUE(fs::exists(dir_ / "out/tutorial_00900.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "out/tutorial_00300.png"));  // 301 frames: steps 0, 3, .., 900
 }
 
 TEST_F(CliTest, ContactSheetIsOnePng) {
@@ -169,7 +113,7 @@ TEST_F(CliTest, DiffSaysSameForTwoRendersAndWritesAReportForDifferentFrames) {
   const Result same = run("diff f/pyramid_00000.png g/pyramid_00000.png --out report");
   EXPECT_EQ(same.status, 0) << same.out << same.err;
   EXPECT_FALSE(fs::exists(dir_ / "report/index.html"));  // nothing to show for an exact match
-  const Result different = run("diff f/pyramid_00000.png f/pyramid_00030.png --out report");
+  const Result different = run("diff f/pyramid_00000.png f/pyramid_00001.png --out report");
   EXPECT_EQ(different.status, 1) << different.out << different.err;
   EXPECT_NE(different.out.find("differ"), std::string::npos) << different.out;
   for (const char* name : {"report/index.html", "report/diff.png", "report/heatmap.png",
@@ -185,7 +129,7 @@ TEST_F(CliTest, TrailsAddTheBodiesPathsToTheFrames) {
   ASSERT_EQ(run("render tutorial --frames 120 --size 320x240 --out plain").status, 0);
   const Result trails = run("render tutorial --frames 120 --size 320x240 --trails dynamic --out t");
   ASSERT_EQ(trails.status, 0) << trails.err;
-  EXPECT_EQ(run("diff plain/tutorial_00120.png t/tutorial_00120.png").status, 1);
+  EXPECT_EQ(run("diff plain/tutorial_00000.png t/tutorial_00000.png").status, 1);
   const Result bad = run("render tutorial --frames 120 --trails 3,x --out u");
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("--trails '3,x': 'x' is not a body index"), std::string::npos) << bad.err;
@@ -324,9 +268,9 @@ INSTANTIATE_TEST_SUITE_P(
                  "unknown overlay 'sparkles'"},
         BadInput{"BadTheme", "", "render bullet --theme neon", 2, "--theme 'neon'"},
         BadInput{"UnknownOption", "", "render bullet --colour red", 2, "--colour"},
-        BadInput{"TraceWithoutSteps", "", "trace bullet", 2, "--steps"},
+        BadInput{"TraceStepsWithoutValue", "", "trace bullet --steps", 2, "--steps"},
         BadInput{"BadVideoExtension", "", "render bullet --video clip.avi", 2,
-                 "must end in .mp4 or .gif"},
+                 "must end in .mp4, .webm or .gif"},
         BadInput{"VideoWithoutFfmpeg", "", "render bullet --frames 0:2 --video clip.mp4", 1,
                  "sudo apt-get install ffmpeg"},
         BadInput{"UnwritableOutput", "", "render bullet --frames 0:2 --out blocker/frames", 1,
@@ -377,15 +321,15 @@ TEST_F(CliTest, SignalsStopARenderAndRemoveWhatItCreated) {
 // --clean replaces them, and only when the new run succeeded.
 TEST_F(CliTest, RerenderingNeedsCleanAndReplacesOnlyOnSuccess) {
   ASSERT_EQ(run("render pyramid --param rows=3 --frames 0:20:10 --size 64x64 --out f").status, 0);
-  const std::string first = read_file(dir_ / "f/pyramid_00010.png");
+  const std::string first = read_file(dir_ / "f/pyramid_00001.png");
   const Result again = run("render pyramid --param rows=3 --frames 0:20:10 --size 64x64 --out f");
   EXPECT_EQ(again.status, 2);
   EXPECT_NE(again.err.find("f/ already holds 3 frames of pyramid"), std::string::npos) << again.err;
   const Result clean =
       run("render pyramid --param rows=3 --frames 0:10:10 --size 80x80 --out f --clean");
   EXPECT_EQ(clean.status, 0) << clean.err;
-  EXPECT_EQ(files().size(), 2u);  // the old 00020 frame went with --clean
-  EXPECT_NE(read_file(dir_ / "f/pyramid_00010.png"), first);
+  EXPECT_EQ(files().size(), 3u);  // the old third frame went with --clean; 2 frames + index
+  EXPECT_NE(read_file(dir_ / "f/pyramid_00001.png"), first);
 }
 
 // A stale staging directory of a SIGKILLed run (its process is gone) is removed by the next run.
@@ -393,5 +337,7 @@ TEST_F(CliTest, StagingLeftByAKilledRunIsRemovedByTheNextRun) {
   fs::create_directories(dir_ / "f" / ".impulse2d-staging-pyramid-999999999");
   write_file(dir_ / "f" / ".impulse2d-staging-pyramid-999999999" / "pyramid_00000.png", "half");
   ASSERT_EQ(run("render pyramid --param rows=3 --frames 0 --size 64x64 --out f").status, 0);
-  EXPECT_EQ(files(), std::vector<std::string>{"f/pyramid_00000.png"});
+  std::vector<std::string> left = files();
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"f/pyramid_00000.png", "f/pyramid_frames.csv"}));
 }

@@ -82,11 +82,13 @@ void draw_charts_if_possible(const std::vector<LabResult>& results, const std::s
 }
 
 /// Runs the stability map; writes stability.csv, stability.png and boundary contact sheets.
-void run_stability(bool quick, bool charts, const std::string& directory, std::ostream& out) {
+void run_stability(bool quick, bool charts, bool quiet, const std::string& directory,
+                   std::ostream& out) {
   const std::vector<Stressor> list = stressors(quick);
   const std::vector<LabMethod> methods = stability_methods(quick);
   std::unique_ptr<demos::Progress> bar;
   const auto progress = [&](int done, int total) {
+    if (quiet) return;
     if (!bar) bar = std::make_unique<demos::Progress>("stability map", total, stderr,
                                                       demos::is_terminal(stderr), "cells");
     bar->update(done);
@@ -181,7 +183,7 @@ void run_lab(const LabArguments& arguments, std::ostream& out) {
 
   if (!arguments.sweep) {
     if (!arguments.stability) throw demos::UsageError("--no-sweep with --no-stability leaves nothing to run");
-    run_stability(arguments.quick, arguments.charts, arguments.out, out);
+    run_stability(arguments.quick, arguments.charts, arguments.quiet, arguments.out, out);
     return;
   }
   SweepOptions options;
@@ -193,6 +195,7 @@ void run_lab(const LabArguments& arguments, std::ostream& out) {
   std::int64_t known_total = 0;
   std::unique_ptr<demos::Progress> bar;
   options.progress = [&](std::int64_t done, std::int64_t total) {
+    if (arguments.quiet) return;
     if (!bar || total != known_total) {
       bar = std::make_unique<demos::Progress>("lab sweep", total, stderr, demos::is_terminal(stderr),
                                              "runs");
@@ -216,7 +219,7 @@ void run_lab(const LabArguments& arguments, std::ostream& out) {
       << csv_path << "\n";
   summarise(results, out);
   if (arguments.charts && shard_count == 1) draw_charts_if_possible(results, arguments.out + "/charts", out);
-  if (arguments.stability && shard_count == 1) run_stability(arguments.quick, arguments.charts, arguments.out, out);
+  if (arguments.stability && shard_count == 1) run_stability(arguments.quick, arguments.charts, arguments.quiet, arguments.out, out);
 }
 
 void merge_lab(const MergeArguments& arguments, std::ostream& out) {

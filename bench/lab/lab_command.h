@@ -23,6 +23,7 @@ struct LabArguments {
   bool charts = true;                   ///< draw the PNG charts (needs gnuplot)
   bool stability = true;                ///< also run the stability map
   bool sweep = true;                    ///< run the method sweep (off: the stability map only)
+  bool quiet = false;                   ///< no progress bars on stderr
 };
 
 /// `impulse2d lab merge`.

@@ -126,7 +126,7 @@ int run_diff_command(const std::string& expected_png, const std::string& actual_
     }
     return result.passed() ? kDiffSame : kDiffDiffers;
   } catch (const GoldenError& error) {
-    err << "impulse2d diff: " << error.what() << "\n";
+    err << "impulse2d: diff: " << error.what() << "\n";
     return kDiffError;
   }
 }

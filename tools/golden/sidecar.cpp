@@ -14,6 +14,13 @@ namespace impulse2d::golden {
 
 using nlohmann::json;
 
+RendererFingerprint split_fingerprint(const std::string& fingerprint) {
+  const std::string separator = " | ";
+  const std::size_t at = fingerprint.find(separator);
+  if (at == std::string::npos) return RendererFingerprint{fingerprint, ""};
+  return RendererFingerprint{fingerprint.substr(0, at), fingerprint.substr(at + separator.size())};
+}
+
 std::string RendererFingerprint::describe() const {
   if (gl_renderer.empty() && gl_version.empty()) return "not recorded";
   return gl_renderer + " / " + gl_version;

@@ -40,6 +40,10 @@ struct RendererFingerprint {
   bool operator!=(const RendererFingerprint& other) const { return !(*this == other); }
 };
 
+/// "GL_RENDERER | GL_VERSION" (as `render::FrameRenderer::fingerprint` gives it) split into
+/// its two strings; without the separator, all of it is the renderer.
+RendererFingerprint split_fingerprint(const std::string& fingerprint);
+
 /// Everything recorded beside one golden image.
 struct Sidecar {
   std::string scene;              ///< scene name, e.g. "circles"

@@ -216,10 +216,10 @@ int run_golden_command(const GoldenCommandArguments& arguments, std::ostream& ou
     if (arguments.action == "frame") return render_one_frame(arguments);
     return check_or_update(arguments, out);
   } catch (const demos::UsageError& error) {
-    err << "impulse2d golden: " << error.what() << "\n";
+    err << "impulse2d: golden: " << error.what() << "\n";
     return kGoldenBadInput;
   } catch (const std::exception& error) {
-    err << "impulse2d golden: error: " << error.what() << "\n";
+    err << "impulse2d: golden: error: " << error.what() << "\n";
     return kGoldenFailed;
   }
 }

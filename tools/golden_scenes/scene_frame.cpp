@@ -1,10 +1,9 @@
 /// @file scene_frame.cpp
 #include "tools/golden_scenes/scene_frame.h"
 
-#include <iomanip>
-#include <sstream>
 #include <string>
 
+#include "demos/frame_metadata.h"
 #include "demos/frame_sequence.h"
 #include "demos/scene_camera.h"
 #include "demos/scene_registry.h"
@@ -12,21 +11,8 @@
 #include "tools/golden_scenes/golden_run.h"
 #include "render/frame_renderer.h"
 #include "tools/golden/error.h"
-#include "tools/golden/hex_hash.h"
 
 namespace impulse2d::golden {
-
-namespace {
-
-/// "GL_RENDERER | GL_VERSION" split into its two strings.
-RendererFingerprint split_fingerprint(const std::string& fingerprint) {
-  const std::string separator = " | ";
-  const std::size_t at = fingerprint.find(separator);
-  if (at == std::string::npos) return RendererFingerprint{fingerprint, ""};
-  return RendererFingerprint{fingerprint.substr(0, at), fingerprint.substr(at + separator.size())};
-}
-
-}  // namespace
 
 PngText frame_metadata(const GoldenSpec& spec, const World& world,
                        const RendererFingerprint& renderer) {
@@ -34,17 +20,9 @@ PngText frame_metadata(const GoldenSpec& spec, const World& world,
   for (const auto& [name, value] : spec.params) {
     parameters += (parameters.empty() ? "" : " ") + name + "=" + value;
   }
-  std::ostringstream time;
-  time << std::setprecision(9) << world.time();
-  PngText text;
-  text[png_keys::kSoftware] = std::string("impulse2d ") + IMPULSE2D_VERSION;
-  text[png_keys::kScene] = spec.scene_file.empty() ? spec.scene : spec.scene + " (" + spec.scene_file + ")";
-  text[png_keys::kParameters] = parameters.empty() ? "defaults" : parameters;
-  text[png_keys::kStep] = std::to_string(world.step_count());
-  text[png_keys::kTime] = time.str();
-  text[png_keys::kStateHash] = to_hex_hash(world.state_hash());
-  text[png_keys::kRenderer] = renderer.describe();
-  return text;
+  const std::string scene =
+      spec.scene_file.empty() ? spec.scene : spec.scene + " (" + spec.scene_file + ")";
+  return demos::frame_metadata(scene, parameters, world, renderer.describe());
 }
 
 render::FrameRenderer& shared_golden_renderer() {
