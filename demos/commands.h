@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "demos/view_options.h"
+
 namespace impulse2d::demos {
 
 /// Arguments shared by every command that runs a scene.
@@ -32,6 +34,7 @@ struct RenderArguments {
   int threads = 2;                      ///< PNG encoding threads
   std::optional<std::string> trails;    ///< `dynamic` or body indices with motion trails
   bool clean = false;                   ///< replace frames of the same scene already in `out`
+  ViewArguments view;                   ///< HUD, legend, scales, camera, highlight
 };
 
 /// `impulse2d trace`.
@@ -51,6 +54,7 @@ struct SheetArguments {
   std::optional<std::string> overlays;  ///< overlay list; the scene's default when absent
   std::string theme = "light";          ///< light or dark
   std::optional<std::string> out;       ///< PNG path; out/contact_sheet_<scene>.png when absent
+  ViewArguments view;                   ///< legend, scales, camera, highlight
 };
 
 /// Prints every built-in scene with its description, parameters and model.

@@ -11,6 +11,7 @@
 #include "scene/usage_error.h"
 #include "demos/scene_camera.h"
 #include "demos/video_encoder.h"
+#include "demos/view_frame_options.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
 #include "render/motion_trails.h"
@@ -57,10 +58,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
   render::FrameRenderer renderer(options.width, options.height);
   const render::Camera camera =
       scene_camera(run.scene().view.camera, run.world(), options.width, options.height);
-  render::FrameOptions frame_options;
-  frame_options.draw = options.draw;
-  frame_options.theme = options.theme;
-  frame_options.extra_overlays = run.script_overlays();
+  render::FrameOptions frame_options = view_frame_options(run, options.draw, options.theme);
   render::HudInfo hud;
   hud.scene_name = scene_title(run.scene());
   constexpr std::size_t trail_points = 240;  // 4 s of path at 60 steps per second
@@ -78,6 +76,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     }
     check_interrupt();
     hud.frame = frame_step;
+    update_view_frame(run, frame_options, hud);
     render::Frame frame = writer.take_spare_frame();
     renderer.render(run.world(), frame_camera(camera, run), frame_options, hud, frame);
     if (video) video->add(frame);

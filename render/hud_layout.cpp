@@ -1,0 +1,57 @@
+/// @file hud_layout.cpp
+#include "render/hud_layout.h"
+
+#include "render/easy_font.h"
+#include "render/hud.h"
+
+#include <algorithm>
+
+namespace impulse2d::render {
+
+namespace {
+
+// Height of `lines` lines of text, font pixels: the last line ends at its capitals' baseline.
+float block_height(std::size_t lines) {
+  return font_line_height * static_cast<float>(lines) - (font_line_height - font_cap_height);
+}
+
+}  // namespace
+
+bool ScreenRect::overlaps(const ScreenRect& other) const {
+  if (empty() || other.empty()) return false;
+  return left < other.left + other.width && other.left < left + width && top < other.top + other.height &&
+         other.top < top + height;
+}
+
+HudLayout layout_hud(int width, int height, const std::vector<std::string>& lines,
+                     const std::vector<LegendEntry>& legend, int text_scale) {
+  HudLayout layout;
+  layout.text_scale = std::max(text_scale, 1);
+  const float s = static_cast<float>(layout.text_scale);
+  if (!lines.empty()) {
+    float text = 0.0f;
+    for (const std::string& line : lines) text = std::max(text, text_width(line));
+    layout.hud = {0.0f, 0.0f, (text + 2.0f * hud_panel_padding) * s,
+                  (block_height(lines.size()) + 2.0f * hud_panel_padding) * s};
+  }
+  if (legend.empty()) return layout;
+  float text = 0.0f;
+  for (const LegendEntry& entry : legend) text = std::max(text, text_width(entry.label));
+  const float legend_width = (text + legend_swatch_width + 3.0f * hud_panel_padding) * s;
+  const float legend_height = (block_height(legend.size()) + 2.0f * hud_panel_padding) * s;
+  const float frame_width = static_cast<float>(width);
+  const float frame_height = static_cast<float>(height);
+  const float hud_right = layout.hud.empty() ? 0.0f : layout.hud.left + layout.hud.width;
+  const float hud_bottom = layout.hud.empty() ? 0.0f : layout.hud.top + layout.hud.height;
+  const float right_edge = std::max(frame_width - legend_width, 0.0f);
+  if (layout.hud.empty() || right_edge >= hud_right) {
+    layout.legend = {right_edge, 0.0f, legend_width, legend_height};  // top-right
+  } else if (frame_height - legend_height >= hud_bottom) {
+    layout.legend = {right_edge, frame_height - legend_height, legend_width, legend_height};  // bottom-right
+  } else {
+    layout.legend = {0.0f, hud_bottom, legend_width, legend_height};  // under the HUD
+  }
+  return layout;
+}
+
+}  // namespace impulse2d::render
