@@ -4,6 +4,7 @@
 #include "core/world.h"
 #include "render/motion_trails.h"
 #include "render/offscreen_context.h"
+#include "render/driver_quirks.h"
 #include "render/frame_scale.h"
 #include "render/render_error.h"
 
@@ -11,7 +12,10 @@ namespace impulse2d::render {
 
 namespace {
 
-PrimitiveStyle scaled_style(PrimitiveStyle style, int scale) {
+// `style` for this frame size and driver: marks scaled by `scale`, and no point sprites where
+// they crash the driver (`point_sprites_safe`).
+PrimitiveStyle frame_style(PrimitiveStyle style, int scale, const std::string& gl_renderer) {
+  if (!point_sprites_safe(gl_renderer)) style.max_point_sprite = 0.0f;
   const float s = static_cast<float>(scale);
   style.line_width *= s;
   style.arrow_head_length *= s;
@@ -30,7 +34,7 @@ FrameRenderer::FrameRenderer(std::unique_ptr<OffscreenContext> context, const Pr
   if (!context_) throw RenderError("FrameRenderer: no offscreen context given");
   context_->make_current();
   primitives_ = std::make_unique<PrimitiveRenderer>(
-      scaled_style(style, frame_scale(context_->width(), context_->height())));
+      frame_style(style, frame_scale(context_->width(), context_->height()), context_->renderer()));
 }
 
 FrameRenderer::~FrameRenderer() {

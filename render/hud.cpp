@@ -94,9 +94,9 @@ void draw_hud(PrimitiveRenderer& renderer, const std::vector<std::string>& lines
   if (!layout.hud.empty()) {
     renderer.draw_screen_rect(vec2(layout.hud.left, layout.hud.top), vec2(layout.hud.width, layout.hud.height),
                               palette.hud_panel);
-    for (std::size_t i = 0; i < lines.size(); ++i) {
+    for (std::size_t i = 0; i < layout.hud_lines.size(); ++i) {
       const vec2 at(layout.hud.left + padding, layout.hud.top + padding + font_line_height * s * static_cast<float>(i));
-      renderer.draw_screen_text(at, lines[i], palette.hud_text, layout.text_scale);
+      renderer.draw_screen_text(at, layout.hud_lines[i], palette.hud_text, layout.text_scale);
     }
   }
   if (layout.legend.empty()) return;

@@ -55,7 +55,7 @@ std::vector<LegendEntry> legend_entries(const DebugDrawOptions& options, const C
                                         bool trails_on, Color trail_color, float max_arrow_pixels,
                                         float min_penetration_pixels);
 
-/// Draws the HUD text (top-left) and, when `legend` is not empty, the legend (where
+/// Draws the HUD text (top-left, lines wrapped at spaces to the frame's width) and, when `legend` is not empty, the legend (where
 /// `layout_hud` puts it, never over the HUD), each on a translucent panel, at integer
 /// `text_scale`.
 void draw_hud(PrimitiveRenderer& renderer, const std::vector<std::string>& lines,

@@ -23,16 +23,42 @@ bool ScreenRect::overlaps(const ScreenRect& other) const {
          other.top < top + height;
 }
 
+std::vector<std::string> wrap_lines(const std::vector<std::string>& lines, float max_width) {
+  // The last position of `separator` in `text` whose text before it fits; npos for none.
+  const auto last_fitting = [max_width](const std::string& text, const char* separator) {
+    std::size_t cut = text.rfind(separator);
+    while (cut != std::string::npos && cut > 0 && text_width(text.substr(0, cut)) > max_width) {
+      cut = text.rfind(separator, cut - 1);
+    }
+    return cut == 0 ? std::string::npos : cut;
+  };
+  std::vector<std::string> wrapped;
+  for (const std::string& line : lines) {
+    std::string rest = line;
+    while (text_width(rest) > max_width) {
+      // Between fields (two spaces) first, so "frame 00042" stays on one line; else between words.
+      std::size_t cut = last_fitting(rest, "  ");
+      if (cut == std::string::npos) cut = last_fitting(rest, " ");
+      if (cut == std::string::npos) break;  // one word wider than the frame
+      wrapped.push_back(rest.substr(0, cut));
+      rest = rest.substr(rest.find_first_not_of(' ', cut));
+    }
+    wrapped.push_back(rest);
+  }
+  return wrapped;
+}
+
 HudLayout layout_hud(int width, int height, const std::vector<std::string>& lines,
                      const std::vector<LegendEntry>& legend, int text_scale) {
   HudLayout layout;
   layout.text_scale = std::max(text_scale, 1);
   const float s = static_cast<float>(layout.text_scale);
   if (!lines.empty()) {
+    layout.hud_lines = wrap_lines(lines, static_cast<float>(width) / s - 2.0f * hud_panel_padding);
     float text = 0.0f;
-    for (const std::string& line : lines) text = std::max(text, text_width(line));
+    for (const std::string& line : layout.hud_lines) text = std::max(text, text_width(line));
     layout.hud = {0.0f, 0.0f, (text + 2.0f * hud_panel_padding) * s,
-                  (block_height(lines.size()) + 2.0f * hud_panel_padding) * s};
+                  (block_height(layout.hud_lines.size()) + 2.0f * hud_panel_padding) * s};
   }
   if (legend.empty()) return layout;
   float text = 0.0f;

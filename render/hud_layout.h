@@ -23,6 +23,8 @@ struct ScreenRect {
 
 /// The panels of one frame's HUD and legend, and the text magnification they were laid out for.
 struct HudLayout {
+  /// The HUD's lines as drawn: each given line wrapped at spaces to fit the frame's width.
+  std::vector<std::string> hud_lines;
   ScreenRect hud;     ///< the HUD panel, always at the top-left corner (empty without lines)
   ScreenRect legend;  ///< the legend panel (empty without entries)
   int text_scale = 1; ///< integer magnification of the font, 1 = 7 px capitals
@@ -33,7 +35,12 @@ constexpr float hud_panel_padding = 6.0f;
 /// Width of a legend colour key, in font pixels (multiplied by the text scale).
 constexpr float legend_swatch_width = 14.0f;
 
-/// Lays out the HUD (`lines`, top-left) and the legend on a width x height frame at
+/// `lines` with each line longer than `max_width` font pixels broken where it fits: at the last
+/// double space (between HUD fields) that fits, else at the last space; a single word longer
+/// than that stays whole.
+std::vector<std::string> wrap_lines(const std::vector<std::string>& lines, float max_width);
+
+/// Lays out the HUD (`lines`, top-left, wrapped to the frame's width) and the legend on a width x height frame at
 /// `text_scale`. The legend goes to the top-right corner when it fits beside the HUD, else to
 /// the bottom-right corner when it fits below it, else directly under the HUD: it never covers
 /// the HUD.

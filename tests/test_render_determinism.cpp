@@ -1,6 +1,7 @@
 // Frames must not depend on how many threads llvmpipe rasterises with. llvmpipe reads
 // LP_NUM_THREADS once, when the first context of a process is created, so each setting
 // runs in a fresh child process (this binary, filtered to the child test below).
+#include "render/driver_quirks.h"
 #include "render/frame_renderer.h"
 #include "render/png_encoder.h"
 #include "tests/test_render_support.h"
@@ -79,4 +80,33 @@ TEST(RenderThreads, OneTwoAndFourThreadsGiveIdenticalFrames) {
     std::remove((output + ".threads").c_str());
   }
   std::remove(directory.c_str());
+}
+
+// Mesa 22.3's llvmpipe at 128-bit vectors aborts on point sprites (driver_quirks.h); the
+// renderer draws quads there instead, which give the same pixels as the default build's
+// sprites: the frame must come out, and bit-identical.
+TEST(RenderThreads, NativeVectorWidth128GivesTheSameFrame) {
+  const std::string directory = support::make_temporary_directory("render-vector-width");
+  ASSERT_FALSE(directory.empty());
+  std::vector<std::vector<std::uint8_t>> frames;
+  for (const char* width : {"", "128"}) {
+    const std::string output = directory + "/frame_" + width + ".rgba";
+    std::map<std::string, std::string> variables = {{kOutputVariable, output}};
+    if (width[0] != '\0') variables["LP_NATIVE_VECTOR_WIDTH"] = width;
+    const int status = support::run_self("RenderThreadsChild.WriteFrame", variables);
+    ASSERT_EQ(status, 0) << "child with LP_NATIVE_VECTOR_WIDTH='" << width << "' failed (status " << status << ")";
+    frames.push_back(support::read_file(output));
+    std::remove(output.c_str());
+    std::remove((output + ".threads").c_str());
+  }
+  std::remove(directory.c_str());
+  ASSERT_EQ(frames[0].size(), 400u * 240u * 4u);
+  EXPECT_TRUE(frames[0] == frames[1]) << "LP_NATIVE_VECTOR_WIDTH=128 changes the frame";
+}
+
+TEST(RenderThreads, PointSpritesAreOffOnlyWhereTheDriverCrashes) {
+  EXPECT_FALSE(point_sprites_safe("llvmpipe (LLVM 15.0.6, 128 bits)"));
+  EXPECT_TRUE(point_sprites_safe("llvmpipe (LLVM 15.0.6, 256 bits)"));
+  EXPECT_TRUE(point_sprites_safe("softpipe"));
+  EXPECT_TRUE(point_sprites_safe("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
 }

