@@ -88,7 +88,7 @@ std::vector<LegendEntry> legend_entries(const DebugDrawOptions& options, const C
 void draw_hud(PrimitiveRenderer& renderer, const std::vector<std::string>& lines,
               const std::vector<LegendEntry>& legend, const ThemePalette& palette, int text_scale) {
   const HudLayout layout =
-      layout_hud(renderer.viewport_width(), renderer.viewport_height(), lines, legend, text_scale);
+      layout_hud(renderer.viewport_width(), lines, legend, text_scale);
   const float s = static_cast<float>(layout.text_scale);
   const float padding = hud_panel_padding * s;
   if (!layout.hud.empty()) {

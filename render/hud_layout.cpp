@@ -48,7 +48,7 @@ std::vector<std::string> wrap_lines(const std::vector<std::string>& lines, float
   return wrapped;
 }
 
-HudLayout layout_hud(int width, int height, const std::vector<std::string>& lines,
+HudLayout layout_hud(int width, const std::vector<std::string>& lines,
                      const std::vector<LegendEntry>& legend, int text_scale) {
   HudLayout layout;
   layout.text_scale = std::max(text_scale, 1);
@@ -66,17 +66,13 @@ HudLayout layout_hud(int width, int height, const std::vector<std::string>& line
   const float legend_width = (text + legend_swatch_width + 3.0f * hud_panel_padding) * s;
   const float legend_height = (block_height(legend.size()) + 2.0f * hud_panel_padding) * s;
   const float frame_width = static_cast<float>(width);
-  const float frame_height = static_cast<float>(height);
   const float hud_right = layout.hud.empty() ? 0.0f : layout.hud.left + layout.hud.width;
   const float hud_bottom = layout.hud.empty() ? 0.0f : layout.hud.top + layout.hud.height;
   const float right_edge = std::max(frame_width - legend_width, 0.0f);
-  if (layout.hud.empty() || right_edge >= hud_right) {
-    layout.legend = {right_edge, 0.0f, legend_width, legend_height};  // top-right
-  } else if (frame_height - legend_height >= hud_bottom) {
-    layout.legend = {right_edge, frame_height - legend_height, legend_width, legend_height};  // bottom-right
-  } else {
-    layout.legend = {0.0f, hud_bottom, legend_width, legend_height};  // under the HUD
-  }
+  // Beside the HUD when it fits there, else right under it (the upper part of a scene is
+  // more often empty than the ground at the bottom); never over the HUD.
+  const bool beside = layout.hud.empty() || right_edge >= hud_right;
+  layout.legend = {right_edge, beside ? 0.0f : hud_bottom, legend_width, legend_height};
   return layout;
 }
 

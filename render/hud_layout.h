@@ -40,11 +40,11 @@ constexpr float legend_swatch_width = 14.0f;
 /// than that stays whole.
 std::vector<std::string> wrap_lines(const std::vector<std::string>& lines, float max_width);
 
-/// Lays out the HUD (`lines`, top-left, wrapped to the frame's width) and the legend on a width x height frame at
-/// `text_scale`. The legend goes to the top-right corner when it fits beside the HUD, else to
-/// the bottom-right corner when it fits below it, else directly under the HUD: it never covers
-/// the HUD.
-HudLayout layout_hud(int width, int height, const std::vector<std::string>& lines,
+/// Lays out the HUD (`lines`, top-left, wrapped to the frame's width) and the legend on a
+/// frame `width` pixels wide at `text_scale`. The legend goes to the top-right corner when it fits beside the HUD, else to
+/// the right edge just under the HUD: it never covers the HUD (it may run off the bottom of a
+/// frame too small for both).
+HudLayout layout_hud(int width, const std::vector<std::string>& lines,
                      const std::vector<LegendEntry>& legend, int text_scale);
 
 }  // namespace impulse2d::render

@@ -105,8 +105,8 @@ TEST(RenderOverlays, LinesAndTextGrowWithTheFrame) {
   EXPECT_GE(large, 4 * small - 2);
   // Text: the HUD panel of a 4000x3000 frame is 6 times that of a 320x240 one.
   const std::vector<std::string> lines = {"frame 00001", "t = 0.000 s"};
-  const HudLayout small_hud = layout_hud(320, 240, lines, {}, frame_scale(320, 240));
-  const HudLayout large_hud = layout_hud(4000, 3000, lines, {}, frame_scale(4000, 3000));
+  const HudLayout small_hud = layout_hud(320, lines, {}, frame_scale(320, 240));
+  const HudLayout large_hud = layout_hud(4000, lines, {}, frame_scale(4000, 3000));
   EXPECT_FLOAT_EQ(large_hud.hud.height, 6.0f * small_hud.hud.height);
 }
 
@@ -126,7 +126,7 @@ TEST(RenderOverlays, LegendNeverCoversTheHudAt320x240AndLarger) {
                          8.0f * static_cast<float>(scale));
       for (std::size_t hud_lines = 2; hud_lines <= lines.size(); ++hud_lines) {
         const std::vector<std::string> shown(lines.begin(), lines.begin() + static_cast<long>(hud_lines));
-        const HudLayout layout = layout_hud(width, height, shown, legend, scale);
+        const HudLayout layout = layout_hud(width, shown, legend, scale);
         const std::string where = std::to_string(width) + "x" + std::to_string(height) + " with " +
                                   std::to_string(hud_lines) + " HUD lines";
         EXPECT_FALSE(layout.hud.empty()) << where;
@@ -151,7 +151,7 @@ TEST(RenderOverlays, HudLinesWrapAtSpacesToTheFrameWidth) {
   EXPECT_EQ(wrap_lines({"averyveryverylongword"}, 12.0f), std::vector<std::string>{"averyveryverylongword"});
   // The tutorial's title at 320x240 keeps its frame counter on screen.
   const HudLayout layout = layout_hud(
-      320, 240, {"tutorial - left: no friction | right: friction  frame 00300", "t = 5.000 s"}, {}, 1);
+      320, {"tutorial - left: no friction | right: friction  frame 00300", "t = 5.000 s"}, {}, 1);
   for (const std::string& line : layout.hud_lines) EXPECT_LE(text_width(line) + 12.0f, 320.0f) << line;
   bool counter_whole = false;
   for (const std::string& line : layout.hud_lines) counter_whole |= line.find("frame 00300") != std::string::npos;
@@ -161,7 +161,7 @@ TEST(RenderOverlays, HudLinesWrapAtSpacesToTheFrameWidth) {
 TEST(RenderOverlays, LegendStaysTopRightWhenItFitsBesideTheHud) {
   const std::vector<std::string> lines = {"scene  frame 00001", "t = 0.000 s"};
   const std::vector<LegendEntry> legend = {{Color{}, "contact points"}};
-  const HudLayout layout = layout_hud(800, 600, lines, legend, 1);
+  const HudLayout layout = layout_hud(800, lines, legend, 1);
   EXPECT_EQ(layout.legend.top, 0.0f);
   EXPECT_FLOAT_EQ(layout.legend.left + layout.legend.width, 800.0f);
 }
