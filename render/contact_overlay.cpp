@@ -64,6 +64,10 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
     const vec2 tangent = right_perpendicular(normal);
     for (int i = 0; i < contact.point_count; ++i) {
       const ContactPoint& point = contact.points[i];
+      // The dot first: the penetration bar (narrower, longer) shows across it.
+      if (flags & draw_contact_points) {
+        renderer.draw_point(point.point, 6.0f * s, faded(palette.contact_point, opacity));
+      }
       if ((flags & draw_penetration) && point.depth > 0.0f) {
         const float half = 0.5f * std::max(point.depth * options.penetration_scale, min_bar);
         const vec2 along = normal * half;
@@ -87,9 +91,6 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
         draw_clamped_arrow(renderer, point.point,
                            point.point + tangent * (point.tangent_impulse * options.impulse_scale),
                            faded(palette.friction_impulse, opacity), max_arrow);
-      }
-      if (flags & draw_contact_points) {
-        renderer.draw_point(point.point, 6.0f * s, faded(palette.contact_point, opacity));
       }
     }
   }
