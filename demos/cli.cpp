@@ -100,7 +100,7 @@ int run_cli(int argc, char** argv) {
   render_command->add_flag("--clean", render.clean,
                            "replace frames of the same scene already in the output directory "
                            "(without it they are an error); done only when the run succeeds");
-  add_view_options(*render_command, render.view);
+  add_view_options(*render_command, render.view, true);
 
   TraceArguments trace;
   CLI::App* trace_command = app.add_subcommand(
@@ -128,7 +128,7 @@ int run_cli(int argc, char** argv) {
   sheet_command->add_option("--theme", sheet.theme, "light or dark")->capture_default_str();
   sheet_command->add_option("--out", sheet.out,
                             "PNG file (default: out/contact_sheet_<scene>.png)");
-  add_view_options(*sheet_command, sheet.view);
+  add_view_options(*sheet_command, sheet.view, false);
 
   std::string diff_expected, diff_actual, diff_out;
   CLI::App* diff_command = app.add_subcommand(

@@ -10,6 +10,7 @@
 #include "demos/output_staging.h"
 #include "scene/usage_error.h"
 #include "demos/scene_camera.h"
+#include "demos/timeline_frames.h"
 #include "demos/video_encoder.h"
 #include "demos/view_frame_options.h"
 #include "render/frame_renderer.h"
@@ -48,10 +49,16 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
   writer_options.worker_threads = options.writer_threads;
   render::AsyncFrameWriter writer(writer_options);
 
+  std::unique_ptr<TimelineFrames> timeline;
+  if (run.scene().view.show_timeline && !plan.frames.empty()) {
+    timeline = std::make_unique<TimelineFrames>(run, plan.frames.back(), options.width, options.height,
+                                                options.theme);
+  }
   std::unique_ptr<VideoEncoder> video;
   if (options.video) {
     guard.will_write_file(*options.video);
-    video = std::make_unique<VideoEncoder>(*options.video, options.width, options.height,
+    video = std::make_unique<VideoEncoder>(*options.video, options.width,
+                                           options.height + (timeline ? timeline->strip_height() : 0),
                                            real_time_rate(plan, run.world().settings().time_step));
   }
 
@@ -79,6 +86,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     update_view_frame(run, frame_options, hud);
     render::Frame frame = writer.take_spare_frame();
     renderer.render(run.world(), frame_camera(camera, run), frame_options, hud, frame);
+    if (timeline) timeline->append(frame, frame_step);
     if (video) video->add(frame);
     const std::filesystem::path file =
         render::frame_file_path(options.directory, run.scene().name, frame_step);

@@ -32,6 +32,8 @@ render::FrameOptions view_frame_options(const SceneRun& run, const DebugDrawOpti
   options.show_legend = view.show_legend;
   options.text_scale = view.text_scale;
   options.contacts.max_arrow_pixels = view.max_arrow_pixels;
+  options.contacts.feature_ids = view.show_feature_ids;
+  options.islands = view.show_islands;
   options.body_labels = run.body_labels();
   options.extra_overlays = run.script_overlays();
   return options;

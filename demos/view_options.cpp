@@ -66,7 +66,12 @@ Aabb view_bounds(const std::string& text) {
 
 }  // namespace
 
-void add_view_options(CLI::App& command, ViewArguments& arguments) {
+void add_view_options(CLI::App& command, ViewArguments& arguments, bool sequence) {
+  if (sequence) {
+    command.add_flag("--timeline", arguments.timeline,
+                     "a strip under each frame: energy, contacts and deepest penetration over the "
+                     "whole run, the frame's step marked");
+  }
   CLI::Option* hud = command.add_flag_callback("--hud", [&arguments] { arguments.hud = true; },
                                                "draw the HUD (scene, frame, time, counts; default on)");
   CLI::Option* no_hud = command.add_flag_callback("--no-hud", [&arguments] { arguments.hud = false; },
@@ -90,6 +95,9 @@ void add_view_options(CLI::App& command, ViewArguments& arguments) {
                      "camera centred on this body in every frame: a name from the scene file or a creation index");
   command.add_option("--zoom", arguments.zoom, "magnify the camera about its centre by K (0.01..100)");
   command.add_option("--highlight", arguments.highlight, "frame this body (name or creation index) in magenta");
+  command.add_flag("--islands", arguments.islands,
+                   "island colours: a dot per body and a line per contact, one colour per island");
+  command.add_flag("--feature-ids", arguments.feature_ids, "write each contact point's feature id (hex)");
   command.add_flag("--hud-settings", arguments.settings, "add the solver settings to the HUD");
   command.add_flag("--hud-timings", arguments.timings,
                    "add the last step's per-stage times to the HUD (wall-clock: frames differ run to run)");
@@ -133,6 +141,9 @@ void apply_view_arguments(const ViewArguments& arguments, Scene& scene) {
     view.camera.zoom = checked(*arguments.zoom, 0.01f, 100.0f, "--zoom", "a magnification of the camera");
   }
   if (arguments.highlight) view.highlight_body = body_reference(*arguments.highlight, scene, "--highlight");
+  if (arguments.islands) view.show_islands = true;
+  if (arguments.feature_ids) view.show_feature_ids = true;
+  if (arguments.timeline) view.show_timeline = true;
   if (arguments.settings) view.show_settings = true;
   if (arguments.timings) view.show_timings = true;
 }

@@ -1,8 +1,8 @@
 #pragma once
 /// @file view_options.h
 /// The command line's view options shared by `render` and `sheet`: HUD and legend switches,
-/// overlay scales, text size, camera (`--view`, `--follow`, `--zoom`), `--highlight`, and the
-/// HUD's solver settings and step timings.
+/// overlay scales, text size, camera (`--view`, `--follow`, `--zoom`), `--highlight`, island
+/// colours, feature ids, and the HUD's solver settings and step timings.
 
 #include <optional>
 #include <string>
@@ -28,12 +28,16 @@ struct ViewArguments {
   std::optional<std::string> follow;      ///< --follow BODY (name or creation index)
   std::optional<float> zoom;              ///< --zoom K
   std::optional<std::string> highlight;   ///< --highlight BODY (name or creation index)
+  bool islands = false;                   ///< --islands: island colours
+  bool feature_ids = false;               ///< --feature-ids: contact feature ids
+  bool timeline = false;                  ///< --timeline: the run's timeline under each frame
   bool settings = false;                  ///< --hud-settings: solver settings in the HUD
   bool timings = false;                   ///< --hud-timings: per-stage step times in the HUD
 };
 
-/// Adds the view options to `command`, storing into `arguments` (which must outlive parsing).
-void add_view_options(CLI::App& command, ViewArguments& arguments);
+/// Adds the view options to `command`, storing into `arguments` (which must outlive parsing);
+/// `--timeline` only when `sequence` (a frame sequence has a strip under each frame).
+void add_view_options(CLI::App& command, ViewArguments& arguments, bool sequence);
 
 /// Applies `arguments` to `scene.view` (camera, switches, scales). Throws `UsageError` naming
 /// the option for a value out of range, a malformed `--view`, an unknown body name, or

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace impulse2d::render {
 
@@ -48,7 +49,7 @@ bool draw_clamped_arrow(PrimitiveRenderer& renderer, vec2 from, vec2 to, Color c
 void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugDrawOptions& options,
                    const ContactOverlayStyle& style, int scale) {
   const std::uint32_t flags = options.flags & contact_overlay_flags;
-  if (flags == 0) return;
+  if (flags == 0 && !style.feature_ids) return;
   const DebugPalette& palette = options.palette;
   const float s = static_cast<float>(std::max(scale, 1));
   const float metre_per_pixel = 1.0f / renderer.camera().pixels_per_metre();
@@ -86,6 +87,11 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
         const vec2 start = point.point + tangent * offset;
         draw_clamped_arrow(renderer, start, start + normal * (point.normal_impulse * options.impulse_scale),
                            faded(palette.normal_impulse, opacity), max_arrow);
+      }
+      if (style.feature_ids) {
+        char text[16];
+        std::snprintf(text, sizeof(text), "%X", static_cast<unsigned>(point.feature_id));
+        renderer.draw_text(point.point + tangent * (2.0f * offset), text, faded(palette.label, opacity));
       }
       if ((flags & draw_friction_impulses) && point.tangent_impulse != 0.0f) {
         draw_clamped_arrow(renderer, point.point,

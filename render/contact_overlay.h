@@ -30,6 +30,8 @@ struct ContactOverlayStyle {
   /// Opacity multiplier of the marks of a contact whose dynamic bodies all sleep or touch a
   /// sleeping body (Box2D's dimmed sleeping contacts), 0..1.
   float sleeping_opacity = 0.35f;
+  /// Also write each point's feature id (hexadecimal, as `ContactPoint::feature_id`) beside it.
+  bool feature_ids = false;
 };
 
 /// The contact flags (`draw_contact_points`, `draw_contact_normals`, `draw_normal_impulses`,

@@ -74,6 +74,7 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   DebugDrawOptions world_options = draw_options;  // what the renderer draws itself is off
   world_options.flags &= ~(contact_overlay_flags | draw_body_ids);
   world.draw(*primitives_, world_options);
+  if (options.islands) draw_islands(*primitives_, world, scale);
   draw_contacts(*primitives_, world, draw_options, options.contacts, scale);
   if (draw_options.flags & draw_body_ids) draw_body_labels(*primitives_, world, draw_options, options.body_labels);
   if (options.extra_overlays) options.extra_overlays(*primitives_, draw_options);

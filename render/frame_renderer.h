@@ -18,6 +18,7 @@
 #include "render/contact_overlay.h"
 #include "render/frame.h"
 #include "render/hud.h"
+#include "render/island_overlay.h"
 #include "render/palette.h"
 #include "render/primitive_renderer.h"
 
@@ -52,6 +53,8 @@ struct FrameOptions {
   ContactOverlayStyle contacts;
   /// Names for the `draw_body_ids` overlay, by slot; empty (or an empty name) shows the slot index.
   BodyLabeler body_labels;
+  /// Island colours (`draw_islands`): bodies joined by contacts share a colour.
+  bool islands = false;
   /// Slot of a body to frame in `highlight_color`; nothing for none.
   std::optional<std::uint32_t> highlight;
   /// Motion trails to draw over the overlays (not owned; nullptr for none).
@@ -89,7 +92,7 @@ class FrameRenderer {
   std::string fingerprint() const;
 
   /// Draws `world` (shapes and body overlays via `World::draw`; contacts with
-  /// `draw_contacts`; body labels with `draw_body_labels`), then `extra_overlays`, the
+  /// `draw_contacts`; body labels with `draw_body_labels`; islands with `draw_islands`), then `extra_overlays`, the
   /// highlight, trails, HUD and legend, into `frame`. The camera must have this renderer's size (else `RenderError`).
   void render(const World& world, const Camera& camera, const FrameOptions& options,
               const HudInfo& hud, Frame& frame);

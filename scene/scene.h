@@ -64,6 +64,11 @@ struct SceneView {
   float max_arrow_pixels = 120.0f;  ///< contact arrows are cut at this length, pixels at scale 1
   int highlight_body = -1;  ///< creation index of the body framed in every frame; -1 for none
   bool show_settings = false;  ///< the solver settings as HUD lines
+  bool show_islands = false;      ///< island colours: bodies joined by contacts share a colour
+  bool show_feature_ids = false;  ///< each contact point's feature id
+  /// A strip under each frame of a sequence: energy, contacts and deepest penetration over the
+  /// whole run, the frame's step marked (the run is simulated once ahead to draw it).
+  bool show_timeline = false;
   /// Per-stage step timings as a HUD line. Wall-clock: frames differ run to run, so never in
   /// goldens.
   bool show_timings = false;

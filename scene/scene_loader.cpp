@@ -373,7 +373,7 @@ CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
 /// The `view` object: HUD and legend switches, overlay scales, text size, highlighted body.
 void read_view(const JsonCursor& node, const BodyNames& names, std::size_t created, SceneView& view) {
   node.allow_only({"hud", "legend", "arrow_scale", "penetration_scale", "text_scale", "max_arrow_pixels",
-                   "highlight", "settings"});
+                   "highlight", "settings", "islands", "feature_ids", "timeline"});
   if (auto field = node.optional_field("hud")) view.show_hud = field->boolean();
   if (auto field = node.optional_field("legend")) view.show_legend = field->boolean();
   if (auto field = node.optional_field("arrow_scale")) {
@@ -396,6 +396,9 @@ void read_view(const JsonCursor& node, const BodyNames& names, std::size_t creat
     }
   }
   if (auto field = node.optional_field("settings")) view.show_settings = field->boolean();
+  if (auto field = node.optional_field("islands")) view.show_islands = field->boolean();
+  if (auto field = node.optional_field("feature_ids")) view.show_feature_ids = field->boolean();
+  if (auto field = node.optional_field("timeline")) view.show_timeline = field->boolean();
 }
 
 /// The `character` object: a platformer character played from button events.

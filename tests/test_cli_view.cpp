@@ -186,3 +186,26 @@ TEST_F(CliViewTest, SheetTakesTheViewOptions) {
   ASSERT_EQ(bare.status, 0) << bare.err;
   EXPECT_TRUE(read_file(dir_ / "a.png") != read_file(dir_ / "b.png"));
 }
+
+TEST_F(CliViewTest, IslandsFeatureIdsAndTimeline) {
+  const std::string plain = frame("--no-hud --no-legend");
+  EXPECT_NE(frame("--no-hud --no-legend --islands"), plain);
+  EXPECT_NE(frame("--no-hud --no-legend --feature-ids"), plain);
+  // The timeline adds a strip under the frame: the PNG is 64 rows taller at 320x240.
+  const Result result = run("render named.json --size 320x240 --frames 10:30:10 --out t --timeline");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const std::string png = read_file(dir_ / "t" / "named_00030.png");
+  ASSERT_GT(png.size(), 24u);
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned>(static_cast<unsigned char>(png[i])); };
+  EXPECT_EQ((byte(16) << 24) | (byte(17) << 16) | (byte(18) << 8) | byte(19), 320u);  // IHDR width
+  EXPECT_EQ((byte(20) << 24) | (byte(21) << 16) | (byte(22) << 8) | byte(23), 304u);  // IHDR height
+  // Each frame marks its own step.
+  EXPECT_TRUE(read_file(dir_ / "t" / "named_00010.png") != read_file(dir_ / "t" / "named_00020.png"));
+  // The sheet has no --timeline (a strip per tile would repeat the same run).
+  EXPECT_EQ(run("sheet named.json --timeline").status, 2);
+  // The same switches from the scene file.
+  std::string text = named_scene;
+  text.insert(text.rfind('}'), R"(, "view": {"hud": false, "legend": false, "islands": true, "feature_ids": true})");
+  std::ofstream(dir_ / "islands.json") << text;
+  EXPECT_EQ(frame("", "islands.json"), frame("--no-hud --no-legend --islands --feature-ids"));
+}

@@ -7,9 +7,13 @@
 #include "render/frame_scale.h"
 #include "render/hud.h"
 #include "render/hud_layout.h"
+#include "render/island_overlay.h"
 #include "tests/test_render_support.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
 
 #include <string>
 #include <vector>
@@ -197,4 +201,44 @@ TEST(RenderOverlays, ContactMarksDrawNormalsBesideImpulsesAndRestingPenetration)
   }
   ASSERT_GT(normal_pixels, 20);
   EXPECT_GT(still_visible, normal_pixels * 8 / 10);
+}
+
+TEST(RenderOverlays, IslandsJoinDynamicBodiesThroughContactsOnly) {
+  const World world = support::make_overlay_scene(60);
+  const std::vector<int> island = island_of_slots(world);
+  ASSERT_EQ(island.size(), world.body_slots().size());
+  int joined = 0;
+  for (const Contact& contact : world.contacts()) {
+    const Body& a = world.body_slots()[contact.body_a.index];
+    const Body& b = world.body_slots()[contact.body_b.index];
+    if (a.type == BodyType::Dynamic && b.type == BodyType::Dynamic && contact.enabled) {
+      EXPECT_EQ(island[contact.body_a.index], island[contact.body_b.index]);
+      ++joined;
+    }
+  }
+  EXPECT_GT(joined, 0) << "the overlay scene's stack has dynamic-dynamic contacts";
+  for (std::uint32_t slot = 0; slot < island.size(); ++slot) {
+    if (world.body_slots()[slot].type != BodyType::Dynamic) EXPECT_EQ(island[slot], -1);
+  }
+  EXPECT_EQ(*std::max_element(island.begin(), island.end()) + 1,
+            static_cast<int>(std::set<int>(island.begin(), island.end()).size()) - 1)
+      << "islands are numbered 0, 1, ... without gaps";
+}
+
+TEST(RenderOverlays, IslandsAndFeatureIdsDrawOnlyWhenAsked) {
+  const World world = support::make_overlay_scene(60);
+  FrameRenderer renderer(320, 240);
+  const Camera camera = Camera::fit(world_bounds(world), 320, 240, 8.0f);
+  FrameOptions options;
+  options.show_hud = false;
+  options.show_legend = false;
+  const Frame plain = renderer.render(world, camera, options, HudInfo{});
+  options.islands = true;
+  const Frame islands = renderer.render(world, camera, options, HudInfo{});
+  options.islands = false;
+  options.contacts.feature_ids = true;
+  const Frame ids = renderer.render(world, camera, options, HudInfo{});
+  EXPECT_NE(plain.hash(), islands.hash());
+  EXPECT_NE(plain.hash(), ids.hash());
+  EXPECT_NE(islands.hash(), ids.hash());
 }
