@@ -12,10 +12,8 @@ namespace impulse2d::render {
 
 namespace {
 
-// `style` for this frame size and driver: marks scaled by `scale`, and no point sprites where
-// they crash the driver (`point_sprites_safe`).
-PrimitiveStyle frame_style(PrimitiveStyle style, int scale, const std::string& gl_renderer) {
-  if (!point_sprites_safe(gl_renderer)) style.max_point_sprite = 0.0f;
+// `style` with its marks scaled by `scale`.
+PrimitiveStyle scaled_style(PrimitiveStyle style, int scale) {
   const float s = static_cast<float>(scale);
   style.line_width *= s;
   style.arrow_head_length *= s;
@@ -33,8 +31,9 @@ FrameRenderer::FrameRenderer(std::unique_ptr<OffscreenContext> context, const Pr
     : context_(std::move(context)) {
   if (!context_) throw RenderError("FrameRenderer: no offscreen context given");
   context_->make_current();
+  check_driver(context_->renderer());
   primitives_ = std::make_unique<PrimitiveRenderer>(
-      frame_style(style, frame_scale(context_->width(), context_->height()), context_->renderer()));
+      scaled_style(style, frame_scale(context_->width(), context_->height())));
 }
 
 FrameRenderer::~FrameRenderer() {

@@ -72,8 +72,8 @@ struct FrameOptions {
 class FrameRenderer {
  public:
   /// A renderer with its own OSMesa context of width x height pixels. Line widths and arrow
-  /// heads of `style` are multiplied by `frame_scale(width, height)`; point sprites are off
-  /// where the driver cannot draw them (`point_sprites_safe`). Throws `RenderError`
+  /// heads of `style` are multiplied by `frame_scale(width, height)`. Throws `RenderError`
+  /// naming the cause on a driver it cannot run on (`check_driver`), and
   /// when the context cannot be created (naming driver and GL version) or the size is bad.
   FrameRenderer(int width, int height, const PrimitiveStyle& style = PrimitiveStyle{});
   /// A renderer drawing into `context` (any `OffscreenContext` backend), with `style` scaled

@@ -52,9 +52,10 @@ class CliViewTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Result run(const std::string& arguments) const {
-    const std::string command = "cd '" + dir_.string() + "' && '" IMPULSE2D_CLI "' " + arguments +
-                                " > stdout.txt 2> stderr.txt";
+  /// Runs `impulse2d <arguments>` in the test directory; `environment` is prefixed (VAR=x).
+  Result run(const std::string& arguments, const std::string& environment = "") const {
+    const std::string command = "cd '" + dir_.string() + "' && " + environment + " '" IMPULSE2D_CLI "' " +
+                                arguments + " > stdout.txt 2> stderr.txt";
     Result result;
     const int status = std::system(command.c_str());
     result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -208,4 +209,12 @@ TEST_F(CliViewTest, IslandsFeatureIdsAndTimeline) {
   text.insert(text.rfind('}'), R"(, "view": {"hud": false, "legend": false, "islands": true, "feature_ids": true})");
   std::ofstream(dir_ / "islands.json") << text;
   EXPECT_EQ(frame("", "islands.json"), frame("--no-hud --no-legend --islands --feature-ids"));
+}
+
+TEST_F(CliViewTest, NativeVectorWidth128IsAClearErrorNotAnAbort) {
+  const Result result = run("render named.json --size 320x240 --frames 30:30 --out w", "LP_NATIVE_VECTOR_WIDTH=128");
+  EXPECT_EQ(result.status, 1) << result.err;
+  EXPECT_NE(result.err.find("impulse2d: error: "), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("LP_NATIVE_VECTOR_WIDTH=128 is set"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(dir_ / "w" / "named_00030.png"));
 }

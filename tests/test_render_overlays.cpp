@@ -218,7 +218,9 @@ TEST(RenderOverlays, IslandsJoinDynamicBodiesThroughContactsOnly) {
   }
   EXPECT_GT(joined, 0) << "the overlay scene's stack has dynamic-dynamic contacts";
   for (std::uint32_t slot = 0; slot < island.size(); ++slot) {
-    if (world.body_slots()[slot].type != BodyType::Dynamic) EXPECT_EQ(island[slot], -1);
+    if (world.body_slots()[slot].type != BodyType::Dynamic) {
+      EXPECT_EQ(island[slot], -1);
+    }
   }
   EXPECT_EQ(*std::max_element(island.begin(), island.end()) + 1,
             static_cast<int>(std::set<int>(island.begin(), island.end()).size()) - 1)
