@@ -68,15 +68,18 @@ Aabb view_bounds(const std::string& text) {
 
 void add_view_options(CLI::App& command, ViewArguments& arguments, bool sequence) {
   if (sequence) {
+    CLI::Option* hud = command.add_flag_callback("--hud", [&arguments] { arguments.hud = true; },
+                                                 "draw the HUD (scene, frame, time, counts; default on)");
+    CLI::Option* no_hud = command.add_flag_callback("--no-hud", [&arguments] { arguments.hud = false; },
+                                                    "leave the HUD out");
+    hud->excludes(no_hud);
+    command.add_flag("--hud-settings", arguments.settings, "add the solver settings to the HUD");
+    command.add_flag("--hud-timings", arguments.timings,
+                     "add the last step's per-stage times to the HUD (wall-clock: frames differ run to run)");
     command.add_flag("--timeline", arguments.timeline,
                      "a strip under each frame: energy, contacts and deepest penetration over the "
                      "whole run, the frame's step marked");
   }
-  CLI::Option* hud = command.add_flag_callback("--hud", [&arguments] { arguments.hud = true; },
-                                               "draw the HUD (scene, frame, time, counts; default on)");
-  CLI::Option* no_hud = command.add_flag_callback("--no-hud", [&arguments] { arguments.hud = false; },
-                                                  "leave the HUD out");
-  hud->excludes(no_hud);
   CLI::Option* legend = command.add_flag_callback("--legend", [&arguments] { arguments.legend = true; },
                                                   "draw the overlay legend (default on)");
   CLI::Option* no_legend = command.add_flag_callback(
@@ -98,9 +101,6 @@ void add_view_options(CLI::App& command, ViewArguments& arguments, bool sequence
   command.add_flag("--islands", arguments.islands,
                    "island colours: a dot per body and a line per contact, one colour per island");
   command.add_flag("--feature-ids", arguments.feature_ids, "write each contact point's feature id (hex)");
-  command.add_flag("--hud-settings", arguments.settings, "add the solver settings to the HUD");
-  command.add_flag("--hud-timings", arguments.timings,
-                   "add the last step's per-stage times to the HUD (wall-clock: frames differ run to run)");
 }
 
 void apply_view_arguments(const ViewArguments& arguments, Scene& scene) {

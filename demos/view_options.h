@@ -36,7 +36,8 @@ struct ViewArguments {
 };
 
 /// Adds the view options to `command`, storing into `arguments` (which must outlive parsing);
-/// `--timeline` only when `sequence` (a frame sequence has a strip under each frame).
+/// the HUD options and `--timeline` only when `sequence` (a contact sheet has neither: its
+/// tiles are labelled by the sheet).
 void add_view_options(CLI::App& command, ViewArguments& arguments, bool sequence);
 
 /// Applies `arguments` to `scene.view` (camera, switches, scales). Throws `UsageError` naming

@@ -202,8 +202,10 @@ TEST_F(CliViewTest, IslandsFeatureIdsAndTimeline) {
   EXPECT_EQ((byte(20) << 24) | (byte(21) << 16) | (byte(22) << 8) | byte(23), 304u);  // IHDR height
   // Each frame marks its own step.
   EXPECT_TRUE(read_file(dir_ / "t" / "named_00010.png") != read_file(dir_ / "t" / "named_00020.png"));
-  // The sheet has no --timeline (a strip per tile would repeat the same run).
+  // The sheet has no --timeline (a strip per tile would repeat the same run) and no HUD.
   EXPECT_EQ(run("sheet named.json --timeline").status, 2);
+  EXPECT_EQ(run("sheet named.json --no-hud").status, 2);
+  EXPECT_EQ(run("sheet named.json --hud-settings").status, 2);
   // The same switches from the scene file.
   std::string text = named_scene;
   text.insert(text.rfind('}'), R"(, "view": {"hud": false, "legend": false, "islands": true, "feature_ids": true})");
