@@ -95,6 +95,9 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
       legend = legend_entries(draw_options, camera, trails_on, palette.trail,
                               options.contacts.max_arrow_pixels * static_cast<float>(scale),
                               options.contacts.min_penetration_pixels * static_cast<float>(scale));
+      if (options.islands) legend.push_back({island_color(0), "islands (one colour each)"});
+      if (options.contacts.feature_ids) legend.push_back({palette.debug.label, "contact feature ids (hex)"});
+      if (options.highlight) legend.push_back({highlight_color, "highlighted body"});
     }
     draw_hud(*primitives_, lines, legend, palette, text_scale);
   }
