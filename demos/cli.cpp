@@ -132,6 +132,7 @@ int run_cli(int argc, char** argv) {
   render_command->add_flag("--clean", render.clean,
                            "replace frames of the same scene already in the output directory "
                            "(without it they are an error); done only when the run succeeds");
+  add_view_options(*render_command, render.view, true);
 
   TraceArguments trace;
   CLI::App* trace_command = app.add_subcommand(
@@ -163,6 +164,7 @@ int run_cli(int argc, char** argv) {
                             "3,7,12 (as the ids overlay shows them)");
   sheet_command->add_option("--out,-o", sheet.out,
                             "PNG file (default: out/contact_sheet_<scene>.png)");
+  add_view_options(*sheet_command, sheet.view, false);
 
   std::string diff_expected, diff_actual, diff_out;
   CLI::App* diff_command = app.add_subcommand(

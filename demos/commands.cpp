@@ -123,7 +123,8 @@ void list_scenes(std::ostream& out) {
 }
 
 void render_scene(const RenderArguments& arguments, std::ostream& out) {
-  const ResolvedScene resolved = resolve(arguments.scene);
+  ResolvedScene resolved = resolve(arguments.scene);
+  apply_view_arguments(arguments.view, resolved.scene);
   const FramePlan plan = plan_frames(
       arguments.frames ? *arguments.frames : resolved.scene.view.frames, resolved.steps);
   FrameSequenceOptions options;
@@ -166,6 +167,7 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
 
   const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
   check_trails(options.trails, *run, "--trails");
+  check_view_bodies(arguments.view, *run);
   std::unique_ptr<Progress> progress;
   if (!arguments.quiet) {
     progress = std::make_unique<Progress>(
@@ -219,7 +221,8 @@ void trace_scene(const TraceArguments& arguments, std::ostream& out) {
 void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
   SceneArguments scene_arguments = arguments.scene;
   if (scene_arguments.scene.empty()) scene_arguments.scene = default_scene().name;
-  const ResolvedScene resolved = resolve(scene_arguments);
+  ResolvedScene resolved = resolve(scene_arguments);
+  apply_view_arguments(arguments.view, resolved.scene);
   if (arguments.count < 1 || arguments.count > 256) throw UsageError("--count must be 1..256");
   const FramePlan plan = arguments.frames ? plan_frames(*arguments.frames, resolved.steps)
                                           : spread_frames(arguments.count, resolved.steps);
@@ -244,6 +247,7 @@ void sheet_scene(const SheetArguments& arguments, std::ostream& out) {
 
   const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
   check_trails(options.trails, *run, "--trails");
+  check_view_bodies(arguments.view, *run);
   const auto [width, height] = write_contact_sheet(*run, plan, options, output);
   warn_divergences(*run);
   if (arguments.quiet) return;

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "demos/view_options.h"
+
 namespace impulse2d::demos {
 
 /// Arguments shared by every command that runs a scene.
@@ -35,6 +37,7 @@ struct RenderArguments {
   std::optional<std::string> trails;    ///< `dynamic` or body indices with motion trails
   bool clean = false;                   ///< replace frames of the same scene already in `out`
   bool quiet = false;                   ///< no progress and no summary line
+  ViewArguments view;                   ///< HUD, legend, scales, camera, highlight
 };
 
 /// `impulse2d trace`.
@@ -56,6 +59,7 @@ struct SheetArguments {
   std::optional<std::string> out;       ///< PNG path; out/contact_sheet_<scene>.png when absent
   std::optional<std::string> trails;    ///< `dynamic` or body indices with motion trails
   bool quiet = false;                   ///< no summary line
+  ViewArguments view;                   ///< legend, scales, camera, highlight
 };
 
 /// Prints every built-in scene with its description, parameters and model.

@@ -15,6 +15,7 @@
 #include "demos/output_guard.h"
 #include "demos/run_limits.h"
 #include "demos/scene_camera.h"
+#include "demos/view_frame_options.h"
 #include "render/frame_renderer.h"
 #include "render/motion_trails.h"
 #include "render/png_encoder.h"
@@ -157,11 +158,8 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
 
   render::FrameRenderer tiles(options.tile_width, options.tile_height);
   const render::Camera camera = centred_camera(run, plan, options);
-  render::FrameOptions frame_options;
-  frame_options.draw = options.draw;
-  frame_options.theme = options.theme;
+  render::FrameOptions frame_options = view_frame_options(run, options.draw, options.theme);
   frame_options.show_hud = false;  // the label strip says it
-  frame_options.extra_overlays = run.script_overlays();
   const render::ThemePalette palette = render::theme_palette(options.theme);
   constexpr std::size_t trail_points = 240;  // 4 s of path at 60 steps per second
   render::MotionTrails trails(trail_points);
@@ -178,9 +176,10 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
       run.step();
       if (!options.trails.empty()) record_trails(options.trails, run.world(), trails);
     }
-    frame_options.show_legend = frames.empty();  // one legend, on the first tile
-    frames.push_back(
-        tiles.render(run.world(), frame_camera(camera, run), frame_options, render::HudInfo{}));
+    frame_options.show_legend = frames.empty() && run.scene().view.show_legend;  // on the first tile
+    render::HudInfo hud;
+    update_view_frame(run, frame_options, hud);
+    frames.push_back(tiles.render(run.world(), frame_camera(camera, run), frame_options, hud));
     labels.push_back(step_label(step, run.world().time()));
   }
 

@@ -14,7 +14,9 @@
 #include "demos/output_staging.h"
 #include "scene/usage_error.h"
 #include "demos/scene_camera.h"
+#include "demos/timeline_frames.h"
 #include "demos/video_encoder.h"
+#include "demos/view_frame_options.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
 #include "render/motion_trails.h"
@@ -93,13 +95,20 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     writer = std::make_unique<render::AsyncFrameWriter>(writer_options);
   }
 
+  std::unique_ptr<TimelineFrames> timeline;
+  if (run.scene().view.show_timeline && !plan.frames.empty()) {
+    timeline = std::make_unique<TimelineFrames>(run, plan.frames.back(), options.width, options.height,
+                                                options.theme);
+  }
   std::unique_ptr<VideoEncoder> video;
   if (options.video) {
     guard.will_write_file(*options.video);
     const double rate = options.frames_per_second
                             ? *options.frames_per_second
                             : real_time_rate(plan, run.world().settings().time_step);
-    video = std::make_unique<VideoEncoder>(*options.video, options.width, options.height, rate);
+    video = std::make_unique<VideoEncoder>(
+        *options.video, options.width,
+        options.height + (timeline ? timeline->strip_height() : 0), rate);
   }
 
   render::FrameRenderer renderer(options.width, options.height);
@@ -108,10 +117,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
       run.scene().source == "built-in" ? scene_name : scene_name + " (" + run.scene().source + ")";
   const render::Camera camera =
       scene_camera(run.scene().view.camera, run.world(), options.width, options.height);
-  render::FrameOptions frame_options;
-  frame_options.draw = options.draw;
-  frame_options.theme = options.theme;
-  frame_options.extra_overlays = run.script_overlays();
+  render::FrameOptions frame_options = view_frame_options(run, options.draw, options.theme);
   render::HudInfo hud;
   hud.scene_name = scene_title(run.scene());
   constexpr std::size_t trail_points = 240;  // 4 s of path at 60 steps per second
@@ -130,8 +136,10 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     }
     check_interrupt();
     hud.frame = frame_step;
+    update_view_frame(run, frame_options, hud);
     render::Frame frame = writer ? writer->take_spare_frame() : render::Frame{};
     renderer.render(run.world(), frame_camera(camera, run), frame_options, hud, frame);
+    if (timeline) timeline->append(frame, frame_step);
     if (video) video->add(frame);
     const std::int64_t number = result.frame_count;
     if (writer) {

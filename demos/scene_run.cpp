@@ -129,6 +129,23 @@ std::string describe_divergence(const Scene& scene, const Divergence& divergence
          " (its state became non-finite; the world restored its previous state and stopped it)";
 }
 
+std::optional<std::uint32_t> SceneRun::slot_of(int creation_index) const {
+  if (creation_index < 0 || static_cast<std::size_t>(creation_index) >= created_.size()) return std::nullopt;
+  const BodyId id = created_[static_cast<std::size_t>(creation_index)];
+  if (!world_.is_valid(id)) return std::nullopt;
+  return id.index;
+}
+
+std::function<std::string(std::uint32_t slot)> SceneRun::body_labels() const {
+  return [this](std::uint32_t slot) {
+    for (const auto& [index, name] : scene_.body_names) {
+      const std::optional<std::uint32_t> found = slot_of(index);
+      if (found && *found == slot) return name;
+    }
+    return std::string();
+  };
+}
+
 std::optional<vec2> SceneRun::followed_position() const {
   const CameraSpec& camera = scene_.view.camera;
   if (camera.mode != CameraSpec::Mode::Follow) return std::nullopt;

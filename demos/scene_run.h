@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/world.h"
@@ -52,6 +53,14 @@ class SceneRun {
   const std::vector<Divergence>& divergences() const { return divergences_; }
   /// Creation indices that can exist in this run: the built bodies plus the spawn events.
   int bodies_in_run() const { return bodies_in_run_; }
+
+  /// The world slot of the body of creation index `creation_index` (the scene's bodies in
+  /// order, then spawned ones), or nothing while it does not exist (not spawned yet, removed).
+  std::optional<std::uint32_t> slot_of(int creation_index) const;
+
+  /// Names for the body-ids overlay, by world slot: the scene file's name of the body in that
+  /// slot, or empty (the overlay then shows the slot index). Valid while this run lives.
+  std::function<std::string(std::uint32_t slot)> body_labels() const;
 
   /// Where a following camera looks now: the followed body's position, or nothing when the
   /// scene's camera does not follow or the body does not exist (yet).

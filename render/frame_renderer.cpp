@@ -4,9 +4,25 @@
 #include "core/world.h"
 #include "render/motion_trails.h"
 #include "render/offscreen_context.h"
+#include "render/driver_quirks.h"
+#include "render/frame_scale.h"
 #include "render/render_error.h"
 
 namespace impulse2d::render {
+
+namespace {
+
+// `style` with its marks scaled by `scale`.
+PrimitiveStyle scaled_style(PrimitiveStyle style, int scale) {
+  const float s = static_cast<float>(scale);
+  style.line_width *= s;
+  style.arrow_head_length *= s;
+  style.arrow_head_width *= s;
+  style.label_scale *= scale;
+  return style;
+}
+
+}  // namespace
 
 FrameRenderer::FrameRenderer(int width, int height, const PrimitiveStyle& style)
     : FrameRenderer(create_offscreen_context(width, height), style) {}
@@ -15,7 +31,9 @@ FrameRenderer::FrameRenderer(std::unique_ptr<OffscreenContext> context, const Pr
     : context_(std::move(context)) {
   if (!context_) throw RenderError("FrameRenderer: no offscreen context given");
   context_->make_current();
-  primitives_ = std::make_unique<PrimitiveRenderer>(style);
+  check_driver(context_->renderer());
+  primitives_ = std::make_unique<PrimitiveRenderer>(
+      scaled_style(style, frame_scale(context_->width(), context_->height())));
 }
 
 FrameRenderer::~FrameRenderer() {
@@ -47,11 +65,19 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   const ThemePalette palette = theme_palette(options.theme);
   DebugDrawOptions draw_options = options.draw;
   draw_options.palette = palette.debug;
+  const int scale = frame_scale(width(), height());
+  const int text_scale = options.text_scale > 0 ? options.text_scale : scale;
 
   context_->make_current();
   primitives_->begin(camera);
-  world.draw(*primitives_, draw_options);
+  DebugDrawOptions world_options = draw_options;  // what the renderer draws itself is off
+  world_options.flags &= ~(contact_overlay_flags | draw_body_ids);
+  world.draw(*primitives_, world_options);
+  if (options.islands) draw_islands(*primitives_, world, scale);
+  draw_contacts(*primitives_, world, draw_options, options.contacts, scale);
+  if (draw_options.flags & draw_body_ids) draw_body_labels(*primitives_, world, draw_options, options.body_labels);
   if (options.extra_overlays) options.extra_overlays(*primitives_, draw_options);
+  if (options.highlight) draw_highlight(*primitives_, world, *options.highlight, scale);
   const bool trails_on = options.trails != nullptr && !options.trails->empty();
   if (trails_on) options.trails->draw(*primitives_, palette.trail);
   if (options.show_hud || options.show_legend) {
@@ -65,8 +91,15 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
       lines = hud_lines(hud, counts);
     }
     std::vector<LegendEntry> legend;
-    if (options.show_legend) legend = legend_entries(draw_options, camera, trails_on, palette.trail);
-    draw_hud(*primitives_, lines, legend, palette, options.text_scale);
+    if (options.show_legend) {
+      legend = legend_entries(draw_options, camera, trails_on, palette.trail,
+                              options.contacts.max_arrow_pixels * static_cast<float>(scale),
+                              options.contacts.min_penetration_pixels * static_cast<float>(scale));
+      if (options.islands) legend.push_back({island_color(0), "islands (one colour each)"});
+      if (options.contacts.feature_ids) legend.push_back({palette.debug.label, "contact feature ids (hex)"});
+      if (options.highlight) legend.push_back({highlight_color, "highlighted body"});
+    }
+    draw_hud(*primitives_, lines, legend, palette, text_scale);
   }
   primitives_->finish(palette.background);
   context_->read_pixels(frame);

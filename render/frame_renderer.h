@@ -13,14 +13,19 @@
 /// \endcode
 
 #include "core/debug_draw.h"
+#include "render/body_marks.h"
 #include "render/camera.h"
+#include "render/contact_overlay.h"
 #include "render/frame.h"
 #include "render/hud.h"
+#include "render/island_overlay.h"
 #include "render/palette.h"
 #include "render/primitive_renderer.h"
 
 #include <functional>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace impulse2d {
@@ -38,8 +43,20 @@ struct FrameOptions {
   DebugDrawOptions draw;
   Theme theme = Theme::Light;  ///< background, outlines and overlay colours
   bool show_hud = true;        ///< scene, frame, simulated time and counts, top-left
-  bool show_legend = true;     ///< colour key of the overlays that are on, top-right
-  int text_scale = 1;          ///< integer magnification of HUD and legend text (1 = 7 px caps)
+  /// Colour key of the overlays that are on: top-right, or another corner that leaves the HUD
+  /// readable (`layout_hud`).
+  bool show_legend = true;
+  /// Integer magnification of HUD, legend and label text (1 = 7 px capitals); 0 = the frame's
+  /// `frame_scale` (1 up to 959 px on the shorter side, 6 at 4000x3000).
+  int text_scale = 0;
+  /// Sizes of the contact marks: maximum arrow length, normal/impulse offset, penetration bars.
+  ContactOverlayStyle contacts;
+  /// Names for the `draw_body_ids` overlay, by slot; empty (or an empty name) shows the slot index.
+  BodyLabeler body_labels;
+  /// Island colours (`draw_islands`): bodies joined by contacts share a colour.
+  bool islands = false;
+  /// Slot of a body to frame in `highlight_color`; nothing for none.
+  std::optional<std::uint32_t> highlight;
   /// Motion trails to draw over the overlays (not owned; nullptr for none).
   const MotionTrails* trails = nullptr;
   /// Extra world-space drawing after the world's own overlays and before the trails, e.g. a
@@ -54,10 +71,13 @@ struct FrameOptions {
 /// count.
 class FrameRenderer {
  public:
-  /// A renderer with its own OSMesa context of width x height pixels. Throws `RenderError`
+  /// A renderer with its own OSMesa context of width x height pixels. Line widths and arrow
+  /// heads of `style` are multiplied by `frame_scale(width, height)`. Throws `RenderError`
+  /// naming the cause on a driver it cannot run on (`check_driver`), and
   /// when the context cannot be created (naming driver and GL version) or the size is bad.
   FrameRenderer(int width, int height, const PrimitiveStyle& style = PrimitiveStyle{});
-  /// A renderer drawing into `context` (any `OffscreenContext` backend).
+  /// A renderer drawing into `context` (any `OffscreenContext` backend), with `style` scaled
+  /// as above.
   explicit FrameRenderer(std::unique_ptr<OffscreenContext> context,
                          const PrimitiveStyle& style = PrimitiveStyle{});
   ~FrameRenderer();
@@ -71,8 +91,9 @@ class FrameRenderer {
   /// "GL_RENDERER | GL_VERSION" of the context, for golden-image sidecars.
   std::string fingerprint() const;
 
-  /// Draws `world` (via `World::draw`), then `extra_overlays`, trails, HUD and legend, into
-  /// `frame`. The camera must have this renderer's size (else `RenderError`).
+  /// Draws `world` (shapes and body overlays via `World::draw`; contacts with
+  /// `draw_contacts`; body labels with `draw_body_labels`; islands with `draw_islands`), then `extra_overlays`, the
+  /// highlight, trails, HUD and legend, into `frame`. The camera must have this renderer's size (else `RenderError`).
   void render(const World& world, const Camera& camera, const FrameOptions& options,
               const HudInfo& hud, Frame& frame);
   /// As above, returning a new frame.

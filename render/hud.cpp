@@ -2,6 +2,7 @@
 #include "render/hud.h"
 
 #include "render/easy_font.h"
+#include "render/hud_layout.h"
 #include "render/primitive_renderer.h"
 
 #include <algorithm>
@@ -11,8 +12,6 @@ namespace impulse2d::render {
 
 namespace {
 
-constexpr float kPanelPadding = 6.0f;   // font pixels around the text
-constexpr float kSwatchWidth = 14.0f;   // font pixels
 constexpr float kScaleBarPixels = 50.0f;
 
 std::string format(const char* pattern, double value) {
@@ -40,15 +39,18 @@ std::vector<std::string> hud_lines(const HudInfo& info, const HudCounts& counts)
     }
     lines.push_back(wall_clock);
   }
+  lines.insert(lines.end(), info.extra_lines.begin(), info.extra_lines.end());
   return lines;
 }
 
 std::vector<LegendEntry> legend_entries(const DebugDrawOptions& options, const Camera& camera,
-                                        bool trails_on, Color trail_color) {
+                                        bool trails_on, Color trail_color, float max_arrow_pixels,
+                                        float min_penetration_pixels) {
   const DebugPalette& p = options.palette;
   const float bar_metres = kScaleBarPixels / camera.pixels_per_metre();
   const auto on = [&](DebugDrawFlag flag) { return (options.flags & flag) != 0; };
   const std::string bar = std::to_string(static_cast<int>(kScaleBarPixels)) + " px = ";
+
   std::vector<LegendEntry> entries;
   if (on(draw_aabbs)) entries.push_back({p.aabb, "bounding boxes"});
   if (on(draw_contact_points)) entries.push_back({p.contact_point, "contact points"});
@@ -64,12 +66,16 @@ std::vector<LegendEntry> legend_entries(const DebugDrawOptions& options, const C
                                                format("%.3g N s)", bar_metres / options.impulse_scale)});
   }
   if (on(draw_penetration)) {
-    entries.push_back({p.penetration, options.penetration_scale == 1.0f
-                                          ? std::string("penetration (true length)")
-                                          : "penetration" + format(" (x%.3g)", options.penetration_scale)});
+    entries.push_back({p.penetration, (options.penetration_scale == 1.0f
+                                           ? std::string("penetration (true length")
+                                           : "penetration" + format(" (x%.3g", options.penetration_scale)) +
+                                          format(", >= %.0f px)", min_penetration_pixels)});
   }
   if (on(draw_velocities)) {
     entries.push_back({p.velocity, "velocities (" + bar + format("%.3g m/s)", bar_metres / options.velocity_scale)});
+  }
+  if (on(draw_contact_normals) || on(draw_normal_impulses) || on(draw_friction_impulses)) {
+    entries.push_back({p.label, format("contact arrows cut at %.0f px, marked //", max_arrow_pixels)});
   }
   if (on(draw_center_of_mass)) entries.push_back({p.center_of_mass, "centres of mass"});
   if (on(draw_sleeping)) entries.push_back({p.sleeping_fill, "sleeping bodies"});
@@ -81,32 +87,28 @@ std::vector<LegendEntry> legend_entries(const DebugDrawOptions& options, const C
 
 void draw_hud(PrimitiveRenderer& renderer, const std::vector<std::string>& lines,
               const std::vector<LegendEntry>& legend, const ThemePalette& palette, int text_scale) {
-  const float s = static_cast<float>(std::max(text_scale, 1));
-  if (!lines.empty()) {
-    float width = 0.0f;
-    for (const std::string& line : lines) width = std::max(width, text_width(line));
-    const float height = font_line_height * static_cast<float>(lines.size()) - (font_line_height - font_cap_height);
-    renderer.draw_screen_rect(vec2(0.0f), vec2(width + 2.0f * kPanelPadding, height + 2.0f * kPanelPadding) * s,
+  const HudLayout layout =
+      layout_hud(renderer.viewport_width(), lines, legend, text_scale);
+  const float s = static_cast<float>(layout.text_scale);
+  const float padding = hud_panel_padding * s;
+  if (!layout.hud.empty()) {
+    renderer.draw_screen_rect(vec2(layout.hud.left, layout.hud.top), vec2(layout.hud.width, layout.hud.height),
                               palette.hud_panel);
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-      renderer.draw_screen_text(vec2(kPanelPadding, kPanelPadding + font_line_height * static_cast<float>(i)) * s,
-                                lines[i], palette.hud_text, text_scale);
+    for (std::size_t i = 0; i < layout.hud_lines.size(); ++i) {
+      const vec2 at(layout.hud.left + padding, layout.hud.top + padding + font_line_height * s * static_cast<float>(i));
+      renderer.draw_screen_text(at, layout.hud_lines[i], palette.hud_text, layout.text_scale);
     }
   }
-  if (legend.empty()) return;
-  float width = 0.0f;
-  for (const LegendEntry& entry : legend) width = std::max(width, text_width(entry.label));
-  const float panel_width = (width + kSwatchWidth + 3.0f * kPanelPadding) * s;
-  const float height = font_line_height * static_cast<float>(legend.size()) - (font_line_height - font_cap_height);
-  const float left = static_cast<float>(renderer.viewport_width()) - panel_width;
-  renderer.draw_screen_rect(vec2(left, 0.0f), vec2(panel_width, (height + 2.0f * kPanelPadding) * s), palette.hud_panel);
+  if (layout.legend.empty()) return;
+  const ScreenRect& panel = layout.legend;
+  renderer.draw_screen_rect(vec2(panel.left, panel.top), vec2(panel.width, panel.height), palette.hud_panel);
   for (std::size_t i = 0; i < legend.size(); ++i) {
-    const float top = (kPanelPadding + font_line_height * static_cast<float>(i)) * s;
+    const float top = panel.top + padding + font_line_height * s * static_cast<float>(i);
     Color swatch = legend[i].color;
     swatch.a = std::max(swatch.a, 0.85f);  // keys of translucent overlays still read clearly
-    renderer.draw_screen_rect(vec2(left + kPanelPadding * s, top), vec2(kSwatchWidth, font_cap_height) * s, swatch);
-    renderer.draw_screen_text(vec2(left + (2.0f * kPanelPadding + kSwatchWidth) * s, top), legend[i].label,
-                              palette.hud_text, text_scale);
+    renderer.draw_screen_rect(vec2(panel.left + padding, top), vec2(legend_swatch_width, font_cap_height) * s, swatch);
+    renderer.draw_screen_text(vec2(panel.left + 2.0f * padding + legend_swatch_width * s, top), legend[i].label,
+                              palette.hud_text, layout.text_scale);
   }
 }
 

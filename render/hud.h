@@ -25,6 +25,8 @@ struct HudInfo {
   std::optional<double> step_milliseconds;
   /// Wall-clock frames per second. Shown only when set, for the same reason.
   std::optional<double> frames_per_second;
+  /// Further lines asked for (solver settings, per-stage step timings), shown after the others.
+  std::vector<std::string> extra_lines;
 };
 
 /// The simulation figures the HUD reports, read from a world.
@@ -46,12 +48,16 @@ std::vector<std::string> hud_lines(const HudInfo& info, const HudCounts& counts)
 
 /// One entry per overlay flag that is on in `options` (shapes have none), plus motion trails
 /// when `trails_on`, in flag order. Arrow scales are given as what 50 pixels stand for under
-/// `camera`.
+/// `camera`. With any contact arrow on, one more row says that contact arrows longer than
+/// `max_arrow_pixels` are cut there with a break mark; penetration says its magnification and
+/// the shortest bar drawn, `min_penetration_pixels` (both pixels, as drawn).
 std::vector<LegendEntry> legend_entries(const DebugDrawOptions& options, const Camera& camera,
-                                        bool trails_on, Color trail_color);
+                                        bool trails_on, Color trail_color, float max_arrow_pixels,
+                                        float min_penetration_pixels);
 
-/// Draws the HUD text (top-left) and, when `legend` is not empty, the legend (top-right),
-/// each on a translucent panel, at integer `text_scale`.
+/// Draws the HUD text (top-left, lines wrapped at spaces to the frame's width) and, when `legend` is not empty, the legend (where
+/// `layout_hud` puts it, never over the HUD), each on a translucent panel, at integer
+/// `text_scale`.
 void draw_hud(PrimitiveRenderer& renderer, const std::vector<std::string>& lines,
               const std::vector<LegendEntry>& legend, const ThemePalette& palette, int text_scale);
 

@@ -55,6 +55,8 @@ class PrimitiveRenderer final : public DebugDraw {
   int viewport_height() const { return camera_.height(); }
   /// The style in use.
   const PrimitiveStyle& style() const { return style_; }
+  /// The camera of the frame being batched (set by `begin`).
+  const Camera& camera() const { return camera_; }
 
   // DebugDraw, world coordinates (metres, y up).
   void draw_solid_polygon(const vec2* vertices, int count, Color fill, Color outline) override;

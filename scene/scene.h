@@ -39,10 +39,17 @@ struct CameraSpec {
   Mode mode = Mode::FitWorld;      ///< which of the fields below apply
   Aabb bounds;                     ///< FitBounds: world rectangle shown whole, metres
   vec2 center{0.0f, 0.0f};         ///< Centered (and Follow's start): image centre, metres
-  float pixels_per_metre = 40.0f;  ///< Centered, Follow: zoom
+  /// Centered, Follow: zoom, pixels per metre. For Follow, 0 means the zoom (and start) that
+  /// fits the world as built (the command line's `--follow` on a scene without a camera).
+  float pixels_per_metre = 40.0f;
+  float zoom = 1.0f;  ///< multiplies the zoom of any mode, about the view's centre (> 0)
   /// Follow: creation index (the scene's bodies in order); -1 for the script's body only.
   int follow_body = 0;
 };
+
+/// Overlay scales of a scene view before any scene or option changes them: as
+/// `DebugDrawOptions`, with penetration magnified 10x so resting overlaps of ~1 cm read.
+DebugDrawOptions default_view_draw();
 
 /// The defaults of a rendered run; the command line overrides each.
 struct SceneView {
@@ -50,7 +57,21 @@ struct SceneView {
   std::int64_t steps = 600;    ///< length of a run, steps
   std::string frames = "::2";  ///< which steps become frames (`FrameSelection` syntax)
   /// Overlays on by default (`flags`) and their arrow scales; the theme sets the palette.
-  DebugDrawOptions draw;
+  DebugDrawOptions draw = default_view_draw();
+  bool show_hud = true;     ///< the HUD text block (scene, frame, time, counts)
+  bool show_legend = true;  ///< the overlay legend
+  int text_scale = 0;       ///< HUD, legend and label text magnification; 0 = by frame size
+  float max_arrow_pixels = 120.0f;  ///< contact arrows are cut at this length, pixels at scale 1
+  int highlight_body = -1;  ///< creation index of the body framed in every frame; -1 for none
+  bool show_settings = false;  ///< the solver settings as HUD lines
+  bool show_islands = false;      ///< island colours: bodies joined by contacts share a colour
+  bool show_feature_ids = false;  ///< each contact point's feature id
+  /// A strip under each frame of a sequence: energy, contacts and deepest penetration over the
+  /// whole run, the frame's step marked (the run is simulated once ahead to draw it).
+  bool show_timeline = false;
+  /// Per-stage step timings as a HUD line. Wall-clock: frames differ run to run, so never in
+  /// goldens.
+  bool show_timings = false;
   std::string caption;  ///< shown in the HUD after the scene name (may be empty)
 };
 

@@ -334,8 +334,9 @@ int read_body_reference(const JsonCursor& node, const BodyNames& names) {
 }
 
 CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
-  node.allow_only({"bounds", "center", "pixels_per_metre", "follow"});
+  node.allow_only({"bounds", "center", "pixels_per_metre", "follow", "zoom"});
   CameraSpec camera;
+  if (auto zoom = node.optional_field("zoom")) camera.zoom = zoom->in_range(0.01f, 100.0f, "a zoom factor");
   const int ways = (node.has("bounds") ? 1 : 0) + (node.has("center") ? 1 : 0) +
                    (node.has("follow") ? 1 : 0);
   if (ways > 1) {
@@ -367,6 +368,37 @@ CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
     camera.pixels_per_metre = node.field("pixels_per_metre").positive();
   }
   return camera;
+}
+
+/// The `view` object: HUD and legend switches, overlay scales, text size, highlighted body.
+void read_view(const JsonCursor& node, const BodyNames& names, std::size_t created, SceneView& view) {
+  node.allow_only({"hud", "legend", "arrow_scale", "penetration_scale", "text_scale", "max_arrow_pixels",
+                   "highlight", "settings", "islands", "feature_ids", "timeline"});
+  if (auto field = node.optional_field("hud")) view.show_hud = field->boolean();
+  if (auto field = node.optional_field("legend")) view.show_legend = field->boolean();
+  if (auto field = node.optional_field("arrow_scale")) {
+    const float scale = field->in_range(0.001f, 1000.0f, "a factor on the impulse and velocity arrows");
+    view.draw.impulse_scale *= scale;
+    view.draw.velocity_scale *= scale;
+  }
+  if (auto field = node.optional_field("penetration_scale")) {
+    view.draw.penetration_scale = field->in_range(1.0f, 1000.0f, "a magnification of overlaps");
+  }
+  if (auto field = node.optional_field("text_scale")) view.text_scale = static_cast<int>(field->integer(1, 16));
+  if (auto field = node.optional_field("max_arrow_pixels")) {
+    view.max_arrow_pixels = field->in_range(8.0f, 4096.0f, "pixels");
+  }
+  if (auto field = node.optional_field("highlight")) {
+    view.highlight_body = read_body_reference(*field, names);
+    if (static_cast<std::size_t>(view.highlight_body) >= created) {
+      field->fail("body " + std::to_string(view.highlight_body) + " does not exist (the scene creates " +
+                  std::to_string(created) + " bodies)");
+    }
+  }
+  if (auto field = node.optional_field("settings")) view.show_settings = field->boolean();
+  if (auto field = node.optional_field("islands")) view.show_islands = field->boolean();
+  if (auto field = node.optional_field("feature_ids")) view.show_feature_ids = field->boolean();
+  if (auto field = node.optional_field("timeline")) view.show_timeline = field->boolean();
 }
 
 /// The `character` object: a platformer character played from button events.
@@ -410,7 +442,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   // "golden" (the file's golden frames) belongs to `impulse2d golden`, which reads it itself
   // (tools/golden_scenes/golden_block.h); a run ignores it.
   root.allow_only({"name", "description", "caption", "settings", "model", "materials", "bodies",
-                   "events", "camera", "run", "overlays", "character", "golden"});
+                   "events", "camera", "run", "overlays", "view", "character", "golden"});
 
   Scene scene;
   scene.source = file;
@@ -555,6 +587,9 @@ Scene parse_scene(const std::string& text, const std::string& file) {
                                   " does not exist (the scene creates " + std::to_string(created) +
                                   " bodies, indices 0.." + std::to_string(created) + " - 1)");
     }
+  }
+  if (auto field = root.optional_field("view")) {
+    read_view(*field, names, bodies.size() + spawned.size(), scene.view);
   }
   if (auto field = root.optional_field("character")) {
     const CharacterDef character = read_character(*field);

@@ -15,6 +15,12 @@ impulse2d_add_test(test_cli
   LIBS impulse2d_demos impulse2d_golden)
 target_compile_definitions(test_cli PRIVATE IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>")
 add_dependencies(test_cli impulse2d)
+# The view options (HUD, legend, scales, camera, highlight) of `render` and `sheet`.
+impulse2d_add_test(test_cli_view
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_view.cpp
+  LIBS impulse2d_demos)
+target_compile_definitions(test_cli_view PRIVATE IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>")
+add_dependencies(test_cli_view impulse2d)
 # The bad-input catalogue: a table of broken scene files and command lines (data in
 # tests/bad_inputs/catalogue.json), one ctest test per case.
 impulse2d_add_test(test_bad_input_catalogue

@@ -3,6 +3,7 @@
 impulse2d_add_test(test_render
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_render_primitives.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_render_world.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_render_overlays.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_render_determinism.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_render_output.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_render_support.cpp

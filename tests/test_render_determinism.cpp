@@ -1,8 +1,10 @@
 // Frames must not depend on how many threads llvmpipe rasterises with. llvmpipe reads
 // LP_NUM_THREADS once, when the first context of a process is created, so each setting
 // runs in a fresh child process (this binary, filtered to the child test below).
+#include "render/driver_quirks.h"
 #include "render/frame_renderer.h"
 #include "render/png_encoder.h"
+#include "render/render_error.h"
 #include "tests/test_render_support.h"
 
 #include <gtest/gtest.h>
@@ -79,4 +81,35 @@ TEST(RenderThreads, OneTwoAndFourThreadsGiveIdenticalFrames) {
     std::remove((output + ".threads").c_str());
   }
   std::remove(directory.c_str());
+}
+
+// Runs only as a child with LP_NATIVE_VECTOR_WIDTH=128: llvmpipe at 128-bit vectors would
+// abort inside the driver on the first frame (driver_quirks.h), so the renderer must refuse
+// before drawing, with a message that names the variable.
+TEST(RenderVectorWidthChild, RefusesWithAMessage) {
+  if (std::getenv("LP_NATIVE_VECTOR_WIDTH") == nullptr) GTEST_SKIP() << "runs only as a child";
+  try {
+    FrameRenderer renderer(320, 240);
+    const World world = support::make_overlay_scene(30);
+    FrameOptions options;
+    options.draw.flags = draw_all;
+    renderer.render(world, Camera::fit(world_bounds(world), 320, 240), options, support::hud("width", 30));
+    FAIL() << "rendered at 128-bit vectors";
+  } catch (const RenderError& error) {
+    EXPECT_NE(std::string(error.what()).find("LP_NATIVE_VECTOR_WIDTH=128 is set"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(RenderThreads, NativeVectorWidth128IsRefusedNotAnAbort) {
+  const int status = support::run_self("RenderVectorWidthChild.RefusesWithAMessage",
+                                       {{"LP_NATIVE_VECTOR_WIDTH", "128"}});
+  EXPECT_EQ(status, 0) << "the child aborted or rendered (status " << status << ")";
+}
+
+TEST(RenderThreads, OnlyLlvmpipeAt128BitVectorsIsRefused) {
+  EXPECT_THROW(check_driver("llvmpipe (LLVM 15.0.6, 128 bits)"), RenderError);
+  EXPECT_NO_THROW(check_driver("llvmpipe (LLVM 15.0.6, 256 bits)"));
+  EXPECT_NO_THROW(check_driver("softpipe"));
+  EXPECT_NO_THROW(check_driver("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
 }

@@ -99,6 +99,7 @@ TEST(RenderWorld, BothThemesAreOpaqueAndDiffer) {
   FrameRenderer renderer(kWidth, kHeight);
   FrameOptions options;
   options.draw.flags = draw_all;
+  options.show_legend = false;  // at this size it sits in the bottom-right corner, over the pixel checked
   const Frame light = renderer.render(world, scene_camera(world), options, impulse2d::render::testing::hud("overlays", 20));
   options.theme = Theme::Dark;
   const Frame dark = renderer.render(world, scene_camera(world), options, impulse2d::render::testing::hud("overlays", 20));
@@ -159,13 +160,17 @@ TEST(RenderWorld, LegendListsTheOverlaysThatAreOnWithScales) {
   options.impulse_scale = 0.5f;
   options.velocity_scale = 0.1f;
   const Camera camera = Camera::centered(vec2(0.0f), 25.0f, 100, 100);  // 50 px = 2 m
-  const std::vector<LegendEntry> entries = legend_entries(options, camera, false, Color{});
-  ASSERT_EQ(entries.size(), 2u);
+  const std::vector<LegendEntry> entries = legend_entries(options, camera, false, Color{}, 120.0f, 4.0f);
+  ASSERT_EQ(entries.size(), 3u);
   EXPECT_EQ(entries[0].label, "normal impulses (50 px = 4 N s)");
   EXPECT_EQ(entries[1].label, "velocities (50 px = 20 m/s)");
-  EXPECT_EQ(legend_entries(options, camera, true, Color{}).back().label, "motion trails");
+  EXPECT_EQ(entries[2].label, "contact arrows cut at 120 px, marked //");
+  EXPECT_EQ(legend_entries(options, camera, true, Color{}, 120.0f, 4.0f).back().label, "motion trails");
   options.flags = draw_all;
-  EXPECT_EQ(legend_entries(options, camera, false, Color{}).size(), 11u);
+  EXPECT_EQ(legend_entries(options, camera, false, Color{}, 120.0f, 4.0f).size(), 12u);
+  options.flags = draw_penetration;
+  options.penetration_scale = 10.0f;
+  EXPECT_EQ(legend_entries(options, camera, false, Color{}, 240.0f, 8.0f)[0].label, "penetration (x10, >= 8 px)");
 }
 
 TEST(RenderWorld, MotionTrailsDrawTheRecordedPath) {

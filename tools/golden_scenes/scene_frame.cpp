@@ -8,6 +8,7 @@
 #include "demos/scene_camera.h"
 #include "demos/scene_registry.h"
 #include "demos/scene_run.h"
+#include "demos/view_frame_options.h"
 #include "tools/golden_scenes/golden_run.h"
 #include "render/frame_renderer.h"
 #include "tools/golden/error.h"
@@ -48,14 +49,14 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
     produced.samples.push_back(sample_physics(run.world()));
   }
 
-  render::FrameOptions options;
-  options.draw = scene.view.draw;
-  options.theme = spec.dark_theme ? render::Theme::Dark : render::Theme::Light;
-  if (spec.overlays != 0) options.draw.flags = spec.overlays;
-  options.extra_overlays = run.script_overlays();
+  DebugDrawOptions draw = scene.view.draw;
+  if (spec.overlays != 0) draw.flags = spec.overlays;
+  render::FrameOptions options = demos::view_frame_options(
+      run, draw, spec.dark_theme ? render::Theme::Dark : render::Theme::Light);
   render::HudInfo hud;
   hud.scene_name = demos::scene_title(scene);
   hud.frame = spec.step;
+  demos::update_view_frame(run, options, hud);
   const render::Frame frame =
       renderer.render(run.world(), demos::frame_camera(camera, run), options, hud);
 

@@ -1,0 +1,35 @@
+#pragma once
+/// @file body_marks.h
+/// Marks the renderer puts on bodies: their names (or slot indices) and a highlight frame
+/// around one chosen body.
+
+#include "core/debug_draw.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace impulse2d {
+class World;
+}
+
+namespace impulse2d::render {
+
+class PrimitiveRenderer;
+
+/// The label of the body in slot `slot`: its name, or empty for the slot index.
+using BodyLabeler = std::function<std::string(std::uint32_t slot)>;
+
+/// Colour of the highlight frame (a vivid magenta that no overlay uses).
+constexpr Color highlight_color{0.95f, 0.05f, 0.55f, 1.0f};
+
+/// Writes each living body's label (`labeler`'s name, else its slot index) at its drawn centre
+/// (interpolated by `options.interpolation_alpha`) in `options.palette.label`.
+void draw_body_labels(PrimitiveRenderer& renderer, const World& world, const DebugDrawOptions& options,
+                      const BodyLabeler& labeler);
+
+/// Draws a frame `scale` x 3 pixels thick around the bounds of the body in `slot`, 4 x `scale`
+/// pixels outside them; nothing when the slot holds no living body.
+void draw_highlight(PrimitiveRenderer& renderer, const World& world, std::uint32_t slot, int scale);
+
+}  // namespace impulse2d::render
