@@ -32,25 +32,24 @@ void BroadPhase::find_pairs(const std::vector<Body>& bodies, const std::vector<s
     return;
   }
 
-  sorted_slots_.clear();
+  sorted_.clear();
   for (std::uint32_t i = 0; i < slot_count; ++i) {
-    if (alive[i]) sorted_slots_.push_back(i);
+    if (alive[i]) sorted_.push_back({bounds[i], i});
   }
   // Ties on lower.x are broken by slot so the order never depends on the sort's internals.
-  std::sort(sorted_slots_.begin(), sorted_slots_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const float ax = bounds[a].lower.x;
-    const float bx = bounds[b].lower.x;
-    return ax < bx || (ax == bx && a < b);
+  std::sort(sorted_.begin(), sorted_.end(), [](const SweepEntry& a, const SweepEntry& b) {
+    return a.bounds.lower.x < b.bounds.lower.x ||
+           (a.bounds.lower.x == b.bounds.lower.x && a.slot < b.slot);
   });
-  const std::size_t count = sorted_slots_.size();
+  const std::size_t count = sorted_.size();
   for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t first = sorted_slots_[i];
+    const SweepEntry& first = sorted_[i];
     for (std::size_t j = i + 1; j < count; ++j) {
-      const std::uint32_t second = sorted_slots_[j];
-      if (bounds[second].lower.x > bounds[first].upper.x) break;
-      if (bounds[first].overlaps(bounds[second]) && bodies_can_collide(bodies[first], bodies[second])) {
-        pairs.emplace_back(std::min(sorted_slots_[i], sorted_slots_[j]),
-                           std::max(sorted_slots_[i], sorted_slots_[j]));
+      const SweepEntry& second = sorted_[j];
+      if (second.bounds.lower.x > first.bounds.upper.x) break;
+      if (first.bounds.overlaps(second.bounds) &&
+          bodies_can_collide(bodies[first.slot], bodies[second.slot])) {
+        pairs.emplace_back(std::min(first.slot, second.slot), std::max(first.slot, second.slot));
       }
     }
   }

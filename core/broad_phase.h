@@ -30,7 +30,12 @@ class BroadPhase {
                   std::vector<BodyPair>& pairs);
 
  private:
-  std::vector<std::uint32_t> sorted_slots_;  // living slots ordered by (aabb.lower.x, slot)
+  /// A living slot's bounds, copied so that the sweep reads one contiguous array.
+  struct SweepEntry {
+    Aabb bounds;         ///< the slot's box, metres
+    std::uint32_t slot;  ///< body slot
+  };
+  std::vector<SweepEntry> sorted_;  // living slots ordered by (bounds.lower.x, slot)
 };
 
 }  // namespace impulse2d
