@@ -35,6 +35,7 @@ struct RenderArguments {
   std::optional<std::string> trails;    ///< `dynamic` or body indices with motion trails
   bool clean = false;                   ///< replace frames of the same scene already in `out`
   bool quiet = false;                   ///< no progress and no summary line
+  bool html = false;                    ///< also write the browser viewer `<scene>.html`
 };
 
 /// `impulse2d trace`.

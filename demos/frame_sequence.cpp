@@ -7,13 +7,16 @@
 #include <memory>
 #include <mutex>
 
+#include "demos/contact_sheet.h"
 #include "demos/frame_index.h"
 #include "demos/frame_metadata.h"
+#include "demos/html_viewer.h"
 #include "demos/interrupt.h"
 #include "demos/output_guard.h"
 #include "demos/output_staging.h"
 #include "scene/usage_error.h"
 #include "demos/scene_camera.h"
+#include "demos/trace_writer.h"
 #include "demos/video_encoder.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
@@ -123,6 +126,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
 
   FrameSequenceResult result;
   std::vector<FrameIndexRow> index;
+  ViewerPage viewer;
   for (const std::int64_t frame_step : plan.frames) {
     while (run.step_count() < frame_step) {
       run.step();
@@ -141,6 +145,10 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
       result.last_file = file;
       index.push_back(FrameIndexRow{number, frame_step, run.world().time(),
                                     file.filename().string()});
+      if (options.html) {
+        viewer.frames.push_back(ViewerFrame{index.back(), mechanical_energy(run.world()),
+                                            contact_count(run.world())});
+      }
       metadata.put(number, frame_metadata(scene_label, options.parameters, run.world(), fingerprint));
       writer->submit(number, std::move(frame));
     }
@@ -152,6 +160,17 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     writer->finish();
     write_frame_index(frame_index_path(staging->path(), scene_name), index);
     result.index_file = frame_index_path(options.directory, scene_name);
+  }
+  if (options.html) {
+    viewer.title = scene_title(run.scene());
+    viewer.details = scene_label + "  |  " +
+                     (options.parameters.empty() ? "default parameters" : options.parameters) +
+                     "  |  overlays: " + overlay_list(options.draw.flags) + "  |  " +
+                     std::to_string(options.width) + "x" + std::to_string(options.height);
+    viewer.width = options.width;
+    viewer.height = options.height;
+    write_html_viewer(html_viewer_path(staging->path(), scene_name), viewer);
+    result.html_file = html_viewer_path(options.directory, scene_name);
   }
   if (video) video->finish();
   check_interrupt();
