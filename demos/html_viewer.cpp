@@ -11,7 +11,7 @@
 namespace impulse2d::demos {
 namespace {
 
-/// The page. @TITLE@, @DETAILS@, @WIDTH@, @HEIGHT@ and @FRAMES@ (the per-frame JSON) are
+/// The page. @TITLE@, @DETAILS@, @WIDTH@, @HEIGHT@ and @DATA@ (frames and variants as JSON) are
 /// filled in by `html_viewer_page`; everything else is fixed.
 constexpr const char* page_template = R"html(<!DOCTYPE html>
 <html lang="en">
@@ -33,6 +33,8 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
   #legend { color: #555; margin-top: 4px; }
   .energy { color: #1f5fbf; } .contacts { color: #d2691e; }
   #keys { color: #777; margin-top: 12px; }
+  #overlays { border: 1px solid #bbb; margin: 8px 0; max-width: @WIDTH@px; }
+  #overlays label { margin-right: 1em; white-space: nowrap; }
 </style>
 </head>
 <body data-frame="0">
@@ -56,14 +58,16 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
   <line id="marker" y1="0" y2="1" stroke="#c00" stroke-width="2" vector-effect="non-scaling-stroke"/>
 </svg>
 <div id="legend"></div>
+<fieldset id="overlays" hidden><legend>overlays (pre-rendered: switching needs no new render)</legend></fieldset>
 <div id="keys">Click the timeline to jump to a frame. Keys: left/right arrow one frame,
-  space play/pause, Home/End first/last frame. <code>#frame=N</code> in the address opens frame N.
-  Overlays are drawn into the frames: toggling them needs a new render.</div>
-<script type="application/json" id="frame-data">@FRAMES@</script>
+  space play/pause, Home/End first/last frame. <code>#frame=N</code> in the address opens frame N,
+  <code>#frame=N&amp;overlays=NAME</code> with those overlays.</div>
+<script type="application/json" id="viewer-data">@DATA@</script>
 <script>
 (function () {
   'use strict';
-  const frames = JSON.parse(document.getElementById('frame-data').textContent);
+  const data = JSON.parse(document.getElementById('viewer-data').textContent);
+  const frames = data.frames, variants = data.variants;
   const last = frames.length - 1;
   const byId = (id) => document.getElementById(id);
   const image = byId('frame'), scrub = byId('scrub'), play = byId('play');
@@ -73,13 +77,16 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
       ? Math.min(1000, Math.max(1000 / 120, (frames[1].time - frames[0].time) * 1000)) : 100;
   let current = 0;
   let timer = null;
+  let variant = variants.length > 0 ? variants[0] : { label: '', directory: '' };
+  const path = (f) => (variant.directory === '' ? '' :
+      variant.directory.split('/').map(encodeURIComponent).join('/') + '/') + encodeURIComponent(f.file);
 
   const number = (value, digits) => value === null ? 'n/a' : Number(value.toPrecision(digits)).toString();
 
   function show(n) {
     current = Math.max(0, Math.min(last, n));
     const f = frames[current];
-    image.src = encodeURIComponent(f.file);
+    image.src = path(f);
     image.alt = 'frame ' + f.frame + ', step ' + f.step;
     scrub.value = current;
     byId('frame-number').textContent = f.frame + ' / ' + last;
@@ -90,6 +97,30 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
     marker.setAttribute('x1', current);
     marker.setAttribute('x2', current);
     document.body.dataset.frame = current;
+    document.body.dataset.overlays = variant.label;
+  }
+
+  // The overlay switch: one radio button per variant.
+  const switcher = byId('overlays');
+  function choose(label) {
+    const found = variants.find((v) => v.label === label);
+    if (!found) return;
+    variant = found;
+    switcher.querySelectorAll('input').forEach((input) => { input.checked = input.value === label; });
+  }
+  if (variants.length > 1) {
+    switcher.hidden = false;
+    variants.forEach((v) => {
+      const label = document.createElement('label');
+      const input = document.createElement('input');
+      input.type = 'radio';
+      input.name = 'overlays';
+      input.value = v.label;
+      input.addEventListener('change', () => { choose(v.label); show(current); });
+      label.append(input, ' ' + v.label);
+      switcher.append(label);
+    });
+    choose(variant.label);
   }
 
   function setPlaying(on) {
@@ -144,6 +175,8 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
     event.preventDefault();
   });
   function openFromAddress() {
+    const overlays = /overlays=([^&]*)/.exec(location.hash);
+    if (overlays) choose(decodeURIComponent(overlays[1]));
     const match = /frame=(\d+)/.exec(location.hash);
     show(match ? Number(match[1]) : current);
   }
@@ -199,19 +232,24 @@ std::string escape_html(const std::string& text) {
   return escaped;
 }
 
-/// The frames as a JSON array, with every '<' written as \u003c so that no string in it can
-/// end the <script> element it sits in.
-std::string frames_json(const std::vector<ViewerFrame>& frames) {
-  nlohmann::json array = nlohmann::json::array();
-  for (const ViewerFrame& frame : frames) {
-    array.push_back({{"frame", frame.index.frame},
+/// {"frames": [...], "variants": [...]} with every '<' written as \u003c so that no string in
+/// it can end the <script> element it sits in.
+std::string page_data_json(const ViewerPage& page) {
+  nlohmann::json frames = nlohmann::json::array();
+  for (const ViewerFrame& frame : page.frames) {
+    frames.push_back({{"frame", frame.index.frame},
                      {"step", frame.index.step},
                      {"time", frame.index.time},
                      {"energy", frame.energy},  // a non-finite energy becomes null
                      {"contacts", frame.contacts},
                      {"file", frame.index.file}});
   }
-  return replace_all(array.dump(), "<", "\\u003c");
+  nlohmann::json variants = nlohmann::json::array();
+  for (const ViewerVariant& variant : page.variants) {
+    variants.push_back({{"label", variant.label}, {"directory", variant.directory}});
+  }
+  const nlohmann::json data = {{"frames", frames}, {"variants", variants}};
+  return replace_all(data.dump(), "<", "\\u003c");
 }
 
 }  // namespace
@@ -226,7 +264,7 @@ std::string html_viewer_page(const ViewerPage& page) {
                         {"@DETAILS@", escape_html(page.details)},
                         {"@WIDTH@", std::to_string(page.width)},
                         {"@HEIGHT@", std::to_string(page.height)},
-                        {"@FRAMES@", frames_json(page.frames)}});
+                        {"@DATA@", page_data_json(page)}});
 }
 
 void write_html_viewer(const std::filesystem::path& path, const ViewerPage& page) {

@@ -1,7 +1,8 @@
 // The browser viewer (issue 15.7): `impulse2d render --html` writes <scene>.html beside the
 // frames, listing every frame file in order with its step, time, energy and contacts as JSON,
-// referencing only files that exist and nothing on the network; headless Chromium, where it
-// is installed, opens the page at #frame=3 and shows frame 3's step.
+// referencing only files that exist and nothing on the network, with overlay variants
+// pre-rendered into <scene>.overlays/; headless Chromium, where it is installed, opens the page
+// at #frame=3 and shows frame 3's step.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -12,6 +13,8 @@
 #include <vector>
 
 #include "demos/html_viewer.h"
+#include "demos/overlay_variants.h"
+#include "scene/overlays.h"
 #include "tests/cli_test_support.h"
 
 using namespace cli_test;
@@ -33,9 +36,9 @@ std::vector<std::vector<std::string>> csv_rows(const fs::path& path) {
   return rows;
 }
 
-/// The per-frame JSON the page embeds (null when it has none).
-nlohmann::json embedded_frames(const std::string& html) {
-  const std::string open = "<script type=\"application/json\" id=\"frame-data\">";
+/// The JSON the page embeds, {"frames": [...], "variants": [...]} (null when it has none).
+nlohmann::json embedded_data(const std::string& html) {
+  const std::string open = "<script type=\"application/json\" id=\"viewer-data\">";
   const std::size_t begin = html.find(open);
   if (begin == std::string::npos) return nullptr;
   const std::size_t end = html.find("</script>", begin);
@@ -47,7 +50,8 @@ bool have_chromium() { return std::system("command -v chromium > /dev/null 2>&1"
 }  // namespace
 
 TEST_F(CliTest, HtmlViewerListsEveryFrameWithItsData) {
-  const Result result = run("render tutorial --frames 0:40:10 --size 160x120 --html -o view");
+  const Result result =
+      run("render tutorial --frames 0:40:10 --size 160x120 --overlays contacts --html -o view");
   ASSERT_EQ(result.status, 0) << result.err;
   EXPECT_NE(result.out.find("viewer view/tutorial.html"), std::string::npos) << result.out;
   const fs::path page = dir_ / "view" / "tutorial.html";
@@ -57,7 +61,8 @@ TEST_F(CliTest, HtmlViewerListsEveryFrameWithItsData) {
   // Every frame file, in order, with the steps and times of the index.
   const std::vector<std::vector<std::string>> rows = csv_rows(dir_ / "view" / "tutorial_frames.csv");
   ASSERT_EQ(rows.size(), 5u);
-  const nlohmann::json frames = embedded_frames(html);
+  const nlohmann::json data = embedded_data(html);
+  const nlohmann::json frames = data["frames"];
   ASSERT_TRUE(frames.is_array()) << "no embedded frame data";
   ASSERT_EQ(frames.size(), rows.size());
   std::size_t previous = 0;
@@ -79,6 +84,20 @@ TEST_F(CliTest, HtmlViewerListsEveryFrameWithItsData) {
   EXPECT_EQ(frames[0]["contacts"].get<std::int64_t>(), 0);
   EXPECT_GT(frames[3]["contacts"].get<std::int64_t>(), 0);
 
+  // The overlay switch: the frames beside the page (with "contacts"), then without overlays
+  // and one group at a time, each a directory of the same files.
+  std::vector<std::string> labels;
+  for (const nlohmann::json& variant : data["variants"]) {
+    labels.push_back(variant["label"].get<std::string>());
+    for (const std::vector<std::string>& row : rows) {
+      const fs::path file = dir_ / "view" / variant["directory"].get<std::string>() / row[3];
+      EXPECT_TRUE(fs::is_regular_file(file)) << file;
+    }
+  }
+  EXPECT_EQ(labels, (std::vector<std::string>{"contacts", "none", "points", "normals", "impulses",
+                                              "penetration"}));
+  EXPECT_EQ(data["variants"][1]["directory"], "tutorial.overlays/none");
+
   // Every src/href names a file beside the page; nothing comes from the network.
   const std::regex reference("(src|href)\\s*=\\s*\"([^\"]*)\"");
   for (auto match = std::sregex_iterator(html.begin(), html.end(), reference);
@@ -89,8 +108,9 @@ TEST_F(CliTest, HtmlViewerListsEveryFrameWithItsData) {
   EXPECT_EQ(html.find("https:"), std::string::npos);
   EXPECT_EQ(html.find("@import"), std::string::npos);
 
-  // Frames, index and page, nothing else (no temporary file left behind).
-  EXPECT_EQ(files().size(), rows.size() + 2);
+  // Frames, index, page and variants, nothing else (no temporary file left behind).
+  EXPECT_EQ(files().size(), rows.size() + 2 + (labels.size() - 1) * rows.size());
+  EXPECT_FALSE(fs::exists(dir_ / "view" / "tutorial.overlays" / "contacts"));
 }
 
 TEST_F(CliTest, HtmlWithoutFramesIsBadUsage) {
@@ -100,6 +120,41 @@ TEST_F(CliTest, HtmlWithoutFramesIsBadUsage) {
   EXPECT_TRUE(files().empty());
 }
 
+TEST_F(CliTest, HtmlViewerOfAnEarlierRunIsReplacedOnlyWithClean) {
+  const std::string render = "render tutorial --frames 0:20:10 --size 160x120 -o view --quiet";
+  ASSERT_EQ(run(render + " --html --overlays normals").status, 0);
+  ASSERT_TRUE(fs::exists(dir_ / "view" / "tutorial.overlays" / "none" / "tutorial_00002.png"));
+  const Result again = run(render + " --html");
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.err.find("--clean"), std::string::npos) << again.err;
+  // A new run without --html removes the old page and variants, which would show old data.
+  ASSERT_EQ(run(render + " --clean").status, 0);
+  EXPECT_FALSE(fs::exists(dir_ / "view" / "tutorial.html"));
+  EXPECT_FALSE(fs::exists(dir_ / "view" / "tutorial.overlays"));
+  EXPECT_EQ(files().size(), 4u);
+}
+
+TEST(HtmlViewer, OverlayVariantsAreNoneAndEachGroupAlone) {
+  using impulse2d::demos::overlay_variants;
+  using impulse2d::demos::parse_overlays;
+  const auto names = [](const std::string& overlays) {
+    std::vector<std::string> found;
+    for (const auto& variant : overlay_variants(parse_overlays(overlays))) found.push_back(variant.name);
+    return found;
+  };
+  EXPECT_TRUE(names("none").empty());
+  EXPECT_EQ(names("normals"), (std::vector<std::string>{"none"}));
+  EXPECT_EQ(names("penetration,normals"), (std::vector<std::string>{"none", "normals", "penetration"}));
+  EXPECT_EQ(names("contacts"),
+            (std::vector<std::string>{"none", "points", "normals", "impulses", "penetration"}));
+  // Shapes stay in every variant; each group's flags are its own.
+  const auto variants = overlay_variants(parse_overlays("normals,aabbs"));
+  ASSERT_EQ(variants.size(), 3u);
+  EXPECT_EQ(variants[0].flags, parse_overlays("none"));
+  EXPECT_EQ(variants[1].flags, parse_overlays("normals"));
+  EXPECT_EQ(variants[2].flags, parse_overlays("aabbs"));
+}
+
 TEST(HtmlViewer, TextAndDataCannotBreakOutOfThePage) {
   impulse2d::demos::ViewerPage page;
   page.title = "a <b>title</b> & @FRAMES@";
@@ -107,7 +162,7 @@ TEST(HtmlViewer, TextAndDataCannotBreakOutOfThePage) {
   const std::string html = impulse2d::demos::html_viewer_page(page);
   EXPECT_NE(html.find("a &lt;b&gt;title&lt;/b&gt; &amp; @FRAMES@"), std::string::npos);
   EXPECT_EQ(html.find("alert(1)</script>"), std::string::npos);
-  EXPECT_EQ(embedded_frames(html)[0]["file"], "x</script><script>alert(1)</script>.png");
+  EXPECT_EQ(embedded_data(html)["frames"][0]["file"], "x</script><script>alert(1)</script>.png");
 }
 
 TEST_F(CliTest, HtmlViewerOpensAFrameInHeadlessChromium) {
@@ -124,6 +179,10 @@ TEST_F(CliTest, HtmlViewerOpensAFrameInHeadlessChromium) {
   EXPECT_NE(dom.find("data-frame=\"3\""), std::string::npos) << dom;
   EXPECT_NE(dom.find("<b id=\"step\">30</b>"), std::string::npos) << dom;
   EXPECT_NE(dom.find("tutorial_00003.png"), std::string::npos) << dom;
+  const std::string none = (dir_ / "none.html").string();
+  ASSERT_EQ(std::system((chromium + "--dump-dom '" + url + "&overlays=none' > '" + none +
+                         "' 2> /dev/null").c_str()), 0);
+  EXPECT_NE(read_file(none).find("tutorial.overlays/none/tutorial_00003.png"), std::string::npos);
 
   const fs::path shot = dir_ / "shot.png";
   ASSERT_EQ(std::system((chromium + "--window-size=800,600 --screenshot='" + shot.string() + "' '" +
