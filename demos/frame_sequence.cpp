@@ -97,8 +97,9 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     writer = std::make_unique<render::AsyncFrameWriter>(writer_options);
   }
   // The viewer's overlay switch: each frame rendered again per variant, one writer each.
+  const bool html = options.html && options.write_frames;  // the page shows the PNG frames
   const std::vector<OverlayVariant> variants =
-      options.html ? overlay_variants(options.draw.flags) : std::vector<OverlayVariant>{};
+      html ? overlay_variants(options.draw.flags) : std::vector<OverlayVariant>{};
   std::vector<std::unique_ptr<render::AsyncFrameWriter>> variant_writers;
   for (const OverlayVariant& variant : variants) {
     render::FrameWriterOptions variant_options;
@@ -157,7 +158,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
       result.last_file = file;
       index.push_back(FrameIndexRow{number, frame_step, run.world().time(),
                                     file.filename().string()});
-      if (options.html) {
+      if (html) {
         viewer.frames.push_back(ViewerFrame{index.back(), mechanical_energy(run.world()),
                                             contact_count(run.world())});
       }
@@ -180,7 +181,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     write_frame_index(frame_index_path(staging->path(), scene_name), index);
     result.index_file = frame_index_path(options.directory, scene_name);
   }
-  if (options.html) {
+  if (html) {
     viewer.title = scene_title(run.scene());
     viewer.details = scene_label + "  |  " +
                      (options.parameters.empty() ? "default parameters" : options.parameters) +

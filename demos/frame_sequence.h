@@ -31,7 +31,8 @@ struct FrameSequenceOptions {
   TrailSelection trails;                       ///< bodies whose recent path is drawn
   bool clean = false;  ///< replace frames of the same scene already in `directory`
   std::string parameters;  ///< parameter overrides "rows=8 seed=3", for the PNG metadata
-  bool html = false;  ///< also write the browser viewer `<scene>.html` (needs `write_frames`)
+  bool html = false;  ///< also the browser viewer `<scene>.html` and its overlay variants
+                      ///< `<scene>.overlays/` (only with `write_frames`)
 };
 
 /// What was written.
