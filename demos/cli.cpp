@@ -129,6 +129,10 @@ int run_cli(int argc, char** argv) {
   render_command->add_option("--trails", render.trails,
                              "motion trails: 'dynamic' (every dynamic body) or body indices "
                              "3,7,12 (as the ids overlay shows them)");
+  render_command->add_flag("--html", render.html,
+                           "also write <scene>.html beside the frames: a viewer for the browser "
+                           "(scrubber, play/pause, step/time/energy/contacts, timeline) with an "
+                           "overlay switch pre-rendered into <scene>.overlays/");
   render_command->add_flag("--clean", render.clean,
                            "replace frames of the same scene already in the output directory "
                            "(without it they are an error); done only when the run succeeds");

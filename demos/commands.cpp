@@ -144,6 +144,10 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
   options.writer_threads = arguments.threads;
   if (arguments.trails) options.trails = parse_trails(*arguments.trails, "--trails");
   options.write_frames = !arguments.no_frames;
+  if (arguments.html && arguments.no_frames) {
+    throw UsageError("--html shows the PNG frames: it cannot be combined with --no-frames");
+  }
+  options.html = arguments.html;
   if (arguments.no_frames && !arguments.video) {
     throw UsageError("--no-frames needs --video FILE (otherwise nothing would be written)");
   }
@@ -184,7 +188,9 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
   out << "wrote " << result.frame_count << " frames of " << resolved.scene.name;
   if (options.write_frames) {
     out << " to " << options.directory.string() << "/ (" << result.first_file.string() << " .. "
-        << result.last_file.string() << ", index " << result.index_file.string() << ")";
+        << result.last_file.string() << ", index " << result.index_file.string();
+    if (options.html) out << ", viewer " << result.html_file.string();
+    out << ")";
     if (options.video) out << " and";
   }
   if (options.video) out << " to " << options.video->string();

@@ -38,6 +38,7 @@ struct RenderArguments {
   bool clean = false;                   ///< replace frames of the same scene already in `out`
   bool quiet = false;                   ///< no progress and no summary line
   ViewArguments view;                   ///< HUD, legend, scales, camera, highlight
+  bool html = false;                    ///< also write the browser viewer `<scene>.html`
 };
 
 /// `impulse2d trace`.

@@ -102,10 +102,11 @@ render::Camera centred_camera(const SceneRun& run, const FramePlan& plan,
 
 }  // namespace
 
-std::string overlay_list(std::uint32_t flags) {
-  if (flags == 0) return "none";
+std::vector<OverlayName> overlay_cover(std::uint32_t flags, bool composites) {
   std::vector<const OverlayName*> candidates;
   for (const OverlayName& each : overlay_names()) {
+    const bool composite = std::strcmp(each.name, "contacts") == 0 || std::strcmp(each.name, "all") == 0;
+    if (composite && !composites) continue;
     if (each.flags != 0 && (flags & each.flags) == each.flags) candidates.push_back(&each);
   }
   std::stable_sort(candidates.begin(), candidates.end(), [](const OverlayName* a, const OverlayName* b) {
@@ -119,9 +120,17 @@ std::string overlay_list(std::uint32_t flags) {
     chosen.push_back(each);
   }
   // In the order --help lists them.
-  std::string text;
+  std::vector<OverlayName> cover;
   for (const OverlayName& each : overlay_names()) {
-    if (std::find(chosen.begin(), chosen.end(), &each) == chosen.end()) continue;
+    if (std::find(chosen.begin(), chosen.end(), &each) != chosen.end()) cover.push_back(each);
+  }
+  return cover;
+}
+
+std::string overlay_list(std::uint32_t flags) {
+  if (flags == 0) return "none";
+  std::string text;
+  for (const OverlayName& each : overlay_cover(flags, true)) {
     text += (text.empty() ? "" : ", ") + std::string(each.name);
   }
   return text;

@@ -8,9 +8,11 @@
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/debug_draw.h"
 #include "demos/frame_plan.h"
+#include "scene/overlays.h"
 #include "demos/scene_run.h"
 #include "demos/trail_selection.h"
 #include "render/palette.h"
@@ -41,6 +43,11 @@ std::pair<int, int> contact_sheet_size(int frame_count, const ContactSheetOption
 std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
                                         const ContactSheetOptions& options,
                                         const std::filesystem::path& output);
+
+/// The overlay names (as `--overlays` takes them, in its order) that together draw `flags`,
+/// the widest names first ("contacts" rather than its four parts); without `composites`,
+/// "contacts" and "all" are not used (their parts are). Empty for 0.
+std::vector<OverlayName> overlay_cover(std::uint32_t flags, bool composites);
 
 /// "normals, penetration" for a set of `DebugDrawFlag`s, by the overlay names `--overlays`
 /// takes (the widest names first: "contacts" rather than its four parts); "none" for 0.

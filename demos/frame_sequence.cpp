@@ -7,14 +7,18 @@
 #include <memory>
 #include <mutex>
 
+#include "demos/contact_sheet.h"
 #include "demos/frame_index.h"
 #include "demos/frame_metadata.h"
+#include "demos/html_viewer.h"
 #include "demos/interrupt.h"
 #include "demos/output_guard.h"
 #include "demos/output_staging.h"
+#include "demos/overlay_variants.h"
 #include "scene/usage_error.h"
 #include "demos/scene_camera.h"
 #include "demos/timeline_frames.h"
+#include "demos/trace_writer.h"
 #include "demos/video_encoder.h"
 #include "demos/view_frame_options.h"
 #include "render/frame_renderer.h"
@@ -94,6 +98,18 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     };
     writer = std::make_unique<render::AsyncFrameWriter>(writer_options);
   }
+  // The viewer's overlay switch: each frame rendered again per variant, one writer each.
+  const bool html = options.html && options.write_frames;  // the page shows the PNG frames
+  const std::vector<OverlayVariant> variants =
+      html ? overlay_variants(options.draw.flags) : std::vector<OverlayVariant>{};
+  std::vector<std::unique_ptr<render::AsyncFrameWriter>> variant_writers;
+  for (const OverlayVariant& variant : variants) {
+    render::FrameWriterOptions variant_options;
+    variant_options.directory = overlay_variants_path(staging->path(), scene_name) / variant.name;
+    variant_options.scene_name = scene_name;
+    variant_options.digits = digits;
+    variant_writers.push_back(std::make_unique<render::AsyncFrameWriter>(variant_options));
+  }
 
   std::unique_ptr<TimelineFrames> timeline;
   if (run.scene().view.show_timeline && !plan.frames.empty()) {
@@ -129,6 +145,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
 
   FrameSequenceResult result;
   std::vector<FrameIndexRow> index;
+  ViewerPage viewer;
   for (const std::int64_t frame_step : plan.frames) {
     while (run.step_count() < frame_step) {
       run.step();
@@ -149,8 +166,19 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
       result.last_file = file;
       index.push_back(FrameIndexRow{number, frame_step, run.world().time(),
                                     file.filename().string()});
+      if (html) {
+        viewer.frames.push_back(ViewerFrame{index.back(), mechanical_energy(run.world()),
+                                            contact_count(run.world())});
+      }
       metadata.put(number, frame_metadata(scene_label, options.parameters, run.world(), fingerprint));
       writer->submit(number, std::move(frame));
+    }
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+      render::FrameOptions variant_options = frame_options;
+      variant_options.draw.flags = variants[i].flags;
+      render::Frame variant_frame = variant_writers[i]->take_spare_frame();
+      renderer.render(run.world(), frame_camera(camera, run), variant_options, hud, variant_frame);
+      variant_writers[i]->submit(number, std::move(variant_frame));
     }
     ++result.frame_count;
     frames_done = result.frame_count;
@@ -161,11 +189,31 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     write_frame_index(frame_index_path(staging->path(), scene_name), index);
     result.index_file = frame_index_path(options.directory, scene_name);
   }
+  if (html) {
+    viewer.title = scene_title(run.scene());
+    viewer.details = scene_label + "  |  " +
+                     (options.parameters.empty() ? "default parameters" : options.parameters) +
+                     "  |  overlays: " + overlay_list(options.draw.flags) + "  |  " +
+                     std::to_string(options.width) + "x" + std::to_string(options.height);
+    viewer.width = options.width;
+    viewer.height = options.height;
+    for (const std::unique_ptr<render::AsyncFrameWriter>& variant_writer : variant_writers) {
+      variant_writer->finish();
+    }
+    if (!variants.empty()) viewer.variants.push_back({overlay_list(options.draw.flags), ""});
+    for (const OverlayVariant& variant : variants) {
+      const std::filesystem::path relative =
+          overlay_variants_path(options.directory, scene_name).filename() / variant.name;
+      viewer.variants.push_back({variant.name, relative.generic_string()});
+    }
+    write_html_viewer(html_viewer_path(staging->path(), scene_name), viewer);
+    result.html_file = html_viewer_path(options.directory, scene_name);
+  }
   if (video) video->finish();
   check_interrupt();
   // Success: from here on signals wait until the frames are in place.
   std::error_code ignored;
-  for (const std::filesystem::path& old : old_frames) std::filesystem::remove(old, ignored);
+  for (const std::filesystem::path& old : old_frames) std::filesystem::remove_all(old, ignored);
   if (staging) staging->publish(guard);
   return result;
 }
@@ -180,11 +228,21 @@ FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
   std::vector<std::filesystem::path> old_frames;
   if (options.write_frames) {
     old_frames = existing_frames(options.directory, run.scene().name);
+    const std::size_t frame_count = old_frames.size();
+    // An earlier run's viewer and overlay variants go with its frames.
+    for (const std::filesystem::path& viewer_file :
+         {html_viewer_path(options.directory, run.scene().name),
+          overlay_variants_path(options.directory, run.scene().name)}) {
+      std::error_code missing;
+      if (std::filesystem::exists(viewer_file, missing)) old_frames.push_back(viewer_file);
+    }
     if (!old_frames.empty() && !options.clean) {
       throw UsageError(options.directory.string() + "/ already holds " +
-                       std::to_string(old_frames.size()) + " frames of " + run.scene().name +
-                       " from an earlier run (" + old_frames.front().string() +
-                       " ..); pass --clean to replace them, or choose another --out");
+                       (frame_count > 0 ? std::to_string(frame_count) + " frames of " +
+                                              run.scene().name + " from an earlier run (" +
+                                              old_frames.front().string() + " ..)"
+                                        : old_frames.front().string() + " from an earlier run") +
+                       "; pass --clean to replace them, or choose another --out");
     }
     guard.will_create_directory(options.directory);
     std::error_code error;

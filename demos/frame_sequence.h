@@ -31,6 +31,8 @@ struct FrameSequenceOptions {
   TrailSelection trails;                       ///< bodies whose recent path is drawn
   bool clean = false;  ///< replace frames of the same scene already in `directory`
   std::string parameters;  ///< parameter overrides "rows=8 seed=3", for the PNG metadata
+  bool html = false;  ///< also the browser viewer `<scene>.html` and its overlay variants
+                      ///< `<scene>.overlays/` (only with `write_frames`)
 };
 
 /// What was written.
@@ -38,6 +40,7 @@ struct FrameSequenceResult {
   std::filesystem::path first_file;  ///< the first frame (empty without `write_frames`)
   std::filesystem::path last_file;   ///< the last frame (empty without `write_frames`)
   std::filesystem::path index_file;  ///< `<scene>_frames.csv` (empty without `write_frames`)
+  std::filesystem::path html_file;   ///< `<scene>.html` (empty without `html`)
   std::int64_t frame_count = 0;      ///< frames written
   double seconds = 0.0;              ///< wall-clock time of the whole job
 };
@@ -47,7 +50,8 @@ using FrameProgress = std::function<void(std::int64_t frames_done)>;
 
 /// Steps `run` to `plan.steps`, rendering each planned step into a staging directory inside
 /// `options.directory`, and moves the frames and their index into place only when every
-/// frame (and the video) succeeded. Without `options.write_frames` only the video is written
+/// frame (and the video) succeeded; with `options.html` the browser viewer `<scene>.html`
+/// (see html_viewer.h) goes with them. Without `options.write_frames` only the video is written
 /// and the directory is left alone. Throws `UsageError` before any work when the directory already holds
 /// frames of the scene and `options.clean` is off (with it, they are removed just before the
 /// new frames move in). On any failure (unwritable directory, renderer, a scene event, a

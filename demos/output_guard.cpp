@@ -6,7 +6,8 @@ namespace impulse2d::demos {
 OutputGuard::~OutputGuard() {
   if (committed_) return;
   std::error_code ignored;
-  for (const std::filesystem::path& file : new_files_) std::filesystem::remove(file, ignored);
+  // remove_all: a "file" may be a directory moved into place whole.
+  for (const std::filesystem::path& file : new_files_) std::filesystem::remove_all(file, ignored);
   // Innermost first; remove() leaves a directory that is not empty alone.
   for (auto it = new_directories_.rbegin(); it != new_directories_.rend(); ++it) {
     std::filesystem::remove(*it, ignored);

@@ -20,7 +20,8 @@ class OutputGuard {
   /// Call before creating `directory` (and its missing parents): the missing ones are removed
   /// on failure when empty.
   void will_create_directory(const std::filesystem::path& directory);
-  /// Call before writing `file`: it is removed on failure unless it existed before.
+  /// Call before writing `file` (or moving a directory into place as `file`): it is removed
+  /// (with its contents) on failure unless it existed before.
   void will_write_file(const std::filesystem::path& file);
   /// The directories this job will remove on failure (outermost first).
   const std::vector<std::filesystem::path>& new_directories() const { return new_directories_; }

@@ -22,7 +22,7 @@ std::string number(double value, TraceFormat format = TraceFormat::Csv) {
 void append_sample(const World& world, TraceFormat format, std::string& out, bool first_sample) {
   const std::string step = std::to_string(world.step_count());
   const std::string time = number(world.time(), format);
-  const std::string contacts = std::to_string(world.contacts().size());
+  const std::string contacts = std::to_string(contact_count(world));
   const std::string energy = number(mechanical_energy(world), format);
   if (format == TraceFormat::Json) {
     out += first_sample ? "\n    " : ",\n    ";
@@ -70,6 +70,10 @@ double mechanical_energy(const World& world) {
               body.mass * height_work;
   }
   return energy;
+}
+
+std::int64_t contact_count(const World& world) {
+  return static_cast<std::int64_t>(world.contacts().size());
 }
 
 std::string trace_run(SceneRun& run, std::int64_t steps, std::int64_t every, TraceFormat format) {

@@ -27,4 +27,7 @@ std::string trace_run(SceneRun& run, std::int64_t steps, std::int64_t every, Tra
 /// Total mechanical energy of the world's dynamic bodies, joules.
 double mechanical_energy(const World& world);
 
+/// The world's touching pairs (the trace's `contacts` column).
+std::int64_t contact_count(const World& world);
+
 }  // namespace impulse2d::demos

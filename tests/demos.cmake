@@ -10,6 +10,7 @@ impulse2d_add_test(test_cli
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cli.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_conventions.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_frames.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_html.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_sheet.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_units.cpp
   LIBS impulse2d_demos impulse2d_golden)
