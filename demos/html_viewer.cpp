@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/png_encoder.h"
+#include "tools/golden/report.h"
 
 namespace impulse2d::demos {
 namespace {
@@ -216,22 +217,6 @@ std::string fill_template(const std::vector<std::pair<std::string, std::string>>
   return filled;
 }
 
-/// `text` safe inside HTML text and attribute values.
-std::string escape_html(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '>': escaped += "&gt;"; break;
-      case '"': escaped += "&quot;"; break;
-      case '\'': escaped += "&#39;"; break;
-      default: escaped += c;
-    }
-  }
-  return escaped;
-}
-
 /// {"frames": [...], "variants": [...]} with every '<' written as \u003c so that no string in
 /// it can end the <script> element it sits in.
 std::string page_data_json(const ViewerPage& page) {
@@ -260,8 +245,8 @@ std::filesystem::path html_viewer_path(const std::filesystem::path& directory,
 }
 
 std::string html_viewer_page(const ViewerPage& page) {
-  return fill_template({{"@TITLE@", escape_html(page.title)},
-                        {"@DETAILS@", escape_html(page.details)},
+  return fill_template({{"@TITLE@", golden::escape_html(page.title)},
+                        {"@DETAILS@", golden::escape_html(page.details)},
                         {"@WIDTH@", std::to_string(page.width)},
                         {"@HEIGHT@", std::to_string(page.height)},
                         {"@DATA@", page_data_json(page)}});

@@ -1,32 +1,16 @@
 // The view options of `render` and `sheet` run as a subprocess: every one changes the frame
 // (or leaves it as the default when it names the default), bad values are bad usage (exit 2)
 // with a message naming the option, and a scene file's "view" block does what the options do.
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <functional>
-#include <sstream>
 #include <string>
 
-namespace fs = std::filesystem;
+#include "tests/cli_test_support.h"
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string err;
-};
-
-std::string read_file(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using cli_test::read_file;
+using cli_test::Result;
+namespace fs = std::filesystem;
 
 // Two named balls on a named ground: names for --follow and --highlight, contacts for overlays.
 const char* const named_scene = R"({
@@ -55,27 +39,11 @@ std::string without_text_chunks(const std::string& png) {
   return image;
 }
 
-class CliViewTest : public ::testing::Test {
+class CliViewTest : public cli_test::CliTest {
  protected:
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("impulse2d_test_cli_view_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    CliTest::SetUp();
     std::ofstream(dir_ / "named.json") << named_scene;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  /// Runs `impulse2d <arguments>` in the test directory; `environment` is prefixed (VAR=x).
-  Result run(const std::string& arguments, const std::string& environment = "") const {
-    const std::string command = "cd '" + dir_.string() + "' && " + environment + " '" IMPULSE2D_CLI "' " +
-                                arguments + " > stdout.txt 2> stderr.txt";
-    Result result;
-    const int status = std::system(command.c_str());
-    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.err = read_file(dir_ / "stderr.txt");
-    return result;
   }
 
   /// A fingerprint of the one frame (step 30) of `scene` rendered at 320x240 with `options`;
@@ -101,7 +69,6 @@ class CliViewTest : public ::testing::Test {
     EXPECT_FALSE(fs::exists(dir_ / "bad")) << options;
   }
 
-  fs::path dir_;
   int renders_ = 0;
 };
 

@@ -1,61 +1,21 @@
 // `impulse2d lab`, `lab merge` and `tune` as subprocesses: a --quick run writes its CSV and
 // charts, two shards merged equal one run's configurations, and bad input exits 2 with a message
 // and leaves no file behind.
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
 #include "bench/lab/lab_result.h"
-
-namespace fs = std::filesystem;
+#include "tests/cli_test_support.h"
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
+using cli_test::read_file;
+using cli_test::Result;
+namespace fs = std::filesystem;
 
-std::string read_file(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-class LabCliTest : public ::testing::Test {
+/// The CLI fixture plus the lab's CSV read back.
+class LabCliTest : public cli_test::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    // The process id keeps suites of two build trees running at once apart.
-    dir_ = fs::temp_directory_path() / ("impulse2d_test_lab_cli_" + std::string(info->name()) +
-                                        "_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  Result run(const std::string& arguments) const {
-    const std::string command = "cd '" + dir_.string() + "' && '" IMPULSE2D_CLI "' " + arguments +
-                                " > stdout.txt 2> stderr.txt";
-    Result result;
-    const int status = std::system(command.c_str());
-    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_file(dir_ / "stdout.txt");
-    result.err = read_file(dir_ / "stderr.txt");
-    fs::remove(dir_ / "stdout.txt");
-    fs::remove(dir_ / "stderr.txt");
-    return result;
-  }
   std::vector<impulse2d::lab::LabResult> csv(const std::string& name) const {
     return impulse2d::lab::parse_csv(read_file(dir_ / name), name);
   }
-  fs::path dir_;
 };
 
 const char* const quick_subset =
