@@ -162,7 +162,11 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
                                         const ContactSheetOptions& options,
                                         const std::filesystem::path& output) {
   const int count = static_cast<int>(plan.frames.size());
-  const auto [width, height] = contact_sheet_size(count, options);
+  // Plain variables, not a structured binding: the sheet's drawing lambda captures them, which
+  // C++17 allows for variables only (Clang refuses a captured binding).
+  const std::pair<int, int> size = contact_sheet_size(count, options);
+  const int width = size.first;
+  const int height = size.second;
   const int columns = std::max(1, std::min(options.columns, count));
 
   render::FrameRenderer tiles(options.tile_width, options.tile_height);
