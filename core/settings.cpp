@@ -7,6 +7,15 @@
 
 namespace impulse2d {
 
+const char* solver_name(SolverMethod method) {
+  switch (method) {
+    case SolverMethod::PerIteration: return "per_iteration";
+    case SolverMethod::AccumulatedImpulses: return "accumulated";
+    case SolverMethod::SoftStep: return "soft_step";
+  }
+  return "?";
+}
+
 void validate_settings(const WorldSettings& s) {
   auto require = [](bool ok, const char* field, const char* reason) {
     if (!ok) throw Error(std::string("WorldSettings.") + field + ": " + reason);

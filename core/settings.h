@@ -119,6 +119,9 @@ struct WorldSettings {
   float max_linear_speed = 400.0f;   ///< m/s clamp against blow-ups
 };
 
+/// The solver's name as scene files write it: "accumulated", "per_iteration", "soft_step".
+const char* solver_name(SolverMethod method);
+
 /// Throws `Error` naming the field unless every setting is finite and in range
 /// (time_step > 0, substeps >= 1, iterations >= 0, 0 <= percent <= 1, slop >= 0, ...).
 void validate_settings(const WorldSettings& settings);

@@ -7,22 +7,6 @@
 
 namespace impulse2d::demos {
 
-namespace {
-
-const char* solver_name(SolverMethod method) {
-  switch (method) {
-    case SolverMethod::PerIteration:
-      return "per_iteration";
-    case SolverMethod::AccumulatedImpulses:
-      return "accumulated";
-    case SolverMethod::SoftStep:
-      return "soft_step";
-  }
-  return "?";
-}
-
-}  // namespace
-
 render::FrameOptions view_frame_options(const SceneRun& run, const DebugDrawOptions& draw, render::Theme theme) {
   const SceneView& view = run.scene().view;
   render::FrameOptions options;

@@ -24,15 +24,6 @@ const char* engine_name(Engine engine) {
   return "?";
 }
 
-const char* solver_name(SolverMethod solver) {
-  switch (solver) {
-    case SolverMethod::PerIteration: return "per_iteration";
-    case SolverMethod::AccumulatedImpulses: return "accumulated";
-    case SolverMethod::SoftStep: return "soft_step";
-  }
-  return "?";
-}
-
 const char* correction_name(PositionCorrection correction) {
   switch (correction) {
     case PositionCorrection::None: return "none";

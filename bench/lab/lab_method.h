@@ -64,12 +64,11 @@ demos::Scene apply_method(const LabMethod& method, const demos::Scene& scene);
 LabMethod scene_method(const demos::Scene& scene);
 
 /// Every solver method of `core/settings.h`, in sweep order (a new solver is added here, in
-/// `solver_name` and in `method_label`).
+/// `solver_name` (core/settings.h) and in `method_label`).
 const std::vector<SolverMethod>& solver_methods();
 
 /// Names as in scene files: "accumulated", "nonlinear_gauss_seidel", "geometric_mean", ...
 const char* engine_name(Engine engine);
-const char* solver_name(SolverMethod solver);                        ///< see engine_name
 const char* correction_name(PositionCorrection correction);          ///< see engine_name
 const char* integrator_name(Integrator integrator);                  ///< see engine_name
 const char* friction_mixing_name(FrictionMixing rule);               ///< see engine_name
