@@ -84,15 +84,6 @@ SceneVariant mutate_polygon_inertia(SumOrder order, float factor, MutationCount*
   };
 }
 
-CheckOutcome check_mutation(const std::string& golden, const SceneVariant& change) {
-  const GoldenSpec* spec = find_golden(golden);
-  if (spec == nullptr) throw std::logic_error("no golden " + golden);
-  CheckSettings settings = testing::suite_settings();
-  settings.update_mode = UpdateMode::None;
-  settings.artifact_root.clear();
-  return run_golden_check(spec->id(), spec->scene, static_cast<int>(spec->step),
-                          scene_frame_producer(*spec, change), settings);
-}
 
 constexpr const char* kGoldens[] = {"random_polygons/motion", "random_polygons/settled"};
 
@@ -100,7 +91,7 @@ TEST(GoldenNoise, ReorderedInertiaSumIsNumericalNoise) {
   for (const char* golden : kGoldens) {
     MutationCount count;
     const CheckOutcome outcome =
-        check_mutation(golden, mutate_polygon_inertia(SumOrder::Reversed, 1.0f, &count));
+        testing::check_golden_variant(golden, mutate_polygon_inertia(SumOrder::Reversed, 1.0f, &count));
     std::cout << outcome.message() << "\n";
     ASSERT_GT(count.bodies, 0) << golden;
     // The reorder must really change some inertias (else this would test nothing) ...
@@ -116,7 +107,7 @@ TEST(GoldenNoise, FivePercentInertiaErrorIsBehaviourChanged) {
   for (const char* golden : kGoldens) {
     MutationCount count;
     const CheckOutcome outcome =
-        check_mutation(golden, mutate_polygon_inertia(SumOrder::AsTheCore, 1.05f, &count));
+        testing::check_golden_variant(golden, mutate_polygon_inertia(SumOrder::AsTheCore, 1.05f, &count));
     std::cout << outcome.message() << "\n";
     ASSERT_GT(count.bodies, 0) << golden;
     EXPECT_EQ(count.changed, count.bodies) << golden;
@@ -131,7 +122,7 @@ TEST(GoldenNoise, UnmutatedRunsPass) {
   for (const char* golden : kGoldens) {
     MutationCount count;
     const CheckOutcome outcome =
-        check_mutation(golden, mutate_polygon_inertia(SumOrder::AsTheCore, 1.0f, &count));
+        testing::check_golden_variant(golden, mutate_polygon_inertia(SumOrder::AsTheCore, 1.0f, &count));
     EXPECT_GT(count.bodies, 0) << golden;
     EXPECT_EQ(count.changed, 0) << golden;
     EXPECT_EQ(outcome.failure_class, FailureClass::None) << outcome.message();

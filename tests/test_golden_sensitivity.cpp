@@ -48,18 +48,8 @@ SceneVariant scale_friction(float factor) {
 /// Prints a variant as its name (GoogleTest would dump its bytes).
 void PrintTo(const Variant& variant, std::ostream* out) { *out << variant.name; }
 
-CheckSettings read_only_settings() {
-  CheckSettings settings = testing::suite_settings();
-  settings.update_mode = UpdateMode::None;
-  settings.artifact_root.clear();
-  return settings;
-}
-
 CheckOutcome check_variant(const SceneVariant& change, const std::string& golden = kGolden) {
-  const GoldenSpec* spec = find_golden(golden);
-  if (spec == nullptr) throw std::logic_error("no golden " + golden);
-  return run_golden_check(spec->id(), spec->scene, static_cast<int>(spec->step),
-                          scene_frame_producer(*spec, change), read_only_settings());
+  return testing::check_golden_variant(golden, change);
 }
 
 class GoldenSensitivity : public ::testing::TestWithParam<Variant> {};

@@ -5,7 +5,10 @@
 
 #include <filesystem>
 
+#include <string>
+
 #include "tools/golden/check_run.h"
+#include "tools/golden_scenes/scene_frame.h"
 
 namespace impulse2d::golden::testing {
 
@@ -15,5 +18,10 @@ std::filesystem::path golden_dir();
 /// The suite's settings: goldens, GOLDEN_ARTIFACT_DIR (default <build>/golden_artifacts),
 /// update mode from GOLDEN_UPDATE and CI.
 CheckSettings suite_settings();
+
+/// Checks the built-in golden `golden` (an id such as "tutorial/motion") against its scene run
+/// with `change` applied, reading the goldens only: no update, no artifacts. Throws
+/// `std::logic_error` for an unknown golden.
+CheckOutcome check_golden_variant(const std::string& golden, const SceneVariant& change);
 
 }  // namespace impulse2d::golden::testing
