@@ -1,6 +1,7 @@
 #include "core/settings.h"
 
 #include "core/error.h"
+#include "core/wide_contact_solver.h"
 
 #include <cmath>
 #include <string>
@@ -26,6 +27,10 @@ void validate_settings(const WorldSettings& s) {
   require(s.substeps >= 1 && s.substeps <= 64, "substeps", "must be in 1..64");
   require(s.velocity_iterations >= 0 && s.velocity_iterations <= 1000, "velocity_iterations",
           "must be in 0..1000");
+  require(s.solver_lanes == 0 || s.solver_lanes == 4 || s.solver_lanes == 8, "solver_lanes",
+          "must be 0 (widest this CPU runs), 4 or 8");
+  require(s.solver_lanes != 8 || WideContactSolver::widest_lanes() == 8, "solver_lanes",
+          "8 lanes need AVX2, which this CPU lacks: use 0 or 4");
   require(s.position_iterations >= 0 && s.position_iterations <= 1000, "position_iterations",
           "must be in 0..1000");
   require(finite(s.speculative_margin) && s.speculative_margin >= 0.0f, "speculative_margin",

@@ -60,6 +60,10 @@ struct WorldSettings {
   /// Passes over all contacts per (sub)step. 16 holds a 30-box stack of rotating boxes that 8
   /// lets fall (README, "Measured figures: physics").
   int velocity_iterations = 16;
+  /// Contacts the soft step solves side by side (SoftStep only): 4 (SSE2) or 8 (AVX2, x86-64
+  /// CPUs that have it); 0 picks the widest this CPU runs. The result is bit-identical
+  /// whichever is chosen (see `wide_contact_solver.h`), so this only changes the speed.
+  int solver_lanes = 0;
   bool warm_starting = true;    ///< carry accumulated impulses over (AccumulatedImpulses only)
   /// Solve the two normal impulses of a 2-point manifold together as a 2x2 linear
   /// complementarity problem (Box2D's block solver) instead of one after the other, which keeps

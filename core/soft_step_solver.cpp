@@ -4,7 +4,7 @@
 #include "core/contact_friction_state.h"
 #include "core/contact_prepare.h"
 #include "core/contact_solver_internal.h"
-#include "core/soft_contact_solver.h"
+#include "core/wide_contact_solver.h"
 
 namespace impulse2d {
 
@@ -18,22 +18,34 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   std::vector<Body>& bodies = stages.solver_bodies();
   prepare_contacts(contacts, bodies, context);
   const bool may_bounce = any_contact_may_bounce(contacts, context);
+  WideContactSolver& wide = stages.solver_wide_contacts();
+  wide.begin_step(contacts, bodies, context, context.solver_lanes);
   for (int substep = 0; substep < context.substeps; ++substep) {
     stages.integrate_velocities(h);
     if (may_bounce) {
+      // The plan reads the points' impulses (and drops those of finished bounces).
+      wide.store_impulses(contacts);
       plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
                           stages.solver_body_flags());
+      wide.load_points(contacts);
     }
-    if (context.warm_starting) warm_start_contacts(contacts, bodies);
-    for (int i = 0; i < context.velocity_iterations; ++i) {
-      solve_contacts_soft(contacts, bodies, context, /*use_bias=*/true);
-    }
+    wide.load_velocities(bodies);
+    if (context.warm_starting) wide.warm_start();
+    for (int i = 0; i < context.velocity_iterations; ++i) wide.solve(context, /*use_bias=*/true);
+    wide.store_velocities(bodies);
     stages.integrate_positions(h);
+    wide.load_motion(bodies);
     for (int i = 0; i < context.velocity_iterations; ++i) {
-      solve_contacts_soft(contacts, bodies, context, /*use_bias=*/false);  // relax
+      wide.solve(context, /*use_bias=*/false);  // relax
     }
-    if (may_bounce) apply_bounces(contacts, bodies);
+    wide.store_velocities(bodies);
+    if (may_bounce) {
+      wide.store_impulses(contacts);
+      apply_bounces(contacts, bodies);
+      wide.load_points(contacts);
+    }
   }
+  wide.store_impulses(contacts);
   if (context.friction) {
     update_friction_state(contacts, bodies);
     // A sliding contact sticks, when it does, where it came to rest: its points' drift so far

@@ -25,6 +25,7 @@ SolverContext resolve_solver_context(const WorldSettings& settings) {
   context.dynamic_softness = make_soft(hertz, settings.contact_damping_ratio, context.substep);
   context.static_softness = make_soft(2.0f * hertz, settings.contact_damping_ratio, context.substep);
   context.push_max_speed = settings.contact_push_max_speed;
+  context.solver_lanes = settings.solver_lanes;
   return context;
 }
 

@@ -29,6 +29,7 @@ struct SolverContext {
   /// Soft contact against a static or kinematic body: twice as stiff (SoftStep).
   Softness static_softness;
   float push_max_speed = 0.0f;     ///< m/s: fastest soft push-out (SoftStep)
+  int solver_lanes = 0;            ///< contacts solved side by side, 0: widest (SoftStep)
 };
 
 /// Resolves `settings` for one step.

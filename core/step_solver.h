@@ -9,6 +9,7 @@
 #include "core/settings.h"
 #include "core/shock_propagation.h"
 #include "core/solver_context.h"
+#include "core/wide_contact_solver.h"
 
 #include <cstdint>
 #include <memory>
@@ -36,6 +37,8 @@ class SolverStages {
   virtual std::vector<std::uint8_t>& solver_body_flags() = 0;
   /// Scratch for the shock pass's support order (kept to avoid allocating).
   virtual SupportOrder& solver_support_order() = 0;
+  /// The soft step's coloured contact blocks and solver bodies (kept to avoid allocating).
+  virtual WideContactSolver& solver_wide_contacts() = 0;
 
  protected:
   ~SolverStages() = default;

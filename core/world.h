@@ -153,6 +153,7 @@ class World : private SolverStages {
   std::vector<Body>& solver_bodies() override { return bodies_; }
   std::vector<std::uint8_t>& solver_body_flags() override { return body_flags_; }
   SupportOrder& solver_support_order() override { return support_order_; }
+  WideContactSolver& solver_wide_contacts() override { return wide_contacts_; }
   void restore_diverged_bodies();
 
   WorldSettings settings_;
@@ -169,6 +170,7 @@ class World : private SolverStages {
   std::vector<Aabb> speculative_bounds_;   // per slot (reused)
   std::vector<std::uint8_t> body_flags_;   // per slot, solver scratch (reused)
   SupportOrder support_order_;             // the shock pass's scratch (reused)
+  WideContactSolver wide_contacts_;        // the soft step's contact arrays (reused)
   BroadPhase broad_phase_;
   std::vector<BodyPair> pairs_;            // broad-phase output (reused)
   SleepIslands sleep_islands_;

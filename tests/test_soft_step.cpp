@@ -3,7 +3,6 @@
 // contact hertz 30, damping ratio 10, push-out at most 3 m/s.
 #include "bounce_apexes.h"
 #include "core/error.h"
-#include "core/soft_contact_solver.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>

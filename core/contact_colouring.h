@@ -1,0 +1,45 @@
+#pragma once
+/// @file contact_colouring.h
+/// Graph colouring of a step's contacts: contacts of one colour share no body the solve moves,
+/// so they can be solved side by side in one vector instruction without one lane's impulse
+/// changing another lane's body (Box2D v3's constraint graph). Greedy, in the contact list's
+/// order, each contact taking the lowest colour neither of its moving bodies has yet: the same
+/// contacts always get the same colours.
+
+#include "core/contact.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace impulse2d {
+
+/// Colours of a step's solvable contacts, with reusable buffers (no allocation once warm).
+class ContactColouring {
+ public:
+  /// Colours beyond which a contact goes to the overflow (solved one at a time, last).
+  static constexpr int max_colours = 64;
+
+  /// Colours every solvable contact of `contacts` (enabled, one body with a finite mass);
+  /// `slot_count` is the number of body slots. A body moves under a contact when its inverse
+  /// mass or inverse inertia in the contact's `PairMass` is nonzero.
+  void colour(const std::vector<Contact>& contacts, std::size_t slot_count);
+
+  /// Number of colours used, 0..max_colours (the overflow not counted).
+  int colour_count() const { return colour_count_; }
+  /// Indices into the contact list, colour by colour, then the overflow; each range in the
+  /// list's order.
+  const std::vector<std::uint32_t>& order() const { return order_; }
+  /// order()[range_start(c) .. range_start(c + 1)) holds colour c; c = colour_count() is the
+  /// overflow.
+  std::size_t range_start(int colour) const { return starts_[static_cast<std::size_t>(colour)]; }
+
+ private:
+  std::vector<std::uint64_t> used_colours_;  // per body slot: colours its contacts took
+  std::vector<std::uint8_t> colour_of_;      // per contact; overflow_colour when none
+  std::vector<std::uint32_t> order_;
+  std::vector<std::size_t> starts_;          // colour_count_ + 2 entries
+  int colour_count_ = 0;
+};
+
+}  // namespace impulse2d

@@ -1,0 +1,387 @@
+#pragma once
+/// @file wide_contact_kernel.h
+/// The soft step's contact passes on `ContactBlock`s, written once for any lane count with the
+/// compilers' vector extensions (GCC and Clang): every operation works lane by lane in IEEE
+/// single precision, no fused multiply-add, so a block's lanes give the same bits whether the
+/// machine runs 4 or 8 of them per instruction.
+///
+/// Included only by the kernel files (`wide_contact_kernel_4.cpp`, `wide_contact_kernel_8.cpp`),
+/// each compiled for its own instruction set. Everything here has internal linkage (the
+/// unnamed namespace) and calls no inline function of another header, so the linker never
+/// merges an AVX2 copy of a function into code that runs on a CPU without AVX2.
+///
+/// The passes (Box2D v3's soft step, per point of each contact):
+/// - Normal: the separation s (m) is recomputed from the bodies' current poses through the
+///   point's surface anchors. Apart (s > 0) the bodies may close the gap within the sub-step
+///   (vn >= -s / h, a speculative contact); overlapping, the biased pass pushes out softly at
+///   min(bias_rate |s|, push_max_speed) (twice as stiff against a body contacts never move);
+///   the relax pass is rigid, adds no push-out speed and leaves points still apart alone (so
+///   no push-out speed stays in the velocities). A point bouncing in this sub-step keeps its
+///   bounce's rigid target (`contact_bounce.h`); a waiting one sits the sub-step out. Normal
+///   impulses stay >= 0.
+/// - Friction, relax pass: Coulomb, clamped to mu_s Pn while the contact sticks and mu_d Pn once
+///   it slides, against normal impulses without the soft push-out (so the push-out never raises
+///   the limit). `friction_at_limit` records where the clamp acted.
+/// - Friction, biased pass, sticking contacts only: each point's tangential speed is driven to
+///   the speed that takes back its drift from where it stuck (`stick_*`) at the contact's own
+///   `bias_rate`, no faster than push_max_speed, within mu_s Pn. Without it a loaded point
+///   slips a little every sub-step (the Gauss-Seidel residual) and the slips add up: the
+///   100-row pyramid spread 12 cm sideways in 500 steps, 0.5 cm with it. Tried and rejected:
+///   the pull-back in the relax pass (the stick/slip state read it as slip and broke resting
+///   contacts loose) and a soft (spring-damper) friction (weaker: the pyramid sank 10 cm more).
+/// - Warm starting applies the accumulated impulses, normal and tangent, first.
+
+#include "core/contact_block.h"
+#include "core/solver_body.h"
+
+#include <cstdint>
+#include <cstring>
+
+namespace impulse2d {
+namespace {
+
+template <int Lanes>
+struct LaneTypes;
+template <>
+struct LaneTypes<4> {
+  typedef float Floats __attribute__((vector_size(16)));
+  typedef std::int32_t Masks __attribute__((vector_size(16)));
+};
+template <>
+struct LaneTypes<8> {
+  typedef float Floats __attribute__((vector_size(32)));
+  typedef std::int32_t Masks __attribute__((vector_size(32)));
+};
+
+template <class Vector>
+Vector load_lanes(const void* source) {
+  Vector value;
+  std::memcpy(&value, source, sizeof value);
+  return value;
+}
+
+template <class Vector>
+void store_lanes(void* target, Vector value) {
+  std::memcpy(target, &value, sizeof value);
+}
+
+// a where mask is set, b elsewhere.
+template <class Floats, class Masks>
+Floats select_lanes(Masks mask, Floats a, Floats b) {
+  return (Floats)(((Masks)a & mask) | ((Masks)b & ~mask));
+}
+
+template <class Floats>
+Floats splat(float value) {
+  Floats lanes = {};
+  return lanes + value;
+}
+
+// True when some lane of the mask is set.
+template <int Lanes, class Masks>
+bool any_lane(Masks mask) {
+  std::int32_t bits = 0;
+  for (int lane = 0; lane < Lanes; ++lane) bits |= mask[lane];
+  return bits != 0;
+}
+
+// The velocities and poses of one side's bodies, lane by lane.
+template <int Lanes>
+struct BodyLanes {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  Floats velocity_x, velocity_y, angular_velocity;
+  Floats position_x, position_y, cosine, sine;
+};
+
+// The bodies of a block side, lane by lane: each 32-byte SolverBody is loaded whole and the
+// rows are transposed into fields with shuffles (scalar inserts would go through the stack and
+// stall on store forwarding). __builtin_shufflevector: GCC >= 12 and Clang. The 8-lane form
+// exists only where it is compiled for AVX2.
+#if defined(__AVX2__)
+inline __attribute__((always_inline)) BodyLanes<8> gather_8_bodies(const SolverBody* bodies,
+                                                                   const std::int32_t* slots) {
+  typedef LaneTypes<8>::Floats F;
+  F r[8];
+  for (int lane = 0; lane < 8; ++lane) r[lane] = load_lanes<F>(&bodies[slots[lane]]);
+  F t[8];
+  for (int i = 0; i < 4; ++i) {
+    t[2 * i] = __builtin_shufflevector(r[2 * i], r[2 * i + 1], 0, 8, 1, 9, 4, 12, 5, 13);
+    t[2 * i + 1] = __builtin_shufflevector(r[2 * i], r[2 * i + 1], 2, 10, 3, 11, 6, 14, 7, 15);
+  }
+  F u[8];
+  for (int i = 0; i < 2; ++i) {
+    const F& low_a = t[4 * i];
+    const F& high_a = t[4 * i + 1];
+    const F& low_b = t[4 * i + 2];
+    const F& high_b = t[4 * i + 3];
+    u[4 * i] = __builtin_shufflevector(low_a, low_b, 0, 1, 8, 9, 4, 5, 12, 13);
+    u[4 * i + 1] = __builtin_shufflevector(low_a, low_b, 2, 3, 10, 11, 6, 7, 14, 15);
+    u[4 * i + 2] = __builtin_shufflevector(high_a, high_b, 0, 1, 8, 9, 4, 5, 12, 13);
+    u[4 * i + 3] = __builtin_shufflevector(high_a, high_b, 2, 3, 10, 11, 6, 7, 14, 15);
+  }
+  // u[k] holds field k of bodies 0-3 then field k + 4 of bodies 0-3; u[4 + k] bodies 4-7.
+  BodyLanes<8> lanes;
+  lanes.velocity_x = __builtin_shufflevector(u[0], u[4], 0, 1, 2, 3, 8, 9, 10, 11);
+  lanes.velocity_y = __builtin_shufflevector(u[1], u[5], 0, 1, 2, 3, 8, 9, 10, 11);
+  lanes.angular_velocity = __builtin_shufflevector(u[2], u[6], 0, 1, 2, 3, 8, 9, 10, 11);
+  lanes.position_x = __builtin_shufflevector(u[0], u[4], 4, 5, 6, 7, 12, 13, 14, 15);
+  lanes.position_y = __builtin_shufflevector(u[1], u[5], 4, 5, 6, 7, 12, 13, 14, 15);
+  lanes.cosine = __builtin_shufflevector(u[2], u[6], 4, 5, 6, 7, 12, 13, 14, 15);
+  lanes.sine = __builtin_shufflevector(u[3], u[7], 4, 5, 6, 7, 12, 13, 14, 15);
+  return lanes;
+}
+#endif
+
+inline __attribute__((always_inline)) BodyLanes<4> gather_4_bodies(const SolverBody* bodies,
+                                                                   const std::int32_t* slots) {
+  typedef LaneTypes<4>::Floats F;
+  F velocity[4], pose[4];  // per lane: (vx, vy, w, unused) and (px, py, cos, sin)
+  for (int lane = 0; lane < 4; ++lane) {
+    const SolverBody* body = &bodies[slots[lane]];
+    velocity[lane] = load_lanes<F>(&body->velocity_x);
+    pose[lane] = load_lanes<F>(&body->position_x);
+  }
+  BodyLanes<4> lanes;
+  F* fields[2][4] = {{&lanes.velocity_x, &lanes.velocity_y, &lanes.angular_velocity, nullptr},
+                     {&lanes.position_x, &lanes.position_y, &lanes.cosine, &lanes.sine}};
+  const F* rows[2] = {velocity, pose};
+  for (int half = 0; half < 2; ++half) {
+    const F* r = rows[half];
+    const F t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 1, 5);
+    const F t1 = __builtin_shufflevector(r[0], r[1], 2, 6, 3, 7);
+    const F t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 1, 5);
+    const F t3 = __builtin_shufflevector(r[2], r[3], 2, 6, 3, 7);
+    *fields[half][0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    *fields[half][1] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    *fields[half][2] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    if (fields[half][3]) *fields[half][3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+  }
+  return lanes;
+}
+
+template <int Lanes>
+inline __attribute__((always_inline)) BodyLanes<Lanes> gather_bodies(const SolverBody* bodies,
+                                                                     const std::int32_t* slots) {
+#if defined(__AVX2__)
+  if constexpr (Lanes == 8) return gather_8_bodies(bodies, slots);
+#endif
+  if constexpr (Lanes == 4) return gather_4_bodies(bodies, slots);
+}
+
+// Writes the velocities back to the bodies the contacts move (never to a static, kinematic or
+// unused lane's slot, which other lanes may share).
+template <int Lanes>
+void scatter_velocities(SolverBody* bodies, const std::int32_t* slots, const std::int32_t* moves,
+                        const BodyLanes<Lanes>& lanes) {
+  for (int lane = 0; lane < Lanes; ++lane) {
+    if (!moves[lane]) continue;
+    SolverBody& body = bodies[slots[lane]];
+    body.velocity_x = lanes.velocity_x[lane];
+    body.velocity_y = lanes.velocity_y[lane];
+    body.angular_velocity = lanes.angular_velocity[lane];
+  }
+}
+
+// The block's per-contact constants and both sides' bodies.
+template <int Lanes>
+struct BlockState {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  BodyLanes<Lanes> a, b;
+  Floats normal_x, normal_y, tangent_x, tangent_y;
+  Floats inverse_mass_a, inverse_mass_b, inverse_inertia_a, inverse_inertia_b;
+
+  BlockState(const ContactBlock<Lanes>& block, const SolverBody* bodies)
+      : a(gather_bodies<Lanes>(bodies, block.body_a)),
+        b(gather_bodies<Lanes>(bodies, block.body_b)),
+        normal_x(load_lanes<Floats>(block.normal_x)),
+        normal_y(load_lanes<Floats>(block.normal_y)),
+        tangent_x(normal_y),
+        tangent_y(-normal_x),
+        inverse_mass_a(load_lanes<Floats>(block.inverse_mass_a)),
+        inverse_mass_b(load_lanes<Floats>(block.inverse_mass_b)),
+        inverse_inertia_a(load_lanes<Floats>(block.inverse_inertia_a)),
+        inverse_inertia_b(load_lanes<Floats>(block.inverse_inertia_b)) {}
+
+  // B's velocity at the point relative to A's, along (direction_x, direction_y), m/s.
+  Floats relative_speed(Floats anchor_ax, Floats anchor_ay, Floats anchor_bx, Floats anchor_by,
+                        Floats direction_x, Floats direction_y) const {
+    const Floats velocity_bx = b.velocity_x + -b.angular_velocity * anchor_by;
+    const Floats velocity_by = b.velocity_y + b.angular_velocity * anchor_bx;
+    const Floats velocity_ax = a.velocity_x + -a.angular_velocity * anchor_ay;
+    const Floats velocity_ay = a.velocity_y + a.angular_velocity * anchor_ax;
+    return (velocity_bx - velocity_ax) * direction_x + (velocity_by - velocity_ay) * direction_y;
+  }
+
+  // Applies the impulse (N s) to B at its anchor and the opposite to A.
+  void apply(Floats anchor_ax, Floats anchor_ay, Floats anchor_bx, Floats anchor_by,
+             Floats impulse_x, Floats impulse_y) {
+    a.velocity_x -= impulse_x * inverse_mass_a;
+    a.velocity_y -= impulse_y * inverse_mass_a;
+    a.angular_velocity -= inverse_inertia_a * (anchor_ax * impulse_y - anchor_ay * impulse_x);
+    b.velocity_x += impulse_x * inverse_mass_b;
+    b.velocity_y += impulse_y * inverse_mass_b;
+    b.angular_velocity += inverse_inertia_b * (anchor_bx * impulse_y - anchor_by * impulse_x);
+  }
+
+  // Offset (m) along (direction_x, direction_y) of B's local point from A's, both placed by
+  // the bodies' current poses.
+  Floats offset_along(Floats local_ax, Floats local_ay, Floats local_bx, Floats local_by,
+                      Floats direction_x, Floats direction_y) const {
+    const Floats world_ax = (a.cosine * local_ax - a.sine * local_ay) + a.position_x;
+    const Floats world_ay = (a.sine * local_ax + a.cosine * local_ay) + a.position_y;
+    const Floats world_bx = (b.cosine * local_bx - b.sine * local_by) + b.position_x;
+    const Floats world_by = (b.sine * local_bx + b.cosine * local_by) + b.position_y;
+    return (world_bx - world_ax) * direction_x + (world_by - world_ay) * direction_y;
+  }
+
+  void store(const ContactBlock<Lanes>& block, SolverBody* bodies) const {
+    scatter_velocities<Lanes>(bodies, block.body_a, block.moves_a, a);
+    scatter_velocities<Lanes>(bodies, block.body_b, block.moves_b, b);
+  }
+};
+
+// v clamped to [low, high] (std::clamp's comparisons, lane by lane).
+template <class Floats>
+Floats clamp_lanes(Floats value, Floats low, Floats high) {
+  return select_lanes(value < low, low, select_lanes(high < value, high, value));
+}
+
+// The soft step's normal constraint of one point slot.
+template <int Lanes>
+void solve_normal(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
+                  BlockPoint<Lanes>& point, const WidePassSettings& pass) {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  typedef typename LaneTypes<Lanes>::Masks Masks;
+  const Floats zero = {};
+  const Floats one = splat<Floats>(1.0f);
+  const Masks present = load_lanes<Masks>(point.present);
+  const Masks waiting = load_lanes<Masks>(point.waiting);
+  const Masks bouncing = load_lanes<Masks>(point.bouncing);
+  const Floats velocity_bias = load_lanes<Floats>(point.velocity_bias);
+  const Floats separation = state.offset_along(
+      load_lanes<Floats>(point.surface_ax), load_lanes<Floats>(point.surface_ay),
+      load_lanes<Floats>(point.surface_bx), load_lanes<Floats>(point.surface_by),
+      state.normal_x, state.normal_y);
+  const Masks apart = separation > zero;
+
+  Masks active = present & ~waiting;
+  Floats target_speed, mass_scale, impulse_scale;
+  if (pass.use_bias) {
+    // Apart: may approach until the gap closes; touching: pushed out softly.
+    const Floats push_out = -load_lanes<Floats>(block.bias_rate) * separation;
+    const Floats push_max = splat<Floats>(pass.push_max_speed);
+    const Floats soft_target = select_lanes(push_max < push_out, push_max, push_out);
+    const Floats gap_target = -separation * splat<Floats>(pass.inverse_substep);
+    target_speed = select_lanes(bouncing, velocity_bias, select_lanes(apart, gap_target, soft_target));
+    const Masks rigid = bouncing | apart;
+    mass_scale = select_lanes(rigid, one, load_lanes<Floats>(block.mass_scale));
+    impulse_scale = select_lanes(rigid, zero, load_lanes<Floats>(block.impulse_scale));
+  } else {
+    // Relaxing takes the push-out speed off touching points; points still apart keep theirs.
+    active &= bouncing | ~apart;
+    target_speed = select_lanes(bouncing, velocity_bias, zero);
+    mass_scale = one;
+    impulse_scale = zero;
+  }
+  if (!any_lane<Lanes>(active)) return;
+
+  const Floats anchor_ax = load_lanes<Floats>(point.anchor_ax);
+  const Floats anchor_ay = load_lanes<Floats>(point.anchor_ay);
+  const Floats anchor_bx = load_lanes<Floats>(point.anchor_bx);
+  const Floats anchor_by = load_lanes<Floats>(point.anchor_by);
+  const Floats normal_impulse = load_lanes<Floats>(point.normal_impulse);
+  const Floats normal_speed = state.relative_speed(anchor_ax, anchor_ay, anchor_bx, anchor_by,
+                                                   state.normal_x, state.normal_y);
+  const Floats unclamped = normal_impulse -
+                           load_lanes<Floats>(point.normal_mass) * mass_scale *
+                               (normal_speed - target_speed) -
+                           impulse_scale * normal_impulse;
+  const Floats accumulated = select_lanes(unclamped < zero, zero, unclamped);
+  const Floats change = select_lanes(active, accumulated - normal_impulse, zero);
+  store_lanes(point.normal_impulse, select_lanes(active, accumulated, normal_impulse));
+  state.apply(anchor_ax, anchor_ay, anchor_bx, anchor_by, state.normal_x * change,
+              state.normal_y * change);
+}
+
+// Friction of one point slot: anchored static friction in the biased pass (sticking contacts
+// only), Coulomb friction with the contact's current coefficient in the relax pass.
+template <int Lanes>
+void solve_friction(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
+                    BlockPoint<Lanes>& point, const WidePassSettings& pass) {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  typedef typename LaneTypes<Lanes>::Masks Masks;
+  const Floats zero = {};
+  const Masks present = load_lanes<Masks>(point.present);
+  const Masks sliding = load_lanes<Masks>(block.sliding);
+  const Masks active = pass.use_bias ? present & ~sliding : present;
+  if (!any_lane<Lanes>(active)) return;
+
+  const Floats anchor_ax = load_lanes<Floats>(point.anchor_ax);
+  const Floats anchor_ay = load_lanes<Floats>(point.anchor_ay);
+  const Floats anchor_bx = load_lanes<Floats>(point.anchor_bx);
+  const Floats anchor_by = load_lanes<Floats>(point.anchor_by);
+  const Floats tangent_impulse = load_lanes<Floats>(point.tangent_impulse);
+  const Floats tangent_mass = load_lanes<Floats>(point.tangent_mass);
+  const Floats normal_impulse = load_lanes<Floats>(point.normal_impulse);
+  const Floats tangent_speed = state.relative_speed(anchor_ax, anchor_ay, anchor_bx, anchor_by,
+                                                    state.tangent_x, state.tangent_y);
+  Floats unclamped, limit;
+  if (pass.use_bias) {
+    // Drive the point back to where it stuck, at the contact's stiffness.
+    const Floats drift = state.offset_along(
+        load_lanes<Floats>(point.stick_ax), load_lanes<Floats>(point.stick_ay),
+        load_lanes<Floats>(point.stick_bx), load_lanes<Floats>(point.stick_by),
+        state.tangent_x, state.tangent_y) - load_lanes<Floats>(point.stick_offset);
+    const Floats push_max = splat<Floats>(pass.push_max_speed);
+    const Floats target_speed =
+        clamp_lanes(-load_lanes<Floats>(block.bias_rate) * drift, -push_max, push_max);
+    unclamped = tangent_impulse - tangent_mass * (tangent_speed - target_speed);
+    limit = load_lanes<Floats>(block.static_friction) * normal_impulse;
+  } else {
+    unclamped = tangent_impulse - tangent_speed * tangent_mass;
+    const Floats coefficient = select_lanes(sliding, load_lanes<Floats>(block.dynamic_friction),
+                                            load_lanes<Floats>(block.static_friction));
+    limit = coefficient * normal_impulse;
+  }
+  const Floats accumulated = clamp_lanes(unclamped, -limit, limit);
+  if (!pass.use_bias) store_lanes(point.friction_at_limit, present & (accumulated != unclamped));
+  const Floats change = select_lanes(active, accumulated - tangent_impulse, zero);
+  store_lanes(point.tangent_impulse, select_lanes(active, accumulated, tangent_impulse));
+  state.apply(anchor_ax, anchor_ay, anchor_bx, anchor_by, state.tangent_x * change,
+              state.tangent_y * change);
+}
+
+template <int Lanes>
+void solve_blocks(ContactBlock<Lanes>* blocks, std::size_t count, SolverBody* bodies,
+                  const WidePassSettings& pass) {
+  for (std::size_t i = 0; i < count; ++i) {
+    ContactBlock<Lanes>& block = blocks[i];
+    BlockState<Lanes> state(block, bodies);
+    for (BlockPoint<Lanes>& point : block.points) solve_normal(state, block, point, pass);
+    if (pass.friction) {
+      for (BlockPoint<Lanes>& point : block.points) solve_friction(state, block, point, pass);
+    }
+    state.store(block, bodies);
+  }
+}
+
+template <int Lanes>
+void warm_start_blocks(const ContactBlock<Lanes>* blocks, std::size_t count, SolverBody* bodies) {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  for (std::size_t i = 0; i < count; ++i) {
+    const ContactBlock<Lanes>& block = blocks[i];
+    BlockState<Lanes> state(block, bodies);
+    for (const BlockPoint<Lanes>& point : block.points) {
+      const Floats normal_impulse = load_lanes<Floats>(point.normal_impulse);
+      const Floats tangent_impulse = load_lanes<Floats>(point.tangent_impulse);
+      state.apply(load_lanes<Floats>(point.anchor_ax), load_lanes<Floats>(point.anchor_ay),
+                  load_lanes<Floats>(point.anchor_bx), load_lanes<Floats>(point.anchor_by),
+                  state.normal_x * normal_impulse + state.tangent_x * tangent_impulse,
+                  state.normal_y * normal_impulse + state.tangent_y * tangent_impulse);
+    }
+    state.store(block, bodies);
+  }
+}
+
+}  // namespace
+}  // namespace impulse2d

@@ -1,0 +1,256 @@
+#include "core/wide_contact_solver.h"
+
+#include "core/contact_solver_internal.h"
+#include "core/wide_contact_kernels.h"
+
+
+namespace impulse2d {
+
+namespace {
+
+constexpr std::int32_t lane_set = -1;  // a true lane in the blocks' masks
+static_assert(max_manifold_points == 2, "ContactBlock has two point slots per lane");
+
+// Calls visit(point slot, lane point, contact point) for every used point of every lane.
+template <int Lanes, class Blocks, class Contacts, class Visit>
+void for_each_point(Blocks& blocks, Contacts& contacts, Visit visit) {
+  for (auto& block : blocks) {
+    for (int lane = 0; lane < Lanes; ++lane) {
+      const std::int32_t index = block.contact_index[lane];
+      if (index < 0) continue;
+      auto& contact = contacts[static_cast<std::size_t>(index)];
+      for (int i = 0; i < contact.point_count; ++i) visit(block.points[i], lane, contact.points[i]);
+    }
+  }
+}
+
+void load_velocity(SolverBody& solver_body, const Body& body) {
+  solver_body.velocity_x = body.linear_velocity.x;
+  solver_body.velocity_y = body.linear_velocity.y;
+  solver_body.angular_velocity = body.angular_velocity;
+}
+
+// Point slot of lane `lane` left without a point: nothing to solve, no impulse to apply.
+template <int Lanes>
+void clear_point(BlockPoint<Lanes>& slot, int lane) {
+  slot.normal_mass[lane] = 0.0f;
+  slot.tangent_mass[lane] = 0.0f;
+  slot.normal_impulse[lane] = 0.0f;
+  slot.tangent_impulse[lane] = 0.0f;
+  slot.present[lane] = 0;
+  slot.waiting[lane] = 0;
+  slot.bouncing[lane] = 0;
+  slot.friction_at_limit[lane] = 0;
+}
+
+// An unused lane: no contact, no points, body slot 0 (never written: it moves nothing).
+template <int Lanes>
+void clear_lane(ContactBlock<Lanes>& block, int lane) {
+  block.body_a[lane] = 0;
+  block.body_b[lane] = 0;
+  block.moves_a[lane] = 0;
+  block.moves_b[lane] = 0;
+  block.contact_index[lane] = -1;
+  block.sliding[lane] = 0;
+  block.inverse_mass_a[lane] = 0.0f;
+  block.inverse_mass_b[lane] = 0.0f;
+  block.inverse_inertia_a[lane] = 0.0f;
+  block.inverse_inertia_b[lane] = 0.0f;
+  for (BlockPoint<Lanes>& slot : block.points) clear_point(slot, lane);
+}
+
+// One contact into lane `lane` of a block.
+template <int Lanes>
+void pack_contact(const Contact& contact, std::uint32_t index, const SolverContext& context,
+                  ContactBlock<Lanes>& block, int lane) {
+  const PairMass& mass = contact.mass;
+  const bool against_fixed = mass.inverse_mass_a == 0.0f || mass.inverse_mass_b == 0.0f;
+  const Softness& softness = against_fixed ? context.static_softness : context.dynamic_softness;
+  block.body_a[lane] = static_cast<std::int32_t>(contact.body_a.index);
+  block.body_b[lane] = static_cast<std::int32_t>(contact.body_b.index);
+  block.moves_a[lane] = mass.inverse_mass_a > 0.0f || mass.inverse_inertia_a > 0.0f;
+  block.moves_b[lane] = mass.inverse_mass_b > 0.0f || mass.inverse_inertia_b > 0.0f;
+  block.contact_index[lane] = static_cast<std::int32_t>(index);
+  block.sliding[lane] = contact.sliding ? lane_set : 0;
+  block.normal_x[lane] = contact.normal.x;
+  block.normal_y[lane] = contact.normal.y;
+  block.inverse_mass_a[lane] = mass.inverse_mass_a;
+  block.inverse_mass_b[lane] = mass.inverse_mass_b;
+  block.inverse_inertia_a[lane] = mass.inverse_inertia_a;
+  block.inverse_inertia_b[lane] = mass.inverse_inertia_b;
+  block.static_friction[lane] = contact.static_friction;
+  block.dynamic_friction[lane] = contact.dynamic_friction;
+  block.bias_rate[lane] = softness.bias_rate;
+  block.mass_scale[lane] = softness.mass_scale;
+  block.impulse_scale[lane] = softness.impulse_scale;
+  for (int i = 0; i < contact.point_count; ++i) {
+    const ContactPoint& point = contact.points[i];
+    BlockPoint<Lanes>& slot = block.points[i];
+    slot.anchor_ax[lane] = point.anchor_a.x;
+    slot.anchor_ay[lane] = point.anchor_a.y;
+    slot.anchor_bx[lane] = point.anchor_b.x;
+    slot.anchor_by[lane] = point.anchor_b.y;
+    slot.surface_ax[lane] = point.local_anchor_a.x;
+    slot.surface_ay[lane] = point.local_anchor_a.y;
+    slot.surface_bx[lane] = point.local_anchor_b.x;
+    slot.surface_by[lane] = point.local_anchor_b.y;
+    slot.stick_ax[lane] = point.recycle_anchor_a.x;
+    slot.stick_ay[lane] = point.recycle_anchor_a.y;
+    slot.stick_bx[lane] = point.recycle_anchor_b.x;
+    slot.stick_by[lane] = point.recycle_anchor_b.y;
+    slot.stick_offset[lane] = point.stick_offset;
+    slot.normal_mass[lane] = point.normal_mass;
+    slot.tangent_mass[lane] = point.tangent_mass;
+    slot.normal_impulse[lane] = point.normal_impulse;
+    slot.tangent_impulse[lane] = point.tangent_impulse;
+    slot.velocity_bias[lane] = point.velocity_bias;
+    slot.present[lane] = lane_set;
+    slot.waiting[lane] = point.waiting ? lane_set : 0;
+    slot.bouncing[lane] = point.bouncing ? lane_set : 0;
+    slot.friction_at_limit[lane] = 0;
+  }
+  for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block.points[i], lane);
+}
+
+}  // namespace
+
+int WideContactSolver::widest_lanes() {
+#if defined(__x86_64__)
+  if (wide_contact_kernels_8_available()) return 8;
+#endif
+  return 4;
+}
+
+template <>
+std::vector<ContactBlock<4>>& WideContactSolver::blocks<4>() {
+  return blocks_4_;
+}
+
+template <>
+std::vector<ContactBlock<8>>& WideContactSolver::blocks<8>() {
+  return blocks_8_;
+}
+
+template <int Lanes>
+void WideContactSolver::pack(const std::vector<Contact>& contacts, const SolverContext& context) {
+  // Each colour fills blocks of Lanes contacts (its last one partly); the overflow goes one
+  // contact per block, as its contacts may share bodies.
+  const int colours = colouring_.colour_count();
+  std::size_t block_count = colouring_.range_start(colours + 1) - colouring_.range_start(colours);
+  for (int colour = 0; colour < colours; ++colour) {
+    const std::size_t size = colouring_.range_start(colour + 1) - colouring_.range_start(colour);
+    block_count += (size + Lanes - 1) / Lanes;
+  }
+  std::vector<ContactBlock<Lanes>>& packed = blocks<Lanes>();
+  packed.resize(block_count);  // every lane is written below: packed or cleared
+  const std::vector<std::uint32_t>& order = colouring_.order();
+  std::size_t block = 0;
+  for (int colour = 0; colour <= colours; ++colour) {
+    const int per_block = colour == colours ? 1 : Lanes;
+    int lane = 0;
+    for (std::size_t k = colouring_.range_start(colour); k < colouring_.range_start(colour + 1); ++k) {
+      pack_contact(contacts[order[k]], order[k], context, packed[block], lane);
+      if (++lane < per_block) continue;
+      for (int unused = lane; unused < Lanes; ++unused) clear_lane(packed[block], unused);
+      lane = 0;
+      ++block;
+    }
+    if (lane == 0) continue;
+    for (int unused = lane; unused < Lanes; ++unused) clear_lane(packed[block], unused);
+    ++block;
+  }
+}
+
+void WideContactSolver::begin_step(const std::vector<Contact>& contacts,
+                                   const std::vector<Body>& bodies, const SolverContext& context,
+                                   int lanes) {
+  if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
+  lanes_ = lanes;
+  colouring_.colour(contacts, bodies.size());
+  if (lanes_ == 8) {
+    pack<8>(contacts, context);
+  } else {
+    pack<4>(contacts, context);
+  }
+  bodies_.resize(bodies.size());
+  load_motion(bodies);
+}
+
+void WideContactSolver::load_velocities(const std::vector<Body>& bodies) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) load_velocity(bodies_[i], bodies[i]);
+}
+
+void WideContactSolver::load_motion(const std::vector<Body>& bodies) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    SolverBody& solver_body = bodies_[i];
+    load_velocity(solver_body, bodies[i]);
+    solver_body.position_x = bodies[i].transform.position.x;
+    solver_body.position_y = bodies[i].transform.position.y;
+    solver_body.cosine = bodies[i].transform.rotation.cosine;
+    solver_body.sine = bodies[i].transform.rotation.sine;
+  }
+}
+
+void WideContactSolver::store_velocities(std::vector<Body>& bodies) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    Body& body = bodies[i];
+    if (body.type != BodyType::Dynamic) continue;  // contacts never move the others
+    body.linear_velocity = vec2(bodies_[i].velocity_x, bodies_[i].velocity_y);
+    body.angular_velocity = bodies_[i].angular_velocity;
+  }
+}
+
+void WideContactSolver::load_points(const std::vector<Contact>& contacts) {
+  auto load = [](auto& slot, int lane, const ContactPoint& point) {
+    slot.normal_impulse[lane] = point.normal_impulse;
+    slot.tangent_impulse[lane] = point.tangent_impulse;
+    slot.velocity_bias[lane] = point.velocity_bias;
+    slot.waiting[lane] = point.waiting ? lane_set : 0;
+    slot.bouncing[lane] = point.bouncing ? lane_set : 0;
+  };
+  if (lanes_ == 8) {
+    for_each_point<8>(blocks_8_, contacts, load);
+  } else {
+    for_each_point<4>(blocks_4_, contacts, load);
+  }
+}
+
+void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
+  auto store = [](const auto& slot, int lane, ContactPoint& point) {
+    point.normal_impulse = slot.normal_impulse[lane];
+    point.tangent_impulse = slot.tangent_impulse[lane];
+    point.friction_at_limit = slot.friction_at_limit[lane] != 0;
+  };
+  if (lanes_ == 8) {
+    for_each_point<8>(blocks_8_, contacts, store);
+  } else {
+    for_each_point<4>(blocks_4_, contacts, store);
+  }
+}
+
+void WideContactSolver::warm_start() {
+#if defined(__x86_64__)
+  if (lanes_ == 8) {
+    warm_start_contact_blocks_8(blocks_8_.data(), blocks_8_.size(), bodies_.data());
+    return;
+  }
+#endif
+  warm_start_contact_blocks_4(blocks_4_.data(), blocks_4_.size(), bodies_.data());
+}
+
+void WideContactSolver::solve(const SolverContext& context, bool use_bias) {
+  WidePassSettings pass;
+  pass.inverse_substep = 1.0f / context.substep;
+  pass.push_max_speed = context.push_max_speed;
+  pass.use_bias = use_bias;
+  pass.friction = context.friction;
+#if defined(__x86_64__)
+  if (lanes_ == 8) {
+    solve_contact_blocks_8(blocks_8_.data(), blocks_8_.size(), bodies_.data(), pass);
+    return;
+  }
+#endif
+  solve_contact_blocks_4(blocks_4_.data(), blocks_4_.size(), bodies_.data(), pass);
+}
+
+}  // namespace impulse2d
