@@ -4,8 +4,8 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
+
+#include "tools/golden/file_io.h"
 
 namespace impulse2d::testing {
 namespace {
@@ -15,13 +15,6 @@ std::string quoted(const std::string& text) {
   std::string out = "'";
   for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 /// A fontconfig file that sees only the DejaVu faces and fixes how glyphs are rasterised:
@@ -66,12 +59,13 @@ std::string ChromiumResult::describe() const {
 
 ChromiumResult load_in_chromium(const ChromiumRun& run) {
   const std::filesystem::path fonts = run.work_dir / "fonts.conf";
-  std::ofstream(fonts) << font_config(run.work_dir / "fontconfig-cache");
+  golden::write_text_file_atomically(fonts, font_config(run.work_dir / "fontconfig-cache"));
   ChromiumResult result;
   result.screenshot = run.work_dir / "screenshot.png";
   const std::filesystem::path dom = run.work_dir / "dom.html";
   const std::filesystem::path log = run.work_dir / "chromium.log";
   // timeout(1) signals the browser's whole process group; -k kills it when TERM is ignored.
+  // --no-sandbox: Chromium refuses to start its sandbox as root, which CI containers are.
   // --virtual-time-budget lets the page load its frames and run its scripts before the
   // capture without waiting in real time.
   result.command = "FONTCONFIG_FILE=" + quoted(fonts.string()) + " timeout -k 5 " +
@@ -87,8 +81,8 @@ ChromiumResult load_in_chromium(const ChromiumRun& run) {
       std::system((result.command + " > " + quoted(dom.string()) + " 2> " + quoted(log.string()))
                       .c_str());
   result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.dom = read_text(dom);
-  result.log = read_text(log);
+  result.dom = golden::read_text_file(dom);
+  result.log = golden::read_text_file(log);
   return result;
 }
 

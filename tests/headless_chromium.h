@@ -24,11 +24,11 @@ struct ChromiumRun {
 
 /// What came back.
 struct ChromiumResult {
-  std::string command;                 ///< the shell command that ran
-  int status = -1;                     ///< the browser's exit status (124: timed out)
-  std::string dom;                     ///< the document after its scripts ran (--dump-dom)
-  std::filesystem::path screenshot;    ///< the window as a PNG (absent when it failed)
-  std::string log;                     ///< the browser's standard error
+  std::string command;               ///< the shell command that ran
+  int status = -1;                   ///< the browser's exit status (124: timed out)
+  std::string dom;                   ///< the document after its scripts ran (--dump-dom)
+  std::filesystem::path screenshot;  ///< the window as a PNG (absent when it failed)
+  std::string log;                   ///< the browser's standard error
   /// The command, status and the log's last lines, for a failure message.
   std::string describe() const;
 };

@@ -1,12 +1,12 @@
 /// @file screenshot_golden.cpp
 #include "tests/screenshot_golden.h"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "tools/golden/compare.h"
 #include "tools/golden/diff_images.h"
 #include "tools/golden/error.h"
+#include "tools/golden/file_io.h"
 #include "tools/golden/image.h"
 #include "tools/golden/update_mode.h"
 
@@ -18,9 +18,8 @@ ScreenshotCheck check_screenshot(const std::string& name, const fs::path& screen
                                  const CheckSettings& settings) {
   const fs::path golden = golden_png_path(settings.golden_dir, name);
   const fs::path sidecar_file = fs::path(golden).replace_extension(".json");
-  std::ifstream sidecar_stream(sidecar_file);
-  if (!sidecar_stream) throw GoldenError("cannot read '" + sidecar_file.string() + "'");
-  const nlohmann::json sidecar = nlohmann::json::parse(sidecar_stream, nullptr, false);
+  const nlohmann::json sidecar =
+      nlohmann::json::parse(read_text_file(sidecar_file), nullptr, false);
   if (!sidecar.is_object() || !sidecar.contains("tolerance") ||
       !sidecar.value("tolerance_reason", nlohmann::json()).is_string() ||
       !sidecar.value("description", nlohmann::json()).is_string()) {

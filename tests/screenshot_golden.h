@@ -15,9 +15,9 @@ namespace impulse2d::testing {
 
 /// The verdict of `check_screenshot`.
 struct ScreenshotCheck {
-  bool passed = false;        ///< exact or within tolerance, or the golden was written
+  bool passed = false;          ///< exact or within tolerance, or the golden was written
   bool golden_written = false;  ///< the update mode wrote the screenshot as the golden
-  std::string message;        ///< the comparison, the reason for the tolerance, artifacts
+  std::string message;          ///< the comparison, the reason for the tolerance, artifacts
 };
 
 /// Compares `screenshot` with the golden `name` (e.g. "viewer/tutorial_frame3_normals") in
