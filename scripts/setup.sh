@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libdeflate-dev zlib1g-dev
   gnuplot-nox libbox2d-dev libchipmunk-dev
   clang libclang-rt-14-dev doxygen
+  ffmpeg chromium fonts-dejavu-core
 )
 
 missing=()

@@ -10,12 +10,24 @@ impulse2d_add_test(test_cli
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cli.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_conventions.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_frames.cpp
-          ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_html.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_sheet.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_units.cpp
   LIBS impulse2d_demos impulse2d_golden)
 target_compile_definitions(test_cli PRIVATE IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>")
 add_dependencies(test_cli impulse2d)
+# The browser viewer of `render --html`: its page and data, and the page in headless Chromium
+# (skipped without it) against golden_images/viewer/ (failures leave their pictures in
+# GOLDEN_ARTIFACT_DIR, default <build>/golden_artifacts).
+impulse2d_add_test(test_cli_html
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_html.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/headless_chromium.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/screenshot_golden.cpp
+  LIBS impulse2d_demos impulse2d_golden)
+target_compile_definitions(test_cli_html PRIVATE
+  IMPULSE2D_CLI="$<TARGET_FILE:impulse2d>"
+  IMPULSE2D_GOLDEN_DIR="${PROJECT_SOURCE_DIR}/golden_images"
+  IMPULSE2D_GOLDEN_ARTIFACT_DIR="${PROJECT_BINARY_DIR}/golden_artifacts")
+add_dependencies(test_cli_html impulse2d)
 # The view options (HUD, legend, scales, camera, highlight) of `render` and `sheet`.
 impulse2d_add_test(test_cli_view
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_view.cpp

@@ -101,10 +101,11 @@ TEST_F(CliTest, WebmVideoAtTheAskedRateWithoutFrames) {
   EXPECT_NE(result.out.find("wrote 11 frames of pyramid to clip.webm"), std::string::npos)
       << result.out;
   if (std::system("command -v ffprobe > /dev/null 2>&1") == 0) {
-    EXPECT_EQ(first_line_of("ffprobe -v error -select_streams v:0 -show_entries "
-                            "stream=r_frame_rate -of csv=p=0 '" +
+    // Width, height, rate and the frames decoded: all 11 rendered, none dropped or repeated.
+    EXPECT_EQ(first_line_of("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                            "stream=width,height,r_frame_rate,nb_read_frames -of csv=p=0 '" +
                             (dir_ / "clip.webm").string() + "'"),
-              "12/1");
+              "96,64,12/1,11");
   }
 }
 

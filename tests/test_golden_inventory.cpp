@@ -1,6 +1,7 @@
 /// @file test_golden_inventory.cpp
 /// The golden set and the catalog agree: every built-in scene has goldens, every golden file
-/// is used by a test and has its partner, and each sidecar describes its catalog entry.
+/// is used by a test (the catalog's, or the browser viewer's) and has its partner, and each
+/// sidecar describes its catalog entry.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -9,6 +10,7 @@
 
 #include "demos/scene_registry.h"
 #include "tests/test_golden_support.h"
+#include "tests/viewer_golden.h"
 #include "tools/golden/inventory.h"
 #include "tools/golden/sidecar.h"
 #include "tools/golden_scenes/golden_catalog.h"
@@ -51,7 +53,9 @@ TEST(GoldenInventory, EveryGoldenFileIsUsedAndPaired) {
       << "golden PNGs without a .json sidecar:" << join(inventory.missing_sidecar);
   EXPECT_TRUE(inventory.missing_image.empty())
       << "golden sidecars without a .png:" << join(inventory.missing_image);
-  const std::vector<std::string> unused = unused_goldens(inventory.goldens, catalog_ids());
+  std::vector<std::string> used = catalog_ids();
+  used.push_back(impulse2d::testing::kViewerGolden);  // a browser screenshot, not a scene frame
+  const std::vector<std::string> unused = unused_goldens(inventory.goldens, used);
   EXPECT_TRUE(unused.empty()) << "goldens no test uses (delete them, or add them to "
                                  "tools/golden_scenes/golden_catalog.cpp):"
                               << join(unused);
