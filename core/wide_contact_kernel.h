@@ -77,14 +77,6 @@ Floats splat(float value) {
   return lanes + value;
 }
 
-// True when some lane of the mask is set.
-template <int Lanes, class Masks>
-bool any_lane(Masks mask) {
-  std::int32_t bits = 0;
-  for (int lane = 0; lane < Lanes; ++lane) bits |= mask[lane];
-  return bits != 0;
-}
-
 // The velocities and poses of one side's bodies, lane by lane.
 template <int Lanes>
 struct BodyLanes {
@@ -283,7 +275,6 @@ void solve_normal(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
     mass_scale = one;
     impulse_scale = zero;
   }
-  if (!any_lane<Lanes>(active)) return;
 
   const Floats anchor_ax = load_lanes<Floats>(point.anchor_ax);
   const Floats anchor_ay = load_lanes<Floats>(point.anchor_ay);
@@ -314,7 +305,6 @@ void solve_friction(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
   const Masks present = load_lanes<Masks>(point.present);
   const Masks sliding = load_lanes<Masks>(block.sliding);
   const Masks active = pass.use_bias ? present & ~sliding : present;
-  if (!any_lane<Lanes>(active)) return;
 
   const Floats anchor_ax = load_lanes<Floats>(point.anchor_ax);
   const Floats anchor_ay = load_lanes<Floats>(point.anchor_ay);
