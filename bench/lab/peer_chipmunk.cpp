@@ -133,6 +133,13 @@ class ChipmunkSimulation : public LabSimulation {
     read_states(states);
     return hash_states(states);
   }
+  void place_body(int index, vec2 position, vec2 velocity) override {
+    cpBody* body = bodies_.at(static_cast<std::size_t>(index));
+    cpBodySetPosition(body, cpv(position.x, position.y));
+    cpBodySetAngle(body, 0.0);
+    cpBodySetVelocity(body, cpv(velocity.x, velocity.y));
+    cpBodySetAngularVelocity(body, 0.0);
+  }
 
  private:
   cpSpace* space_;
