@@ -40,7 +40,8 @@ std::vector<std::string> stability_cells(const SceneResult& result, const Stabil
 void print_scene_table(std::ostream& out, const std::vector<Contender>& contenders,
                        const SceneResult& result) {
   out << "\n" << result.name << ": " << result.description << " (" << result.bodies
-      << " bodies, " << result.steps << " steps)\n";
+      << " bodies, " << result.steps << " steps; " << format("%.0f", result.seconds)
+      << " s in all)\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-24s %9s", "engine", "ms/step");
   out << line;

@@ -20,6 +20,7 @@ struct SceneResult {
   int steps = 0;                  ///< steps run
   bool scaling = false;           ///< part of the scaling series
   std::vector<Outcome> outcomes;  ///< per contender
+  double seconds = 0.0;           ///< wall-clock time of the whole scene (every engine), s
 };
 
 /// The table of one scene: per engine ms/step, its ratio to each peer, and the stability
