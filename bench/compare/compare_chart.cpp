@@ -1,6 +1,7 @@
 /// @file compare_chart.cpp
 #include "bench/compare/compare_chart.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -18,10 +19,13 @@ std::string write_scaling_chart(const std::string& directory,
   for (const Contender& contender : contenders) data << "," << contender.label;
   data << "\n";
   int points = 0;
+  int fewest = 0, most = 0;
   std::string steps;
   for (const SceneResult& result : results) {
     if (!result.scaling) continue;
     ++points;
+    fewest = fewest == 0 ? result.bodies : std::min(fewest, result.bodies);
+    most = std::max(most, result.bodies);
     steps = std::to_string(result.steps);
     data << result.bodies;
     for (const Outcome& outcome : result.outcomes) data << "," << outcome.ms_per_step;
@@ -46,6 +50,7 @@ std::string write_scaling_chart(const std::string& directory,
      << "set output OUTPUT\n"
      << "set datafile separator ','\n"
      << "set logscale xy\nset format x '%g'\nset format y '%g'\n"
+     << "set xrange [" << 0.7 * fewest << ":" << 1.4 * most << "]\n"
      << "set grid xtics ytics mxtics mytics lc rgb '#e6e6e6'\n"
      << "set key top left\n"
      << "set title \"" << lab::gnuplot_text("many pyramids (10 rows, 55 boxes each), " + steps +
