@@ -10,7 +10,7 @@
 // the log-log chart DIR/bench_scaling.png.
 //
 // Usage: bench_compare [--out DIR] [--quick | --smoke] [--only NAME,NAME...]
-//   full:    the step counts below (about 5.5 minutes of CPU on a 2-core Xeon at 2.5 GHz)
+//   full:    the step counts below (about 6 minutes of CPU on a 2-core Xeon at 2.5 GHz)
 //   --quick: a fifth of the steps
 //   --smoke: tiny scenes and 10 steps, seconds: proves the command runs (a ctest), not timing
 //   --only:  just the named scenes (the chart needs the scaling_* ones)
@@ -38,7 +38,7 @@ enum class Size { Full, Quick, Smoke };
 // The scenes and their full step counts: Box2D v3's own for its scenes (large_pyramid 500,
 // many_pyramids 200), 600 for the small pyramid, 300 for the ball pit (5 s: the balls have
 // landed), 600 for rain (10 s: the field is full and bodies recycle), 100 for each scaling
-// point (the pyramids at rest, every step alike). About 5.5 minutes of CPU on the machine
+// point (the pyramids at rest, every step alike). About 6 minutes of CPU on the machine
 // below; on a machine shared with other builds the wall-clock time is longer.
 std::vector<CompareScene> scenes(Size size) {
   if (size == Size::Smoke) {
