@@ -25,8 +25,6 @@ class WorldSimulation : public lab::LabSimulation {
   unsigned long long state_hash() const override { return world_.state_hash(); }
   bool diverged() const override { return !world_.diverged_bodies().empty(); }
   void place_body(int index, vec2 position, vec2 velocity) override;
-  /// The world being stepped.
-  const World& world() const { return world_; }
 
  private:
   World world_;
