@@ -52,19 +52,32 @@ double thread_cpu_ms() {
   return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
 }
 
-// Rain: every dynamic body below the field (or no longer finite) goes back above it.
-void recycle(const CompareScene& scene, lab::LabSimulation& run,
-             std::vector<lab::BodyState>& states, int& recycled) {
+// Rain's places above the field for one engine: the step each was last used in.
+struct RecycleState {
+  std::vector<long> last_used;  // per place; far in the past at first
+  int next = 0;                 // the place tried first
+};
+
+// Rain: every dynamic body below the field (or no longer finite) goes back above it, to the
+// next place that has been free for `spacing_steps`; with none free it waits a step.
+void recycle(const CompareScene& scene, lab::LabSimulation& run, long step,
+             std::vector<lab::BodyState>& states, RecycleState& places, int& recycled) {
   const Recycle& rule = scene.recycle;
+  if (places.last_used.empty()) places.last_used.assign(static_cast<std::size_t>(rule.slots), -rule.spacing_steps);
   run.read_states(states);
   for (std::size_t i = 0; i < states.size(); ++i) {
     const lab::BodyState& state = states[i];
     if (!state.dynamic || (std::isfinite(state.position.y) && state.position.y >= rule.below)) continue;
-    const int place = recycled % (rule.slots * rule.layers);
-    const float fraction = rule.slots > 1 ? static_cast<float>(place % rule.slots) / static_cast<float>(rule.slots - 1) : 0.0f;
-    run.place_body(static_cast<int>(i),
-                   {rule.left + fraction * (rule.right - rule.left),
-                    rule.top + static_cast<float>(place / rule.slots)},
+    int place = -1;
+    for (int tried = 0; tried < rule.slots && place < 0; ++tried) {
+      const int candidate = (places.next + tried) % rule.slots;
+      if (step - places.last_used[static_cast<std::size_t>(candidate)] >= rule.spacing_steps) place = candidate;
+    }
+    if (place < 0) return;
+    places.last_used[static_cast<std::size_t>(place)] = step;
+    places.next = (place + 1) % rule.slots;
+    const float fraction = rule.slots > 1 ? static_cast<float>(place) / static_cast<float>(rule.slots - 1) : 0.0f;
+    run.place_body(static_cast<int>(i), {rule.left + fraction * (rule.right - rule.left), rule.top},
                    {0.0f, -rule.speed});
     ++recycled;
   }
@@ -106,6 +119,7 @@ std::vector<Outcome> run_interleaved(const CompareScene& scene,
   for (std::vector<double>& list : times) list.reserve(static_cast<std::size_t>(steps));
   std::vector<Outcome> outcomes(count);
   std::vector<lab::BodyState> states;
+  std::vector<RecycleState> places(count);
   const int blocks = (steps + block - 1) / block;
   const int sample_every = std::max(1, blocks / 5);
   for (int b = 0; b < blocks; ++b) {
@@ -117,7 +131,9 @@ std::vector<Outcome> run_interleaved(const CompareScene& scene,
         const double start = thread_cpu_ms();
         run.step();
         times[e].push_back(thread_cpu_ms() - start);
-        if (scene.judge == Judge::Rain) recycle(scene, run, states, outcomes[e].stability.out);
+        if (scene.judge == Judge::Rain) {
+          recycle(scene, run, static_cast<long>(b) * block + s, states, places[e], outcomes[e].stability.out);
+        }
       }
       if (sample) {
         run.read_states(states);

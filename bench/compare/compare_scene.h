@@ -25,16 +25,17 @@ enum class Judge {
   Rain,      ///< bodies that fall off the field are recycled (`CompareScene::recycle`)
 };
 
-/// How rain recycles a body that fell out: it is put back above the field, at the next of
-/// `slots` x `layers` places used in turn, falling at `speed`.
+/// How rain recycles a body that fell out: it is put back above the field at the next of
+/// `slots` places (used in turn) that has been free for `spacing_steps` steps, so it never
+/// lands inside the body put there before; with no place free it waits, falling.
 struct Recycle {
-  float below = 0.0f;  ///< a dynamic body whose centre is below this height is recycled, m
-  float left = 0.0f;   ///< x of the first place, m
-  float right = 0.0f;  ///< x of the last place, m
-  float top = 0.0f;    ///< height of the lowest layer of places, m
-  float speed = 0.0f;  ///< downward speed of a recycled body, m/s
-  int slots = 1;       ///< places along a layer
-  int layers = 1;      ///< layers of places, 1 m apart
+  float below = 0.0f;     ///< a dynamic body whose centre is below this height is recycled, m
+  float left = 0.0f;      ///< x of the first place, m
+  float right = 0.0f;     ///< x of the last place, m
+  float top = 0.0f;       ///< height of the places, m
+  float speed = 0.0f;     ///< downward speed of a recycled body, m/s
+  int slots = 1;          ///< places along the line
+  int spacing_steps = 1;  ///< steps before a place is used again
 };
 
 /// A scene of the benchmark.
