@@ -10,6 +10,13 @@
 
 namespace impulse2d::lab {
 
+/// Fills `states` with the state of `bodies` of `world`, in that order (the buffer is reused).
+void read_world_states(const World& world, const std::vector<BodyId>& bodies,
+                       std::vector<BodyState>& states);
+
+/// The coefficients `world`'s mixing rules give a contact between bodies `a` and `b`.
+ContactCoefficients world_coefficients(const World& world, BodyId a, BodyId b);
+
 /// A scene stepped by impulse2d with a method's settings.
 class EngineSimulation : public LabSimulation {
  public:

@@ -3,6 +3,7 @@
 /// What the lab needs from an engine: step a scene and report every body's state, so the same
 /// metric scores impulse2d and its peers (Box2D, Chipmunk) alike.
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,15 @@ class LabSimulation {
   virtual unsigned long long state_hash() const = 0;
   /// True once the engine reported a body that went non-finite (and restored it).
   virtual bool diverged() const { return false; }
+  /// Moves body `index` (creation index) to `position` (metres), unrotated, moving at
+  /// `velocity` (m/s) without spin: for scenes that recycle their bodies (bench_compare's rain).
+  /// Engines that cannot throw `std::logic_error`.
+  virtual void place_body(int index, vec2 position, vec2 velocity) {
+    (void)index;
+    (void)position;
+    (void)velocity;
+    throw std::logic_error("this engine's simulation cannot place bodies");
+  }
 };
 
 }  // namespace impulse2d::lab

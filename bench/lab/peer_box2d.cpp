@@ -122,6 +122,12 @@ class Box2dSimulation : public LabSimulation {
     read_states(states);
     return hash_states(states);
   }
+  void place_body(int index, vec2 position, vec2 velocity) override {
+    b2Body* body = bodies_.at(static_cast<std::size_t>(index));
+    body->SetTransform(b2Vec2(position.x, position.y), 0.0f);
+    body->SetLinearVelocity(b2Vec2(velocity.x, velocity.y));
+    body->SetAngularVelocity(0.0f);
+  }
 
  private:
   b2World world_;

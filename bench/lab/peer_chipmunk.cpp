@@ -85,15 +85,11 @@ class ChipmunkSimulation : public LabSimulation {
     }
   }
   ~ChipmunkSimulation() override {
-    for (cpShape* shape : shapes_) {
-      cpSpaceRemoveShape(space_, shape);
-      cpShapeFree(shape);
-    }
-    for (cpBody* body : bodies_) {
-      cpSpaceRemoveBody(space_, body);
-      cpBodyFree(body);
-    }
+    // The space goes first (its teardown only wakes its bodies): removing shapes one at a time
+    // filters every cached arbiter for each, quadratic in the body count (5 s for 10,000 boxes).
     cpSpaceFree(space_);
+    for (cpShape* shape : shapes_) cpShapeFree(shape);
+    for (cpBody* body : bodies_) cpBodyFree(body);
   }
   ChipmunkSimulation(const ChipmunkSimulation&) = delete;
   ChipmunkSimulation& operator=(const ChipmunkSimulation&) = delete;
@@ -132,6 +128,13 @@ class ChipmunkSimulation : public LabSimulation {
     std::vector<BodyState> states;
     read_states(states);
     return hash_states(states);
+  }
+  void place_body(int index, vec2 position, vec2 velocity) override {
+    cpBody* body = bodies_.at(static_cast<std::size_t>(index));
+    cpBodySetPosition(body, cpv(position.x, position.y));
+    cpBodySetAngle(body, 0.0);
+    cpBodySetVelocity(body, cpv(velocity.x, velocity.y));
+    cpBodySetAngularVelocity(body, 0.0);
   }
 
  private:

@@ -1,0 +1,7 @@
+# bench_compare (bench/compare/): impulse2d against Box2D 2.4.1 and Chipmunk 7 on the same scenes
+# in the same run, with stability beside every speed and a scaling chart (README "Peers in
+# one run"). Uses the lab's peers (impulse2d_lab, bench/lab.cmake).
+file(GLOB compare_sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/compare/*.cpp)
+add_executable(bench_compare ${compare_sources})
+target_link_libraries(bench_compare PRIVATE impulse2d_lab)
+target_include_directories(bench_compare PRIVATE ${PROJECT_SOURCE_DIR})

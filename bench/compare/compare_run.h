@@ -1,0 +1,42 @@
+#pragma once
+/// @file compare_run.h
+/// Running one scene in every engine in the same process, interleaved: `block` steps of the
+/// first engine, `block` of the second, ..., then again, so that a busy machine slows them all
+/// alike. Each step is timed alone (CPU time of the thread); the recycling of rain and the
+/// stability samples are outside the timed steps.
+
+#include <string>
+#include <vector>
+
+#include "bench/compare/compare_scene.h"
+#include "bench/compare/stability.h"
+#include "bench/lab/lab_method.h"
+
+namespace impulse2d::compare {
+
+/// One engine of the comparison, with its settings.
+struct Contender {
+  std::string label;      ///< short name for tables and the chart, e.g. "impulse2d acc 16i"
+  lab::LabMethod method;  ///< engine and settings (a peer's iteration counts)
+};
+
+/// impulse2d's default settings, impulse2d's soft step (4 substeps x 1 iteration), Box2D 2.4.1
+/// (8 velocity / 3 position iterations) and Chipmunk 7 (10 iterations), at 1/60 s, sleeping
+/// off; a peer only when it was compiled in (`notes` gets the reason when not, and notes such
+/// as Chipmunk's debug build).
+std::vector<Contender> contenders(std::vector<std::string>& notes);
+
+/// One engine's result on one scene.
+struct Outcome {
+  double ms_per_step = 0.0;  ///< median CPU time of a step, milliseconds
+  Stability stability;       ///< what the run left standing
+};
+
+/// Runs `scene` for `steps` steps in every contender, interleaved in blocks of `block` steps;
+/// samples the deepest overlap about five times in the run and at its end. One outcome per
+/// contender, in order.
+std::vector<Outcome> run_interleaved(const CompareScene& scene,
+                                     const std::vector<Contender>& contenders, int steps,
+                                     int block);
+
+}  // namespace impulse2d::compare
