@@ -138,6 +138,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   body.aabb = compute_aabb(body.shape, body.transform);
   bodies_[index] = body;
   alive_[index] = 1;
+  broad_phase_.add_body(index, body.type, body.aabb);
   ++living_body_count_;
   return body.id;
 }
@@ -145,6 +146,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
 void World::remove_body(BodyId id) {
   checked_body(id, "World::remove_body");
   alive_[id.index] = 0;
+  broad_phase_.remove_body(id.index);
   free_slots_.push_back(id.index);
   --living_body_count_;
   // Forget its contacts now so nothing refers to the dead slot.
@@ -193,6 +195,7 @@ void World::set_transform(BodyId id, vec2 position, float angle) {
   body.previous_position = position;
   body.previous_angle = angle;
   body.aabb = compute_aabb(body.shape, body.transform);
+  broad_phase_.cover(id.index, body.aabb);
   body.awake = true;
 }
 
@@ -332,6 +335,9 @@ void World::step() {
   }
   restore_diverged_bodies();
   update_bounds(bodies_, alive_);
+  for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+    if (alive_[i]) broad_phase_.cover(i, bodies_[i].aabb);  // queries search the trees
+  }
 
   time_ += static_cast<double>(settings_.time_step);
   ++step_count_;
@@ -370,7 +376,7 @@ void World::integrate_positions(float dt) {
   const Clock::time_point stage = Clock::now();
   impulse2d::integrate_positions(bodies_, alive_, settings_, dt);
   if (settings_.enable_continuous) {
-    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt);  // no tunnelling
+    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt, broad_phase_);  // no tunnelling
   }
   stats_.integrate_ms += elapsed_ms(stage);
 }
