@@ -108,7 +108,7 @@ struct WorldSettings {
   RestitutionMixing restitution_mixing = RestitutionMixing::Maximum;   ///< restitution rule
 
   Integrator integrator = Integrator::SemiImplicitEuler;  ///< motion integration
-  BroadPhaseMethod broad_phase = BroadPhaseMethod::SortAndSweep;  ///< pair finding
+  BroadPhaseMethod broad_phase = BroadPhaseMethod::DynamicTree;  ///< pair finding
 
   bool enable_friction = true;     ///< off: skip all tangent impulses
   bool enable_restitution = true;  ///< off: every contact is inelastic

@@ -154,6 +154,16 @@ void World::remove_body(BodyId id) {
     return contact.body_a == id || contact.body_b == id;
   };
   contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), touches), contacts_.end());
+  forget_sleeping_contacts(id);
+}
+
+void World::forget_sleeping_contacts(BodyId id) {
+  auto touches = [&](const Contact& contact) {
+    return contact.body_a == id || contact.body_b == id;
+  };
+  sleeping_contacts_.erase(
+      std::remove_if(sleeping_contacts_.begin(), sleeping_contacts_.end(), touches),
+      sleeping_contacts_.end());
 }
 
 bool World::is_valid(BodyId id) const {
@@ -197,6 +207,7 @@ void World::set_transform(BodyId id, vec2 position, float angle) {
   body.aabb = compute_aabb(body.shape, body.transform);
   broad_phase_.cover(id.index, body.aabb);
   body.awake = true;
+  forget_sleeping_contacts(id);  // its set-aside contacts no longer describe where it is
 }
 
 void World::set_linear_velocity(BodyId id, vec2 velocity) {
@@ -348,8 +359,52 @@ void World::step() {
   stats_.total_ms = elapsed_ms(start);
 }
 
+namespace {
+
+bool is_moving(const Body& body) { return body.type != BodyType::Static && body.awake; }
+
+bool pair_less(const Contact& a, const Contact& b) {
+  return a.body_a.index < b.body_a.index ||
+         (a.body_a.index == b.body_a.index && a.body_b.index < b.body_b.index);
+}
+
+}  // namespace
+
+// Last step's contacts whose bodies no longer move would be dropped by the narrow phase (no
+// broad-phase pair has them); they are set aside instead, impulses and all, in pair order.
+// Set-aside contacts of pairs that move again are dropped: the narrow phase collides those
+// pairs afresh, as it would have without the set-aside list.
+void World::set_aside_sleeping_contacts() {
+  auto resting = [this](const Contact& contact) {
+    return !is_moving(bodies_[contact.body_a.index]) && !is_moving(bodies_[contact.body_b.index]);
+  };
+  sleeping_contacts_.erase(std::remove_if(sleeping_contacts_.begin(), sleeping_contacts_.end(),
+                                          [&](const Contact& contact) { return !resting(contact); }),
+                           sleeping_contacts_.end());
+  merged_contacts_.clear();
+  std::size_t kept = 0;
+  std::size_t sleeping = 0;
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    if (!resting(contacts_[i])) {
+      if (kept != i) contacts_[kept] = contacts_[i];
+      ++kept;
+      continue;
+    }
+    while (sleeping < sleeping_contacts_.size() && pair_less(sleeping_contacts_[sleeping], contacts_[i])) {
+      merged_contacts_.push_back(sleeping_contacts_[sleeping++]);
+    }
+    merged_contacts_.push_back(contacts_[i]);
+  }
+  if (kept == contacts_.size()) return;
+  merged_contacts_.insert(merged_contacts_.end(), sleeping_contacts_.begin() + static_cast<std::ptrdiff_t>(sleeping),
+                          sleeping_contacts_.end());
+  contacts_.erase(contacts_.begin() + static_cast<std::ptrdiff_t>(kept), contacts_.end());
+  std::swap(sleeping_contacts_, merged_contacts_);
+}
+
 void World::find_contacts(float dt) {
   Clock::time_point stage = Clock::now();
+  set_aside_sleeping_contacts();
   update_bounds(bodies_, alive_);
   compute_speculative_reach(bodies_, alive_, settings_, dt, speculative_reach_);
   compute_speculative_bounds(bodies_, alive_, speculative_reach_, settings_.speculative_margin,
@@ -363,6 +418,7 @@ void World::find_contacts(float dt) {
                                                contact_filter_, previous_contacts_, contacts_);
   stats_.pairs_tested = static_cast<int>(pairs_.size());
   stats_.contact_count = static_cast<int>(contacts_.size());
+  stats_.sleeping_contact_count = static_cast<int>(sleeping_contacts_.size());
   stats_.narrow_phase_ms += elapsed_ms(stage);
 }
 
