@@ -309,10 +309,12 @@ bool World::set_contact_enabled(BodyId a, BodyId b, bool enabled) {
   checked_body(a, "World::set_contact_enabled");
   checked_body(b, "World::set_contact_enabled");
   if (b.index < a.index) std::swap(a, b);
-  for (Contact& contact : contacts_) {
-    if (contact.body_a == a && contact.body_b == b) {
-      contact.enabled = enabled;  // the next step's narrow phase carries it over
-      return true;
+  for (std::vector<Contact>* list : {&contacts_, &sleeping_contacts_}) {
+    for (Contact& contact : *list) {
+      if (contact.body_a == a && contact.body_b == b) {
+        contact.enabled = enabled;  // the next step's narrow phase carries it over
+        return true;
+      }
     }
   }
   return false;
@@ -372,15 +374,34 @@ bool pair_less(const Contact& a, const Contact& b) {
 
 // Last step's contacts whose bodies no longer move would be dropped by the narrow phase (no
 // broad-phase pair has them); they are set aside instead, impulses and all, in pair order.
-// Set-aside contacts of pairs that move again are dropped: the narrow phase collides those
-// pairs afresh, as it would have without the set-aside list.
+// Set-aside contacts of pairs that move again go back among last step's contacts, so the
+// narrow phase carries their impulses over (warm start) as if they had never slept.
 void World::set_aside_sleeping_contacts() {
   auto resting = [this](const Contact& contact) {
     return !is_moving(bodies_[contact.body_a.index]) && !is_moving(bodies_[contact.body_b.index]);
   };
-  sleeping_contacts_.erase(std::remove_if(sleeping_contacts_.begin(), sleeping_contacts_.end(),
-                                          [&](const Contact& contact) { return !resting(contact); }),
-                           sleeping_contacts_.end());
+  merged_contacts_.clear();
+  std::size_t still_sleeping = 0;
+  std::size_t last_step = 0;
+  for (std::size_t i = 0; i < sleeping_contacts_.size(); ++i) {
+    if (resting(sleeping_contacts_[i])) {
+      if (still_sleeping != i) sleeping_contacts_[still_sleeping] = sleeping_contacts_[i];
+      ++still_sleeping;
+      continue;
+    }
+    while (last_step < contacts_.size() && pair_less(contacts_[last_step], sleeping_contacts_[i])) {
+      merged_contacts_.push_back(contacts_[last_step++]);
+    }
+    merged_contacts_.push_back(sleeping_contacts_[i]);
+  }
+  if (still_sleeping != sleeping_contacts_.size()) {
+    merged_contacts_.insert(merged_contacts_.end(), contacts_.begin() + static_cast<std::ptrdiff_t>(last_step),
+                            contacts_.end());
+    std::swap(contacts_, merged_contacts_);
+    sleeping_contacts_.erase(sleeping_contacts_.begin() + static_cast<std::ptrdiff_t>(still_sleeping),
+                             sleeping_contacts_.end());
+  }
+
   merged_contacts_.clear();
   std::size_t kept = 0;
   std::size_t sleeping = 0;

@@ -118,14 +118,15 @@ class World : private SolverStages {
   const std::vector<Contact>& contacts() const { return contacts_; }
   /// Touching pairs set aside because none of their bodies moves (each asleep or static), as
   /// found when the last step began, sorted by (A's slot, B's slot); read-only (for drawing
-  /// and counting: the solvers never see them). A pair leaves this list when one of its bodies
-  /// wakes, moves or is removed, and is then collided afresh.
+  /// and counting: the solvers never see them). When a body of the pair wakes, the contact
+  /// goes back to the narrow phase with its impulses (warm start); when one is moved by
+  /// `set_transform` or removed, the contact is dropped.
   const std::vector<Contact>& sleeping_contacts() const { return sleeping_contacts_; }
   /// Installs a filter consulted when a pair starts touching (pass nullptr to remove it).
   void set_contact_filter(ContactFilter filter) { contact_filter_ = std::move(filter); }
-  /// Overrides the kept decision of the touching pair (a, b), in either order: false lets them
-  /// pass through each other until they separate (e.g. dropping through a one-way platform).
-  /// Returns false when the pair is not touching. Throws `Error` on a stale handle.
+  /// Overrides the kept decision of the touching pair (a, b), in either order (also of a
+  /// sleeping pair): false lets them pass through each other until they separate (e.g.
+  /// dropping through a one-way platform). Returns false when the pair is not touching. Throws `Error` on a stale handle.
   bool set_contact_enabled(BodyId a, BodyId b, bool enabled);
 
   /// Counts and timings of the last step.

@@ -1,6 +1,6 @@
 // Contacts of pairs whose bodies all sleep are set aside (World::sleeping_contacts) rather than
-// dropped, counted in the step stats, and leave that list when a body of the pair wakes or
-// goes away.
+// dropped, counted in the step stats, go back to the narrow phase with their impulses when a
+// body of the pair wakes, and are dropped when one is teleported or removed.
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -90,10 +90,16 @@ TEST(SleepingContacts, LeaveTheListWhenABodyWakesMovesOrIsRemoved) {
   step_until_asleep(world);
   ASSERT_EQ(world.sleeping_contacts().size(), 3u);
 
-  // Waking the top box brings its pair back to the narrow phase.
+  // Waking the top box brings its contact back to the narrow phase, which keeps it (the pose
+  // did not change, so the manifold is recycled) with its impulses for warm starting.
   world.set_awake(stack.boxes[2], true);
   world.step();
-  EXPECT_TRUE(has_pair(world.contacts(), stack.boxes[1], stack.boxes[2]));
+  ASSERT_TRUE(has_pair(world.contacts(), stack.boxes[1], stack.boxes[2]));
+  for (const Contact& contact : world.contacts()) {
+    if (contact.body_a == stack.boxes[1] && contact.body_b == stack.boxes[2]) {
+      EXPECT_TRUE(contact.recycled);
+    }
+  }
   EXPECT_FALSE(has_pair(world.sleeping_contacts(), stack.boxes[1], stack.boxes[2]));
   EXPECT_EQ(world.stats().contact_count + world.stats().sleeping_contact_count, 3);
 
