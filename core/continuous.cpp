@@ -47,8 +47,9 @@ float smallest_extent(const Shape& shape) {
 }
 
 int BulletSweeper::sweep(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                         const WorldSettings& settings, float dt) {
+                         const WorldSettings& settings, float dt, BroadPhase& broad_phase) {
   int moved_back = 0;
+  bool trees_cover_bodies = false;
   for (std::uint32_t b = 0; b < bodies.size(); ++b) {
     Body& bullet = bodies[b];
     if (!alive[b] || !bullet.is_bullet || bullet.type != BodyType::Dynamic || !bullet.awake) continue;
@@ -62,8 +63,18 @@ int BulletSweeper::sweep(std::vector<Body>& bodies, const std::vector<std::uint8
     if (!(distance > spacing) || !(spacing > 0.0f)) continue;
 
     const Aabb swept = merge(compute_aabb(bullet.shape, start), compute_aabb(bullet.shape, end));
+    if (!trees_cover_bodies) {
+      // Bodies moved since the trees last covered them; bullets are never candidates.
+      for (std::uint32_t o = 0; o < bodies.size(); ++o) {
+        if (alive[o] && !bodies[o].is_bullet) {
+          broad_phase.cover(o, compute_aabb(bodies[o].shape, bodies[o].transform));
+        }
+      }
+      trees_cover_bodies = true;
+    }
+    broad_phase.query(swept, nearby_);
     candidates_.clear();
-    for (std::uint32_t o = 0; o < bodies.size(); ++o) {
+    for (const std::uint32_t o : nearby_) {
       const Body& other = bodies[o];
       if (o == b || !alive[o] || other.is_bullet) continue;
       if ((other.collision_layers & bullet.collision_layers) == 0) continue;

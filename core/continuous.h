@@ -4,6 +4,7 @@
 /// bodies it could cross, so it cannot tunnel through a thin wall.
 
 #include "core/body.h"
+#include "core/broad_phase.h"
 #include "core/settings.h"
 
 #include <cstdint>
@@ -21,11 +22,13 @@ class BulletSweeper {
   /// touch at the start, then bisects between the last free sample and the first overlapping
   /// one (time of impact to 1/1024 of a sample) and moves the bullet back to that pose. Its
   /// velocity is kept: the next step's contact makes the bounce. Returns how many bullets
-  /// were moved back.
+  /// were moved back. The bodies near a bullet are found in `broad_phase`'s trees, made to
+  /// cover every non-bullet body's current bounds first.
   int sweep(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-            const WorldSettings& settings, float dt);
+            const WorldSettings& settings, float dt, BroadPhase& broad_phase);
 
  private:
+  std::vector<std::uint32_t> nearby_;      // slots whose fat boxes meet the swept bounds
   std::vector<std::uint32_t> candidates_;  // bodies the current bullet may hit
 };
 

@@ -14,6 +14,7 @@ struct StepStats {
   int pairs_tested = 0;        ///< candidate pairs given to the narrow phase
   int contact_count = 0;       ///< touching pairs after the narrow phase
   int contact_point_count = 0; ///< manifold points after the narrow phase
+  int sleeping_contact_count = 0;  ///< touching pairs set aside while none of their bodies moves
   int bullets_moved_back = 0;  ///< bullets stopped at their time of impact by the sweep
   double broad_phase_ms = 0.0;   ///< time finding candidate pairs
   double narrow_phase_ms = 0.0;  ///< time in collide functions and contact matching

@@ -138,6 +138,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   body.aabb = compute_aabb(body.shape, body.transform);
   bodies_[index] = body;
   alive_[index] = 1;
+  broad_phase_.add_body(index, body.type, body.aabb);
   ++living_body_count_;
   return body.id;
 }
@@ -145,6 +146,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
 void World::remove_body(BodyId id) {
   checked_body(id, "World::remove_body");
   alive_[id.index] = 0;
+  broad_phase_.remove_body(id.index);
   free_slots_.push_back(id.index);
   --living_body_count_;
   // Forget its contacts now so nothing refers to the dead slot.
@@ -152,6 +154,16 @@ void World::remove_body(BodyId id) {
     return contact.body_a == id || contact.body_b == id;
   };
   contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), touches), contacts_.end());
+  forget_sleeping_contacts(id);
+}
+
+void World::forget_sleeping_contacts(BodyId id) {
+  auto touches = [&](const Contact& contact) {
+    return contact.body_a == id || contact.body_b == id;
+  };
+  sleeping_contacts_.erase(
+      std::remove_if(sleeping_contacts_.begin(), sleeping_contacts_.end(), touches),
+      sleeping_contacts_.end());
 }
 
 bool World::is_valid(BodyId id) const {
@@ -193,7 +205,9 @@ void World::set_transform(BodyId id, vec2 position, float angle) {
   body.previous_position = position;
   body.previous_angle = angle;
   body.aabb = compute_aabb(body.shape, body.transform);
+  broad_phase_.cover(id.index, body.aabb);
   body.awake = true;
+  forget_sleeping_contacts(id);  // its set-aside contacts no longer describe where it is
 }
 
 void World::set_linear_velocity(BodyId id, vec2 velocity) {
@@ -295,10 +309,12 @@ bool World::set_contact_enabled(BodyId a, BodyId b, bool enabled) {
   checked_body(a, "World::set_contact_enabled");
   checked_body(b, "World::set_contact_enabled");
   if (b.index < a.index) std::swap(a, b);
-  for (Contact& contact : contacts_) {
-    if (contact.body_a == a && contact.body_b == b) {
-      contact.enabled = enabled;  // the next step's narrow phase carries it over
-      return true;
+  for (std::vector<Contact>* list : {&contacts_, &sleeping_contacts_}) {
+    for (Contact& contact : *list) {
+      if (contact.body_a == a && contact.body_b == b) {
+        contact.enabled = enabled;  // the next step's narrow phase carries it over
+        return true;
+      }
     }
   }
   return false;
@@ -332,6 +348,9 @@ void World::step() {
   }
   restore_diverged_bodies();
   update_bounds(bodies_, alive_);
+  for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+    if (alive_[i]) broad_phase_.cover(i, bodies_[i].aabb);  // queries search the trees
+  }
 
   time_ += static_cast<double>(settings_.time_step);
   ++step_count_;
@@ -342,8 +361,71 @@ void World::step() {
   stats_.total_ms = elapsed_ms(start);
 }
 
+namespace {
+
+bool is_moving(const Body& body) { return body.type != BodyType::Static && body.awake; }
+
+bool pair_less(const Contact& a, const Contact& b) {
+  return a.body_a.index < b.body_a.index ||
+         (a.body_a.index == b.body_a.index && a.body_b.index < b.body_b.index);
+}
+
+}  // namespace
+
+// Last step's contacts whose bodies no longer move would be dropped by the narrow phase (no
+// broad-phase pair has them); they are set aside instead, impulses and all, in pair order.
+// Set-aside contacts of pairs that move again go back among last step's contacts, so the
+// narrow phase carries their impulses over (warm start) as if they had never slept.
+void World::set_aside_sleeping_contacts() {
+  auto resting = [this](const Contact& contact) {
+    return !is_moving(bodies_[contact.body_a.index]) && !is_moving(bodies_[contact.body_b.index]);
+  };
+  merged_contacts_.clear();
+  std::size_t still_sleeping = 0;
+  std::size_t last_step = 0;
+  for (std::size_t i = 0; i < sleeping_contacts_.size(); ++i) {
+    if (resting(sleeping_contacts_[i])) {
+      if (still_sleeping != i) sleeping_contacts_[still_sleeping] = sleeping_contacts_[i];
+      ++still_sleeping;
+      continue;
+    }
+    while (last_step < contacts_.size() && pair_less(contacts_[last_step], sleeping_contacts_[i])) {
+      merged_contacts_.push_back(contacts_[last_step++]);
+    }
+    merged_contacts_.push_back(sleeping_contacts_[i]);
+  }
+  if (still_sleeping != sleeping_contacts_.size()) {
+    merged_contacts_.insert(merged_contacts_.end(), contacts_.begin() + static_cast<std::ptrdiff_t>(last_step),
+                            contacts_.end());
+    std::swap(contacts_, merged_contacts_);
+    sleeping_contacts_.erase(sleeping_contacts_.begin() + static_cast<std::ptrdiff_t>(still_sleeping),
+                             sleeping_contacts_.end());
+  }
+
+  merged_contacts_.clear();
+  std::size_t kept = 0;
+  std::size_t sleeping = 0;
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    if (!resting(contacts_[i])) {
+      if (kept != i) contacts_[kept] = contacts_[i];
+      ++kept;
+      continue;
+    }
+    while (sleeping < sleeping_contacts_.size() && pair_less(sleeping_contacts_[sleeping], contacts_[i])) {
+      merged_contacts_.push_back(sleeping_contacts_[sleeping++]);
+    }
+    merged_contacts_.push_back(contacts_[i]);
+  }
+  if (kept == contacts_.size()) return;
+  merged_contacts_.insert(merged_contacts_.end(), sleeping_contacts_.begin() + static_cast<std::ptrdiff_t>(sleeping),
+                          sleeping_contacts_.end());
+  contacts_.erase(contacts_.begin() + static_cast<std::ptrdiff_t>(kept), contacts_.end());
+  std::swap(sleeping_contacts_, merged_contacts_);
+}
+
 void World::find_contacts(float dt) {
   Clock::time_point stage = Clock::now();
+  set_aside_sleeping_contacts();
   update_bounds(bodies_, alive_);
   compute_speculative_reach(bodies_, alive_, settings_, dt, speculative_reach_);
   compute_speculative_bounds(bodies_, alive_, speculative_reach_, settings_.speculative_margin,
@@ -357,6 +439,7 @@ void World::find_contacts(float dt) {
                                                contact_filter_, previous_contacts_, contacts_);
   stats_.pairs_tested = static_cast<int>(pairs_.size());
   stats_.contact_count = static_cast<int>(contacts_.size());
+  stats_.sleeping_contact_count = static_cast<int>(sleeping_contacts_.size());
   stats_.narrow_phase_ms += elapsed_ms(stage);
 }
 
@@ -370,7 +453,7 @@ void World::integrate_positions(float dt) {
   const Clock::time_point stage = Clock::now();
   impulse2d::integrate_positions(bodies_, alive_, settings_, dt);
   if (settings_.enable_continuous) {
-    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt);  // no tunnelling
+    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt, broad_phase_);  // no tunnelling
   }
   stats_.integrate_ms += elapsed_ms(stage);
 }

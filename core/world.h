@@ -116,11 +116,17 @@ class World : private SolverStages {
 
   /// Touching pairs after the last step, sorted by (A's slot, B's slot).
   const std::vector<Contact>& contacts() const { return contacts_; }
+  /// Touching pairs set aside because none of their bodies moves (each asleep or static), as
+  /// found when the last step began, sorted by (A's slot, B's slot); read-only (for drawing
+  /// and counting: the solvers never see them). When a body of the pair wakes, the contact
+  /// goes back to the narrow phase with its impulses (warm start); when one is moved by
+  /// `set_transform` or removed, the contact is dropped.
+  const std::vector<Contact>& sleeping_contacts() const { return sleeping_contacts_; }
   /// Installs a filter consulted when a pair starts touching (pass nullptr to remove it).
   void set_contact_filter(ContactFilter filter) { contact_filter_ = std::move(filter); }
-  /// Overrides the kept decision of the touching pair (a, b), in either order: false lets them
-  /// pass through each other until they separate (e.g. dropping through a one-way platform).
-  /// Returns false when the pair is not touching. Throws `Error` on a stale handle.
+  /// Overrides the kept decision of the touching pair (a, b), in either order (also of a
+  /// sleeping pair): false lets them pass through each other until they separate (e.g.
+  /// dropping through a one-way platform). Returns false when the pair is not touching. Throws `Error` on a stale handle.
   bool set_contact_enabled(BodyId a, BodyId b, bool enabled);
 
   /// Counts and timings of the last step.
@@ -155,6 +161,8 @@ class World : private SolverStages {
   SupportOrder& solver_support_order() override { return support_order_; }
   WideContactSolver& solver_wide_contacts() override { return wide_contacts_; }
   void restore_diverged_bodies();
+  void set_aside_sleeping_contacts();
+  void forget_sleeping_contacts(BodyId id);
 
   WorldSettings settings_;
   std::vector<Body> bodies_;               // slots, indexed by BodyId::index
@@ -164,6 +172,8 @@ class World : private SolverStages {
 
   std::vector<Contact> contacts_;          // sorted by (a.index, b.index)
   std::vector<Contact> previous_contacts_; // last step's, for warm starting (reused buffer)
+  std::vector<Contact> sleeping_contacts_; // pairs with no moving body, sorted by pair
+  std::vector<Contact> merged_contacts_;   // scratch for sleeping_contacts_ (reused)
   std::shared_ptr<const StepSolver> solver_;    // made for solver_method_ (re-made when it changes)
   SolverMethod solver_method_ = SolverMethod::AccumulatedImpulses;
   std::vector<float> speculative_reach_;   // per slot, metres (reused)

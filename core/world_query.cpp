@@ -1,4 +1,5 @@
-// World queries: bounding boxes, points and rays, each in ascending slot order.
+// World queries: bounding boxes, points and rays, each in ascending slot order. The broad
+// phase's trees give the bodies near the query; each is then tested exactly.
 #include "core/error.h"
 #include "core/world.h"
 
@@ -16,8 +17,10 @@ void require_finite_query(vec2 value, const char* caller, const char* name) {
 void World::query_aabb(const Aabb& box, const QueryCallback& callback) const {
   require_finite_query(box.lower, "World::query_aabb", "box.lower");
   require_finite_query(box.upper, "World::query_aabb", "box.upper");
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (!alive_[i]) continue;
+  std::vector<std::uint32_t> nearby;
+  broad_phase_.query(box, nearby);
+  for (const std::uint32_t i : nearby) {
+    if (!alive_[i]) continue;  // the callback may have removed it
     const Aabb bounds = compute_aabb(bodies_[i].shape, bodies_[i].transform);
     if (bounds.overlaps(box) && !callback(bodies_[i].id)) return;
   }
@@ -25,8 +28,10 @@ void World::query_aabb(const Aabb& box, const QueryCallback& callback) const {
 
 void World::query_point(vec2 point, const QueryCallback& callback) const {
   require_finite_query(point, "World::query_point", "point");
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (!alive_[i]) continue;
+  std::vector<std::uint32_t> nearby;
+  broad_phase_.query(Aabb{point, point}, nearby);
+  for (const std::uint32_t i : nearby) {
+    if (!alive_[i]) continue;  // the callback may have removed it
     if (shape_contains_point(bodies_[i].shape, bodies_[i].transform, point) &&
         !callback(bodies_[i].id)) {
       return;
@@ -38,7 +43,9 @@ std::vector<RayHit> World::raycast_all(vec2 origin, vec2 translation, std::uint3
   require_finite_query(origin, "World::raycast", "origin");
   require_finite_query(translation, "World::raycast", "translation");
   std::vector<RayHit> hits;
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+  std::vector<std::uint32_t> nearby;
+  broad_phase_.raycast(origin, translation, nearby);
+  for (const std::uint32_t i : nearby) {
     const Body& body = bodies_[i];
     if (!alive_[i] || (body.collision_layers & layers) == 0) continue;
     ShapeRayHit shape_hit;
@@ -57,7 +64,9 @@ std::optional<RayHit> World::raycast_closest(vec2 origin, vec2 translation, std:
   require_finite_query(origin, "World::raycast", "origin");
   require_finite_query(translation, "World::raycast", "translation");
   std::optional<RayHit> closest;
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+  std::vector<std::uint32_t> nearby;
+  broad_phase_.raycast(origin, translation, nearby);
+  for (const std::uint32_t i : nearby) {
     const Body& body = bodies_[i];
     if (!alive_[i] || (body.collision_layers & layers) == 0) continue;
     ShapeRayHit shape_hit;

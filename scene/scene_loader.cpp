@@ -105,7 +105,8 @@ WorldSettings read_settings(const JsonCursor& node) {
   }
   if (auto field = node.optional_field("broad_phase")) {
     settings.broad_phase =
-        field->choice<BroadPhaseMethod>({{"sort_and_sweep", BroadPhaseMethod::SortAndSweep},
+        field->choice<BroadPhaseMethod>({{"dynamic_tree", BroadPhaseMethod::DynamicTree},
+                                         {"sort_and_sweep", BroadPhaseMethod::SortAndSweep},
                                          {"brute_force", BroadPhaseMethod::BruteForce}});
   }
   if (auto field = node.optional_field("sleep_linear_speed"))

@@ -3,6 +3,8 @@ impulse2d_add_test(test_world
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_world_api.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_determinism.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_queries.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_dynamic_tree.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_sleeping_contacts.cpp
   LIBS impulse2d_core)
 impulse2d_add_test(test_physics
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_free_fall.cpp

@@ -1,5 +1,5 @@
 // The steady-state step allocates nothing: once buffers have grown to fit a scene, stepping
-// it reuses them (every solver method, both broad phases). Counted by replacing the global operator new for this test binary only.
+// it reuses them (every solver method, every broad phase). Counted by replacing the global operator new for this test binary only.
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -54,7 +54,8 @@ long allocations_during(World& world, int steps) {
 }  // namespace
 
 TEST(StepAllocations, SteadyStateStepAllocatesNothing) {
-  for (BroadPhaseMethod broad_phase : {BroadPhaseMethod::SortAndSweep, BroadPhaseMethod::BruteForce}) {
+  for (BroadPhaseMethod broad_phase : {BroadPhaseMethod::SortAndSweep, BroadPhaseMethod::BruteForce,
+                                       BroadPhaseMethod::DynamicTree}) {
     for (SolverMethod solver :
          {SolverMethod::AccumulatedImpulses, SolverMethod::PerIteration, SolverMethod::SoftStep}) {
       WorldSettings settings;
