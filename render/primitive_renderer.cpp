@@ -18,8 +18,6 @@ namespace impulse2d::render {
 
 namespace {
 
-// Half extents so large that a rectangle's coverage is 1 everywhere (polygon fills).
-constexpr float kSolidExtent = 1.0e6f;
 // Pixels around a primitive's edge that its sprite or quad covers: anti-aliased coverage
 // reaches half a pixel beyond every edge and is 0 from there on (an arrow head's mitred
 // base corners reach further; draw_arrow widens its bounds for them).
@@ -29,9 +27,9 @@ constexpr float kMargin = 0.5f;
 // otherwise (a long or diagonal line) a quad hugs the primitive. llvmpipe's cost follows
 // the 4x4 pixel blocks a primitive touches more than the primitive count. Chosen by
 // instruction counts (callgrind, LP_NUM_THREADS=0, steady state) of the 1000-body
-// all-overlay frame of bench_render: 6 and 2.5 gave 271 M a frame; 10 and 3, 275 M; 4 and
-// 2, 284 M; always points, 375 M; always quads, 302 M; one enclosing triangle instead of
-// a quad, 297 M (docs/rendering.md).
+// all-overlay frame of bench_render when one program drew every kind: 6 and 2.5 gave 271 M
+// a frame; 10 and 3, 275 M; 4 and 2, 284 M; always points, 375 M; always quads, 302 M; one
+// enclosing triangle instead of a quad, 297 M (docs/rendering.md).
 constexpr float kSmallSprite = 6.0f;
 constexpr float kMaxSpriteWaste = 2.5f;
 
@@ -53,17 +51,22 @@ std::string hex(unsigned value) {
 
 PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
     : style_(style), camera_(Camera::centered(vec2(0.0f, 0.0f), 1.0f, 1, 1)) {
-  program_ = std::make_unique<ShaderProgram>("primitives", primitive_vertex_shader,
-                                             primitive_fragment_shader);
-  viewport_location_ = program_->uniform_location("u_viewport");
+  for (int kind = 0; kind < primitive_kind_count; ++kind) {
+    const std::string fragment_shader = primitive_fragment_shader(static_cast<PrimitiveKind>(kind));
+    programs_[kind] = std::make_unique<ShaderProgram>("primitives " + std::to_string(kind), primitive_vertex_shader,
+                                                      fragment_shader.c_str());
+    viewport_locations_[kind] = programs_[kind]->uniform_location("u_viewport");
+  }
   GLfloat point_sizes[2] = {1.0f, 1.0f};
   glGetFloatv(GL_POINT_SIZE_RANGE, point_sizes);
   max_point_size_ = std::min(point_sizes[1], style_.max_point_sprite);
 
   glGenVertexArrays(1, &vertex_array_);
   glGenBuffers(1, &vertex_buffer_);
+  glGenBuffers(1, &index_buffer_);
   glBindVertexArray(vertex_array_);
   glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
   const GLsizei stride = sizeof(Vertex);
   const auto attribute = [stride](GLuint location, GLint size, GLenum type, std::size_t offset) {
     glEnableVertexAttribArray(location);
@@ -76,9 +79,9 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
   };
   attribute(0, 3, GL_FLOAT, offsetof(Vertex, sprite));
   attribute(1, 4, GL_FLOAT, offsetof(Vertex, frame));
-  attribute(2, 3, GL_FLOAT, offsetof(Vertex, box));
+  attribute(2, 4, GL_FLOAT, offsetof(Vertex, box));
   attribute(3, 4, GL_FLOAT, offsetof(Vertex, head));
-  attribute(4, 4, GL_FLOAT, offsetof(Vertex, disc));
+  attribute(4, 3, GL_FLOAT, offsetof(Vertex, disc));
   attribute(5, 4, GL_UNSIGNED_BYTE, offsetof(Vertex, fill));
   attribute(6, 4, GL_UNSIGNED_BYTE, offsetof(Vertex, line));
   attribute(7, 2, GL_UNSIGNED_INT, offsetof(Vertex, glyph));
@@ -86,6 +89,7 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
 }
 
 PrimitiveRenderer::~PrimitiveRenderer() {
+  glDeleteBuffers(1, &index_buffer_);
   glDeleteBuffers(1, &vertex_buffer_);
   glDeleteVertexArrays(1, &vertex_array_);
 }
@@ -100,9 +104,19 @@ void PrimitiveRenderer::begin(const Camera& camera) {
   world_to_window_[1] = (clip[3][0] + 1.0f) * half_width;
   world_to_window_[2] = clip[1][1] * half_height;
   world_to_window_[3] = (clip[3][1] + 1.0f) * half_height;
-  vertices_.clear();
+  for (KindBatch& batch : batches_) {
+    batch.vertices.clear();
+    batch.open_runs.clear();
+  }
   runs_.clear();
   primitive_count_ = 0;
+}
+
+void PrimitiveRenderer::next_layer() {
+  for (KindBatch& batch : batches_) {
+    runs_.insert(runs_.end(), batch.open_runs.begin(), batch.open_runs.end());
+    batch.open_runs.clear();
+  }
 }
 
 vec2 PrimitiveRenderer::to_window(vec2 world) const {
@@ -110,32 +124,72 @@ vec2 PrimitiveRenderer::to_window(vec2 world) const {
 }
 
 void PrimitiveRenderer::finish(Color background) {
+  next_layer();
   glViewport(0, 0, camera_.width(), camera_.height());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  if (!vertices_.empty()) {
+  if (!runs_.empty()) {
+    // Each kind's vertices go to their own stretch of the one vertex buffer.
+    std::size_t first_of_kind[primitive_kind_count] = {};
+    std::size_t vertex_count = 0;
+    for (int kind = 0; kind < primitive_kind_count; ++kind) {
+      first_of_kind[kind] = vertex_count;
+      vertex_count += batches_[kind].vertices.size();
+    }
+    std::size_t most_quads = 0;
+    for (const Run& run : runs_) {
+      if (!run.points) most_quads = std::max(most_quads, run.vertices / 4);
+    }
     glBindVertexArray(vertex_array_);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    if (vertices_.size() > capacity_vertices_) {
+    if (vertex_count > capacity_vertices_) {
       // Buffers grow geometrically and are kept for later frames: reallocating them every
       // frame costs more in page faults than the upload itself.
-      capacity_vertices_ = std::max(vertices_.size(), 2 * capacity_vertices_);
+      capacity_vertices_ = std::max(vertex_count, 2 * capacity_vertices_);
       glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity_vertices_ * sizeof(Vertex)), nullptr,
                    GL_STREAM_DRAW);
+    }
+    if (most_quads > capacity_quads_) {
+      // Two triangles (0, 1, 2) and (0, 2, 3) per quad; a run starts at its base vertex.
+      capacity_quads_ = std::max(most_quads, 2 * capacity_quads_);
+      std::vector<GLuint> indices(6 * capacity_quads_);
+      for (std::size_t quad = 0; quad < capacity_quads_; ++quad) {
+        const auto corner = static_cast<GLuint>(4 * quad);
+        const GLuint pattern[6] = {corner, corner + 1, corner + 2, corner, corner + 2, corner + 3};
+        std::copy(pattern, pattern + 6, indices.begin() + static_cast<std::ptrdiff_t>(6 * quad));
+      }
+      glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
+                   indices.data(), GL_STATIC_DRAW);
+    }
+    for (int kind = 0; kind < primitive_kind_count; ++kind) {
+      const std::vector<Vertex>& vertices = batches_[kind].vertices;
+      if (vertices.empty()) continue;
+      glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first_of_kind[kind] * sizeof(Vertex)),
+                      static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
     }
     glEnable(GL_BLEND);
     // Premultiplied "over" (the fragment stage multiplies coverage and alpha into the
     // colour); alpha stays at the cleared 1.0, so frames are opaque.
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_PROGRAM_POINT_SIZE);
-    program_->use();
-    glUniform2f(viewport_location_, static_cast<float>(camera_.width()), static_cast<float>(camera_.height()));
-    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vertices_.size() * sizeof(Vertex)), vertices_.data());
+    int current_kind = -1;
     for (const Run& run : runs_) {
-      glDrawArrays(run.points ? GL_POINTS : GL_TRIANGLES, static_cast<GLint>(run.first_vertex),
-                   static_cast<GLsizei>(run.vertices));
+      const int kind = static_cast<int>(run.kind);
+      if (kind != current_kind) {
+        programs_[kind]->use();
+        glUniform2f(viewport_locations_[kind], static_cast<float>(camera_.width()),
+                    static_cast<float>(camera_.height()));
+        current_kind = kind;
+      }
+      const auto first = static_cast<GLint>(first_of_kind[kind] + run.first_vertex);
+      if (run.points) {
+        glDrawArrays(GL_POINTS, first, static_cast<GLsizei>(run.vertices));
+      } else {
+        glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(run.vertices / 4 * 6), GL_UNSIGNED_INT, nullptr,
+                                 first);
+      }
     }
     glBindVertexArray(0);
   }
@@ -146,21 +200,24 @@ void PrimitiveRenderer::finish(Color background) {
   }
 }
 
-void PrimitiveRenderer::push_vertex(const Vertex& shape, vec2 position, float point_size, bool point) {
-  Vertex vertex = shape;
+void PrimitiveRenderer::push_vertex(PrimitiveKind kind, const Vertex& shape, vec2 position, float point_size,
+                                    bool point) {
+  KindBatch& batch = batches_[static_cast<int>(kind)];
+  if (batch.open_runs.empty() || batch.open_runs.back().points != point) {
+    batch.open_runs.push_back(Run{kind, point, batch.vertices.size(), 0});
+  }
+  ++batch.open_runs.back().vertices;
+  Vertex& vertex = batch.vertices.emplace_back(shape);
   vertex.sprite[0] = position.x;
   vertex.sprite[1] = position.y;
   vertex.sprite[2] = point_size;
-  if (runs_.empty() || runs_.back().points != point) runs_.push_back(Run{point, vertices_.size(), 0});
-  ++runs_.back().vertices;
-  vertices_.push_back(vertex);
 }
 
-void PrimitiveRenderer::push_triangle(const Vertex& shape, vec2 a, vec2 b, vec2 c) {
-  for (const vec2 corner : {a, b, c}) push_vertex(shape, corner, 1.0f, false);
+void PrimitiveRenderer::push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]) {
+  for (const vec2 corner : corners) push_vertex(kind, shape, corner, 1.0f, false);
 }
 
-void PrimitiveRenderer::push_shape(const Vertex& shape, vec2 lower, vec2 upper) {
+void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper) {
   // The rectangle [lower, upper] of the primitive's frame, grown by the margin, in window pixels.
   const vec2 origin(shape.frame[0], shape.frame[1]);
   const vec2 axis(shape.frame[2], shape.frame[3]);
@@ -184,20 +241,20 @@ void PrimitiveRenderer::push_shape(const Vertex& shape, vec2 lower, vec2 upper) 
   ++primitive_count_;
   if (centre_visible && side <= max_point_size_ &&
       (side <= kSmallSprite || side * side <= kMaxSpriteWaste * area)) {
-    push_vertex(shape, center, side, true);
+    push_vertex(kind, shape, center, side, true);
   } else {
-    push_triangle(shape, corners[0], corners[1], corners[2]);
-    push_triangle(shape, corners[0], corners[2], corners[3]);
+    push_quad(kind, shape, corners);
   }
 }
 
-void PrimitiveRenderer::push_segment(vec2 from, vec2 to, float extension_pixels, Color color) {
+void PrimitiveRenderer::push_segment(vec2 from, vec2 to, float extension_pixels, float width_pixels,
+                                     Color color) {
   const vec2 a = to_window(from);
   const vec2 b = to_window(to);
   const float length = std::sqrt(length_squared(b - a));
   const vec2 direction = length > 1e-6f ? (b - a) / length : vec2(1.0f, 0.0f);
   const vec2 middle = 0.5f * (a + b);
-  const vec2 half(0.5f * length + extension_pixels, 0.5f * style_.line_width);
+  const vec2 half(0.5f * length + extension_pixels, 0.5f * width_pixels);
   Vertex shape;
   shape.frame[0] = middle.x;
   shape.frame[1] = middle.y;
@@ -206,7 +263,7 @@ void PrimitiveRenderer::push_segment(vec2 from, vec2 to, float extension_pixels,
   shape.box[0] = half.x;
   shape.box[1] = half.y;
   set_color(shape.fill, color);
-  push_shape(shape, -half, half);
+  push_shape(PrimitiveKind::box, shape, -half, half);
 }
 
 void PrimitiveRenderer::push_disc(vec2 center, float radius_pixels, Color fill, float ring_radius_pixels,
@@ -219,17 +276,17 @@ void PrimitiveRenderer::push_disc(vec2 center, float radius_pixels, Color fill, 
   shape.frame[0] = c.x;
   shape.frame[1] = c.y;
   if (has_fill) {
-    shape.disc[1] = radius_pixels;
+    shape.disc[0] = radius_pixels;
     set_color(shape.fill, fill);
   }
   if (has_ring) {
     // A ring one line wide, centred on the radius `ring_radius_pixels`.
-    shape.disc[2] = ring_radius_pixels + 0.5f * style_.line_width;
-    shape.disc[3] = ring_radius_pixels - 0.5f * style_.line_width;
+    shape.disc[1] = ring_radius_pixels + 0.5f * style_.line_width;
+    shape.disc[2] = ring_radius_pixels - 0.5f * style_.line_width;
     set_color(shape.line, ring);
   }
-  const float reach = std::max(radius_pixels, shape.disc[2]);
-  push_shape(shape, vec2(-reach), vec2(reach));
+  const float reach = std::max(radius_pixels, shape.disc[1]);
+  push_shape(PrimitiveKind::disc, shape, vec2(-reach), vec2(reach));
 }
 
 void PrimitiveRenderer::push_rect(vec2 lower_left, vec2 upper_right, Color color) {
@@ -241,7 +298,7 @@ void PrimitiveRenderer::push_rect(vec2 lower_left, vec2 upper_right, Color color
   shape.box[0] = half.x;
   shape.box[1] = half.y;
   set_color(shape.fill, color);
-  push_shape(shape, -half, half);
+  push_shape(PrimitiveKind::box, shape, -half, half);
 }
 
 void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text, Color color, float scale) {
@@ -270,7 +327,7 @@ void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text,
                            half.y - static_cast<float>(glyph.ink_bottom) * scale);
       const vec2 ink_upper(static_cast<float>(glyph.ink_right) * scale - half.x,
                            half.y - static_cast<float>(glyph.ink_top) * scale);
-      push_shape(shape, ink_lower, ink_upper);
+      push_shape(PrimitiveKind::glyph, shape, ink_lower, ink_upper);
     }
     pen.x += static_cast<float>(glyph.advance) * scale;
   }
@@ -281,34 +338,49 @@ void PrimitiveRenderer::draw_solid_polygon(const vec2* vertices, int count, Colo
   // The fill is the polygon's own triangles (coverage 1); the outline covers its edges.
   Vertex solid;
   const vec2 first = to_window(vertices[0]);
-  solid.frame[0] = first.x;
-  solid.frame[1] = first.y;
-  solid.box[0] = kSolidExtent;
-  solid.box[1] = kSolidExtent;
   set_color(solid.fill, fill);
   for (int i = 1; i + 1 < count; i += 2) {
     // Fan quads (first, i, i+1, i+2), the last one a triangle when the count runs out.
     const vec2 b = to_window(vertices[i]);
     const vec2 c = to_window(vertices[i + 1]);
-    const vec2 d = i + 2 < count ? to_window(vertices[i + 2]) : c;
+    const vec2 d = i + 2 < count ? to_window(vertices[i + 2]) : c;  // else the second triangle is empty
     ++primitive_count_;
-    push_triangle(solid, first, b, c);
-    if (i + 2 < count) push_triangle(solid, first, c, d);
+    push_quad(PrimitiveKind::solid, solid, {first, b, c, d});
   }
   // Square ends half a line wide, so neighbouring edges meet without a notch at corners.
   for (int i = 0; i < count; ++i) {
-    push_segment(vertices[i], vertices[(i + 1) % count], 0.5f * style_.line_width, outline);
+    push_segment(vertices[i], vertices[(i + 1) % count], 0.5f * style_.line_width, style_.line_width, outline);
   }
 }
 
 void PrimitiveRenderer::draw_solid_circle(vec2 center, float radius, vec2 axis, Color fill, Color outline) {
   const float radius_pixels = radius * camera_.pixels_per_metre();
   push_disc(center, radius_pixels, fill, radius_pixels, outline);
-  push_segment(center, center + axis * radius, 0.0f, outline);
+  push_segment(center, center + axis * radius, 0.0f, style_.line_width, outline);
 }
 
 void PrimitiveRenderer::draw_segment(vec2 from, vec2 to, Color color) {
-  push_segment(from, to, 0.5f * style_.line_width, color);
+  push_segment(from, to, 0.5f * style_.line_width, style_.line_width, color);
+}
+
+void PrimitiveRenderer::draw_band(vec2 from, vec2 to, float width_pixels, Color color) {
+  push_segment(from, to, 0.0f, width_pixels, color);
+}
+
+void PrimitiveRenderer::draw_box_outline(vec2 lower, vec2 upper, Color color) {
+  const vec2 a = to_window(lower);
+  const vec2 b = to_window(upper);
+  // Half extents reach half a line beyond the edges; the rectangle one line further in is cut out.
+  const vec2 half = 0.5f * glm::abs(b - a) + vec2(0.5f * style_.line_width);
+  const vec2 middle = 0.5f * (a + b);
+  Vertex shape;
+  shape.frame[0] = middle.x;
+  shape.frame[1] = middle.y;
+  shape.box[0] = half.x;
+  shape.box[1] = half.y;
+  shape.box[3] = style_.line_width;
+  set_color(shape.fill, color);
+  push_shape(PrimitiveKind::box, shape, -half, half);
 }
 
 void PrimitiveRenderer::draw_arrow(vec2 from, vec2 to, Color color) {
@@ -345,7 +417,7 @@ void PrimitiveRenderer::draw_arrow(vec2 from, vec2 to, Color color) {
   // 0.5 (1 + normal.x) / normal.y pixels out from the head's side, more than the margin.
   const float head_reach = head_half_width + 0.5f * (1.0f + shape.head[2]) / shape.head[3] - kMargin;
   const float half_height = std::max(half_line, head_reach);
-  push_shape(shape, vec2(-shaft_half, -half_height), vec2(tip_x, half_height));
+  push_shape(PrimitiveKind::arrow, shape, vec2(-shaft_half, -half_height), vec2(tip_x, half_height));
 }
 
 void PrimitiveRenderer::draw_point(vec2 position, float size_pixels, Color color) {
