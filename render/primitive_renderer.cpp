@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <limits>
+#include <vector>
 
 namespace impulse2d::render {
 
@@ -53,22 +55,19 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
     : style_(style), camera_(Camera::centered(vec2(0.0f, 0.0f), 1.0f, 1, 1)) {
   for (int kind = 0; kind < primitive_kind_count; ++kind) {
     const std::string fragment_shader = primitive_fragment_shader(static_cast<PrimitiveKind>(kind));
-    programs_[kind] = std::make_unique<ShaderProgram>("primitives " + std::to_string(kind), primitive_vertex_shader,
-                                                      fragment_shader.c_str());
+    programs_[kind] = std::make_unique<ShaderProgram>(
+        "primitives " + std::to_string(kind), primitive_vertex_shader(static_cast<PrimitiveKind>(kind)),
+        fragment_shader.c_str());
     viewport_locations_[kind] = programs_[kind]->uniform_location("u_viewport");
   }
   GLfloat point_sizes[2] = {1.0f, 1.0f};
   glGetFloatv(GL_POINT_SIZE_RANGE, point_sizes);
   max_point_size_ = std::min(point_sizes[1], style_.max_point_sprite);
 
-  glGenVertexArrays(1, &vertex_array_);
-  glGenBuffers(1, &vertex_buffer_);
+  glGenVertexArrays(2, vertex_arrays_);
+  glGenBuffers(2, vertex_buffers_);
   glGenBuffers(1, &index_buffer_);
-  glBindVertexArray(vertex_array_);
-  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
-  const GLsizei stride = sizeof(Vertex);
-  const auto attribute = [stride](GLuint location, GLint size, GLenum type, std::size_t offset) {
+  const auto attribute = [](GLuint location, GLint size, GLenum type, GLsizei stride, std::size_t offset) {
     glEnableVertexAttribArray(location);
     const void* pointer = reinterpret_cast<const void*>(offset);
     if (type == GL_UNSIGNED_INT) {
@@ -77,21 +76,37 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
       glVertexAttribPointer(location, size, type, type == GL_UNSIGNED_BYTE ? GL_TRUE : GL_FALSE, stride, pointer);
     }
   };
-  attribute(0, 3, GL_FLOAT, offsetof(Vertex, sprite));
-  attribute(1, 4, GL_FLOAT, offsetof(Vertex, frame));
-  attribute(2, 4, GL_FLOAT, offsetof(Vertex, box));
-  attribute(3, 4, GL_FLOAT, offsetof(Vertex, head));
-  attribute(4, 3, GL_FLOAT, offsetof(Vertex, disc));
-  attribute(5, 4, GL_UNSIGNED_BYTE, offsetof(Vertex, fill));
-  attribute(6, 4, GL_UNSIGNED_BYTE, offsetof(Vertex, line));
-  attribute(7, 2, GL_UNSIGNED_INT, offsetof(Vertex, glyph));
+  glBindVertexArray(vertex_arrays_[0]);
+  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[0]);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
+  const GLsizei polygon_stride = sizeof(PolygonVertex);
+  attribute(0, 3, GL_FLOAT, polygon_stride, offsetof(PolygonVertex, sprite));
+  attribute(1, 3, GL_FLOAT, polygon_stride, offsetof(PolygonVertex, origin));
+  attribute(2, 4, GL_UNSIGNED_BYTE, polygon_stride, offsetof(PolygonVertex, fill));
+  attribute(3, 4, GL_UNSIGNED_BYTE, polygon_stride, offsetof(PolygonVertex, line));
+  for (int edge = 0; edge < polygon_primitive_edges; ++edge) {
+    attribute(static_cast<GLuint>(4 + edge), 3, GL_FLOAT, polygon_stride,
+              offsetof(PolygonVertex, edges) + sizeof(PolygonVertex::edges[0]) * static_cast<std::size_t>(edge));
+  }
+  glBindVertexArray(vertex_arrays_[1]);
+  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[1]);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
+  const GLsizei stride = sizeof(Vertex);
+  attribute(0, 3, GL_FLOAT, stride, offsetof(Vertex, sprite));
+  attribute(1, 4, GL_FLOAT, stride, offsetof(Vertex, frame));
+  attribute(2, 4, GL_FLOAT, stride, offsetof(Vertex, box));
+  attribute(3, 4, GL_FLOAT, stride, offsetof(Vertex, head));
+  attribute(4, 3, GL_FLOAT, stride, offsetof(Vertex, disc));
+  attribute(5, 4, GL_UNSIGNED_BYTE, stride, offsetof(Vertex, fill));
+  attribute(6, 4, GL_UNSIGNED_BYTE, stride, offsetof(Vertex, line));
+  attribute(7, 2, GL_UNSIGNED_INT, stride, offsetof(Vertex, glyph));
   glBindVertexArray(0);
 }
 
 PrimitiveRenderer::~PrimitiveRenderer() {
   glDeleteBuffers(1, &index_buffer_);
-  glDeleteBuffers(1, &vertex_buffer_);
-  glDeleteVertexArrays(1, &vertex_array_);
+  glDeleteBuffers(2, vertex_buffers_);
+  glDeleteVertexArrays(2, vertex_arrays_);
 }
 
 void PrimitiveRenderer::begin(const Camera& camera) {
@@ -104,24 +119,46 @@ void PrimitiveRenderer::begin(const Camera& camera) {
   world_to_window_[1] = (clip[3][0] + 1.0f) * half_width;
   world_to_window_[2] = clip[1][1] * half_height;
   world_to_window_[3] = (clip[3][1] + 1.0f) * half_height;
-  for (KindBatch& batch : batches_) {
-    batch.vertices.clear();
-    batch.open_runs.clear();
+  polygons_.vertices.clear();
+  polygons_.open_runs.clear();
+  for (Batch<Vertex>& kind_batch : batches_) {
+    kind_batch.vertices.clear();
+    kind_batch.open_runs.clear();
   }
   runs_.clear();
   primitive_count_ = 0;
 }
 
 void PrimitiveRenderer::next_layer() {
-  for (KindBatch& batch : batches_) {
-    runs_.insert(runs_.end(), batch.open_runs.begin(), batch.open_runs.end());
-    batch.open_runs.clear();
+  runs_.insert(runs_.end(), polygons_.open_runs.begin(), polygons_.open_runs.end());
+  polygons_.open_runs.clear();
+  for (Batch<Vertex>& kind_batch : batches_) {
+    runs_.insert(runs_.end(), kind_batch.open_runs.begin(), kind_batch.open_runs.end());
+    kind_batch.open_runs.clear();
   }
 }
 
 vec2 PrimitiveRenderer::to_window(vec2 world) const {
   return vec2(world.x * world_to_window_[0] + world_to_window_[1], world.y * world_to_window_[2] + world_to_window_[3]);
 }
+
+namespace {
+
+// Uploads `vertices` to `buffer`, growing it when they do not fit in `capacity`.
+template <typename V>
+void upload(GLuint buffer, const std::vector<V>& vertices, std::size_t& capacity) {
+  if (vertices.empty()) return;
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  if (vertices.size() > capacity) {
+    // Buffers grow geometrically and are kept for later frames: reallocating them every
+    // frame costs more in page faults than the upload itself.
+    capacity = std::max(vertices.size(), 2 * capacity);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity * sizeof(V)), nullptr, GL_STREAM_DRAW);
+  }
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vertices.size() * sizeof(V)), vertices.data());
+}
+
+}  // namespace
 
 void PrimitiveRenderer::finish(Color background) {
   next_layer();
@@ -131,26 +168,21 @@ void PrimitiveRenderer::finish(Color background) {
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   if (!runs_.empty()) {
-    // Each kind's vertices go to their own stretch of the one vertex buffer.
+    // The polygons' vertices go to their own buffer; each other kind's to its own stretch
+    // of the second.
+    std::vector<Vertex>& shapes = batches_[0].vertices;
     std::size_t first_of_kind[primitive_kind_count] = {};
-    std::size_t vertex_count = 0;
-    for (int kind = 0; kind < primitive_kind_count; ++kind) {
-      first_of_kind[kind] = vertex_count;
-      vertex_count += batches_[kind].vertices.size();
+    for (int kind = 2; kind < primitive_kind_count; ++kind) {
+      first_of_kind[kind] = shapes.size();
+      const std::vector<Vertex>& more = batches_[kind - 1].vertices;
+      shapes.insert(shapes.end(), more.begin(), more.end());
     }
     std::size_t most_quads = 0;
     for (const Run& run : runs_) {
       if (!run.points) most_quads = std::max(most_quads, run.vertices / 4);
     }
-    glBindVertexArray(vertex_array_);
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    if (vertex_count > capacity_vertices_) {
-      // Buffers grow geometrically and are kept for later frames: reallocating them every
-      // frame costs more in page faults than the upload itself.
-      capacity_vertices_ = std::max(vertex_count, 2 * capacity_vertices_);
-      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity_vertices_ * sizeof(Vertex)), nullptr,
-                   GL_STREAM_DRAW);
-    }
+    upload(vertex_buffers_[0], polygons_.vertices, capacity_vertices_[0]);
+    upload(vertex_buffers_[1], shapes, capacity_vertices_[1]);
     if (most_quads > capacity_quads_) {
       // Two triangles (0, 1, 2) and (0, 2, 3) per quad; a run starts at its base vertex.
       capacity_quads_ = std::max(most_quads, 2 * capacity_quads_);
@@ -160,14 +192,9 @@ void PrimitiveRenderer::finish(Color background) {
         const GLuint pattern[6] = {corner, corner + 1, corner + 2, corner, corner + 2, corner + 3};
         std::copy(pattern, pattern + 6, indices.begin() + static_cast<std::ptrdiff_t>(6 * quad));
       }
+      glBindVertexArray(vertex_arrays_[0]);
       glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
                    indices.data(), GL_STATIC_DRAW);
-    }
-    for (int kind = 0; kind < primitive_kind_count; ++kind) {
-      const std::vector<Vertex>& vertices = batches_[kind].vertices;
-      if (vertices.empty()) continue;
-      glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first_of_kind[kind] * sizeof(Vertex)),
-                      static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
     }
     glEnable(GL_BLEND);
     // Premultiplied "over" (the fragment stage multiplies coverage and alpha into the
@@ -181,6 +208,7 @@ void PrimitiveRenderer::finish(Color background) {
         programs_[kind]->use();
         glUniform2f(viewport_locations_[kind], static_cast<float>(camera_.width()),
                     static_cast<float>(camera_.height()));
+        glBindVertexArray(vertex_arrays_[run.kind == PrimitiveKind::polygon ? 0 : 1]);
         current_kind = kind;
       }
       const auto first = static_cast<GLint>(first_of_kind[kind] + run.first_vertex);
@@ -200,21 +228,30 @@ void PrimitiveRenderer::finish(Color background) {
   }
 }
 
-void PrimitiveRenderer::push_vertex(PrimitiveKind kind, const Vertex& shape, vec2 position, float point_size,
-                                    bool point) {
-  KindBatch& batch = batches_[static_cast<int>(kind)];
-  if (batch.open_runs.empty() || batch.open_runs.back().points != point) {
-    batch.open_runs.push_back(Run{kind, point, batch.vertices.size(), 0});
+template <typename V>
+void PrimitiveRenderer::push_vertex(Batch<V>& kind_batch, PrimitiveKind kind, const V& shape, vec2 position,
+                                    float point_size, bool point) {
+  if (kind_batch.open_runs.empty() || kind_batch.open_runs.back().points != point) {
+    kind_batch.open_runs.push_back(Run{kind, point, kind_batch.vertices.size(), 0});
   }
-  ++batch.open_runs.back().vertices;
-  Vertex& vertex = batch.vertices.emplace_back(shape);
+  ++kind_batch.open_runs.back().vertices;
+  V& vertex = kind_batch.vertices.emplace_back(shape);
   vertex.sprite[0] = position.x;
   vertex.sprite[1] = position.y;
   vertex.sprite[2] = point_size;
 }
 
 void PrimitiveRenderer::push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]) {
-  for (const vec2 corner : corners) push_vertex(kind, shape, corner, 1.0f, false);
+  for (const vec2 corner : corners) push_vertex(batch(kind), kind, shape, corner, 1.0f, false);
+}
+
+bool PrimitiveRenderer::fits_point_sprite(vec2 lower, vec2 upper, float area) const {
+  const float side = std::max(upper.x - lower.x, upper.y - lower.y);
+  const vec2 center = 0.5f * (lower + upper);
+  // GL drops a whole point whose centre lies outside the viewport, so those are quads.
+  const bool centre_visible = center.x >= 0.0f && center.y >= 0.0f && center.x <= static_cast<float>(camera_.width()) &&
+                              center.y <= static_cast<float>(camera_.height());
+  return centre_visible && side <= max_point_size_ && (side <= kSmallSprite || side * side <= kMaxSpriteWaste * area);
 }
 
 void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper) {
@@ -229,21 +266,27 @@ void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2
   vec2 box_lower = corners[0];
   vec2 box_upper = corners[0];
   for (const vec2 corner : corners) {
-    box_lower = vec2(std::min(box_lower.x, corner.x), std::min(box_lower.y, corner.y));
-    box_upper = vec2(std::max(box_upper.x, corner.x), std::max(box_upper.y, corner.y));
+    box_lower = glm::min(box_lower, corner);
+    box_upper = glm::max(box_upper, corner);
   }
-  const float side = std::max(box_upper.x - box_lower.x, box_upper.y - box_lower.y);
-  const float area = (high.x - low.x) * (high.y - low.y);
-  const vec2 center = 0.5f * (box_lower + box_upper);
-  // GL drops a whole point whose centre lies outside the viewport, so those are quads.
-  const bool centre_visible = center.x >= 0.0f && center.y >= 0.0f && center.x <= static_cast<float>(camera_.width()) &&
-                              center.y <= static_cast<float>(camera_.height());
   ++primitive_count_;
-  if (centre_visible && side <= max_point_size_ &&
-      (side <= kSmallSprite || side * side <= kMaxSpriteWaste * area)) {
-    push_vertex(kind, shape, center, side, true);
+  if (fits_point_sprite(box_lower, box_upper, (high.x - low.x) * (high.y - low.y))) {
+    push_vertex(batch(kind), kind, shape, 0.5f * (box_lower + box_upper),
+                std::max(box_upper.x - box_lower.x, box_upper.y - box_lower.y), true);
   } else {
     push_quad(kind, shape, corners);
+  }
+}
+
+void PrimitiveRenderer::push_filled_triangles(const vec2* window_vertices, int count, Color fill) {
+  // Fan quads (first, i, i+1, i+2), the last one a triangle when the count runs out.
+  Vertex solid;
+  set_color(solid.fill, fill);
+  const vec2 first = window_vertices[0];
+  for (int i = 1; i + 1 < count; i += 2) {
+    const vec2 d = i + 2 < count ? window_vertices[i + 2] : window_vertices[i + 1];  // else an empty triangle
+    ++primitive_count_;
+    push_quad(PrimitiveKind::solid, solid, {first, window_vertices[i], window_vertices[i + 1], d});
   }
 }
 
@@ -335,21 +378,59 @@ void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text,
 
 void PrimitiveRenderer::draw_solid_polygon(const vec2* vertices, int count, Color fill, Color outline) {
   if (count < 3) return;
-  // The fill is the polygon's own triangles (coverage 1); the outline covers its edges.
-  Vertex solid;
-  const vec2 first = to_window(vertices[0]);
-  set_color(solid.fill, fill);
-  for (int i = 1; i + 1 < count; i += 2) {
-    // Fan quads (first, i, i+1, i+2), the last one a triangle when the count runs out.
-    const vec2 b = to_window(vertices[i]);
-    const vec2 c = to_window(vertices[i + 1]);
-    const vec2 d = i + 2 < count ? to_window(vertices[i + 2]) : c;  // else the second triangle is empty
-    ++primitive_count_;
-    push_quad(PrimitiveKind::solid, solid, {first, b, c, d});
+  if (count > polygon_primitive_edges) {
+    // The fill as the polygon's own triangles (coverage 1); the outline over its edges, with
+    // square ends half a line wide so neighbouring edges meet without a notch at corners.
+    std::vector<vec2> window_vertices(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) window_vertices[static_cast<std::size_t>(i)] = to_window(vertices[i]);
+    push_filled_triangles(window_vertices.data(), count, fill);
+    for (int i = 0; i < count; ++i) {
+      push_segment(vertices[i], vertices[(i + 1) % count], 0.5f * style_.line_width, style_.line_width, outline);
+    }
+    return;
   }
-  // Square ends half a line wide, so neighbouring edges meet without a notch at corners.
+  // One primitive: the pixel's distance to the polygon is the largest of its edges'.
+  vec2 corners[polygon_primitive_edges];
+  float twice_area = 0.0f;
+  for (int i = 0; i < count; ++i) corners[i] = to_window(vertices[i]);
+  for (int i = 0; i < count; ++i) twice_area += cross(corners[i], corners[(i + 1) % count]);
+  const float outward = twice_area < 0.0f ? -1.0f : 1.0f;  // right of each edge when counter-clockwise
+  const vec2 origin = corners[0];
+  PolygonVertex shape;
+  shape.origin[0] = origin.x;
+  shape.origin[1] = origin.y;
+  shape.origin[2] = 0.5f * style_.line_width;
+  vec2 normals[polygon_primitive_edges];
   for (int i = 0; i < count; ++i) {
-    push_segment(vertices[i], vertices[(i + 1) % count], 0.5f * style_.line_width, style_.line_width, outline);
+    const vec2 edge = corners[(i + 1) % count] - corners[i];
+    const float length = std::sqrt(length_squared(edge));
+    normals[i] = length > 1e-6f ? outward * right_perpendicular(edge) / length : vec2(0.0f);
+    shape.edges[i][0] = normals[i].x;
+    shape.edges[i][1] = normals[i].y;
+    shape.edges[i][2] = length > 1e-6f ? dot(normals[i], corners[i] - origin) : 1.0e6f;
+  }
+  for (int i = count; i < polygon_primitive_edges; ++i) shape.edges[i][2] = 1.0e6f;
+  set_color(shape.fill, fill);
+  set_color(shape.line, outline);
+  // Bounds: each corner's mitre point, where the outline's anti-aliased edge ends on both its
+  // edges (corners sharper than about 30 degrees are cut short).
+  const float reach = 0.5f * style_.line_width + kMargin;
+  vec2 lower(std::numeric_limits<float>::max());
+  vec2 upper(std::numeric_limits<float>::lowest());
+  for (int i = 0; i < count; ++i) {
+    const vec2 before = normals[(i + count - 1) % count];
+    const vec2 after = normals[i];
+    const vec2 far = corners[i] + reach * (before + after) / std::max(1.0f + dot(before, after), 0.125f);
+    lower = glm::min(lower, far);
+    upper = glm::max(upper, far);
+  }
+  ++primitive_count_;
+  if (fits_point_sprite(lower, upper, std::abs(0.5f * twice_area))) {
+    push_vertex(polygons_, PrimitiveKind::polygon, shape, 0.5f * (lower + upper),
+                std::max(upper.x - lower.x, upper.y - lower.y), true);
+  } else {
+    const vec2 quad[4] = {lower, vec2(upper.x, lower.y), upper, vec2(lower.x, upper.y)};
+    for (const vec2 corner : quad) push_vertex(polygons_, PrimitiveKind::polygon, shape, corner, 1.0f, false);
   }
 }
 

@@ -87,8 +87,8 @@ class PrimitiveRenderer final : public DebugDraw {
   void draw_screen_text(vec2 top_left, const std::string& text, Color color, int scale);
 
  private:
-  // One vertex, as the shaders read it (see primitive_shaders.h). The defaults switch
-  // every shape off.
+  // One vertex of the disc, box, arrow, glyph and polygon-fill-triangle kinds, as their
+  // shaders read it (see primitive_shaders.h). The defaults switch every shape off.
   struct Vertex {
     float sprite[3] = {0.0f, 0.0f, 1.0f};
     float frame[4] = {0.0f, 0.0f, 1.0f, 0.0f};
@@ -99,23 +99,38 @@ class PrimitiveRenderer final : public DebugDraw {
     std::uint8_t line[4] = {0, 0, 0, 0};
     std::uint32_t glyph[2] = {0, 0};
   };
+  // One vertex of the polygon kind. Unused edges never bound the polygon.
+  struct PolygonVertex {
+    float sprite[3] = {0.0f, 0.0f, 1.0f};
+    float origin[3] = {0.0f, 0.0f, 0.0f};  // window pixels; half the outline's width
+    float edges[polygon_primitive_edges][3] = {};  // outward unit normal, offset from the origin
+    std::uint8_t fill[4] = {0, 0, 0, 0};
+    std::uint8_t line[4] = {0, 0, 0, 0};
+  };
   // Consecutive vertices of one kind's buffer drawn by one call, as points or as quads
   // (four vertices each).
   struct Run {
-    PrimitiveKind kind = PrimitiveKind::solid;
+    PrimitiveKind kind = PrimitiveKind::polygon;
     bool points = true;
     std::size_t first_vertex = 0;  // in the kind's vertices
     std::size_t vertices = 0;
   };
   // The primitives of one kind batched in this frame, and the runs of the open layer.
-  struct KindBatch {
-    std::vector<Vertex> vertices;
+  template <typename V>
+  struct Batch {
+    std::vector<V> vertices;
     std::vector<Run> open_runs;
   };
+  // What covers a primitive whose window-space bounds are [lower, upper]: one point sprite,
+  // or (when false) a quad.
+  bool fits_point_sprite(vec2 lower, vec2 upper, float area) const;
   vec2 to_window(vec2 world) const;
-  void push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper);
-  void push_vertex(PrimitiveKind kind, const Vertex& shape, vec2 position, float point_size, bool point);
+  Batch<Vertex>& batch(PrimitiveKind kind) { return batches_[static_cast<int>(kind) - 1]; }
+  template <typename V>
+  void push_vertex(Batch<V>& batch, PrimitiveKind kind, const V& shape, vec2 position, float point_size, bool point);
   void push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]);
+  void push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper);
+  void push_filled_triangles(const vec2* window_vertices, int count, Color fill);
   void push_segment(vec2 from, vec2 to, float extension_pixels, float width_pixels, Color color);
   void push_disc(vec2 center, float radius_pixels, Color fill, float ring_radius_pixels, Color ring);
   void push_rect(vec2 lower_left, vec2 upper_right, Color color);
@@ -127,13 +142,14 @@ class PrimitiveRenderer final : public DebugDraw {
   float max_point_size_ = 1.0f;                           // the driver's largest point sprite
   std::unique_ptr<ShaderProgram> programs_[primitive_kind_count];
   int viewport_locations_[primitive_kind_count] = {};
-  unsigned int vertex_array_ = 0;
-  unsigned int vertex_buffer_ = 0;
+  unsigned int vertex_arrays_[2] = {};   // polygon vertices, other vertices
+  unsigned int vertex_buffers_[2] = {};  // the same
   unsigned int index_buffer_ = 0;
-  std::size_t capacity_vertices_ = 0;  // vertices the vertex buffer holds
-  std::size_t capacity_quads_ = 0;     // quads the index buffer indexes
+  std::size_t capacity_vertices_[2] = {};  // vertices each vertex buffer holds
+  std::size_t capacity_quads_ = 0;         // quads the index buffer indexes
   std::size_t primitive_count_ = 0;
-  KindBatch batches_[primitive_kind_count];
+  Batch<PolygonVertex> polygons_;
+  Batch<Vertex> batches_[primitive_kind_count - 1];  // the other kinds, in order
   std::vector<Run> runs_;  // of the closed layers, in drawing order
 };
 
