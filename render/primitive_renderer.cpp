@@ -144,18 +144,20 @@ vec2 PrimitiveRenderer::to_window(vec2 world) const {
 
 namespace {
 
-// Uploads `vertices` to `buffer`, growing it when they do not fit in `capacity`.
+// Makes `buffer` (bound to GL_ARRAY_BUFFER) hold at least `count` vertices of `size` bytes.
+void reserve_vertices(std::size_t count, std::size_t size, std::size_t& capacity) {
+  if (count <= capacity) return;
+  // Buffers grow geometrically and are kept for later frames: reallocating them every frame
+  // costs more in page faults than the upload itself.
+  capacity = std::max(count, 2 * capacity);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity * size), nullptr, GL_STREAM_DRAW);
+}
+
 template <typename V>
-void upload(GLuint buffer, const std::vector<V>& vertices, std::size_t& capacity) {
+void upload(const std::vector<V>& vertices, std::size_t first) {
   if (vertices.empty()) return;
-  glBindBuffer(GL_ARRAY_BUFFER, buffer);
-  if (vertices.size() > capacity) {
-    // Buffers grow geometrically and are kept for later frames: reallocating them every
-    // frame costs more in page faults than the upload itself.
-    capacity = std::max(vertices.size(), 2 * capacity);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity * sizeof(V)), nullptr, GL_STREAM_DRAW);
-  }
-  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vertices.size() * sizeof(V)), vertices.data());
+  glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first * sizeof(V)),
+                  static_cast<GLsizeiptr>(vertices.size() * sizeof(V)), vertices.data());
 }
 
 }  // namespace
@@ -170,19 +172,22 @@ void PrimitiveRenderer::finish(Color background) {
   if (!runs_.empty()) {
     // The polygons' vertices go to their own buffer; each other kind's to its own stretch
     // of the second.
-    std::vector<Vertex>& shapes = batches_[0].vertices;
     std::size_t first_of_kind[primitive_kind_count] = {};
-    for (int kind = 2; kind < primitive_kind_count; ++kind) {
-      first_of_kind[kind] = shapes.size();
-      const std::vector<Vertex>& more = batches_[kind - 1].vertices;
-      shapes.insert(shapes.end(), more.begin(), more.end());
+    std::size_t shape_vertices = 0;
+    for (int kind = 1; kind < primitive_kind_count; ++kind) {
+      first_of_kind[kind] = shape_vertices;
+      shape_vertices += batches_[kind - 1].vertices.size();
     }
     std::size_t most_quads = 0;
     for (const Run& run : runs_) {
       if (!run.points) most_quads = std::max(most_quads, run.vertices / 4);
     }
-    upload(vertex_buffers_[0], polygons_.vertices, capacity_vertices_[0]);
-    upload(vertex_buffers_[1], shapes, capacity_vertices_[1]);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[0]);
+    reserve_vertices(polygons_.vertices.size(), sizeof(PolygonVertex), capacity_vertices_[0]);
+    upload(polygons_.vertices, 0);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[1]);
+    reserve_vertices(shape_vertices, sizeof(Vertex), capacity_vertices_[1]);
+    for (int kind = 1; kind < primitive_kind_count; ++kind) upload(batches_[kind - 1].vertices, first_of_kind[kind]);
     if (most_quads > capacity_quads_) {
       // Two triangles (0, 1, 2) and (0, 2, 3) per quad; a run starts at its base vertex.
       capacity_quads_ = std::max(most_quads, 2 * capacity_quads_);
