@@ -8,8 +8,8 @@
 /// pixels whichever way it is rasterised. Attributes (see `PrimitiveRenderer::Vertex`):
 ///   sprite: window position of the point or quad corner, point size;
 ///   frame:  origin (window pixels) and unit x axis of the primitive's frame;
-///   box:    half extents of a rectangle centred on the origin; for a glyph, font pixels per
-///           window pixel; for a rectangle's outline, its width (0: a filled rectangle);
+///   box:    half extents (x, y) of a rectangle centred on the origin; font pixels per
+///           window pixel of a glyph (z); width of a rectangle's outline (w; 0: filled);
 ///   head:   an arrow head along +x: base x, tip x (it ends there), outward normal of its
 ///           upper side;
 ///   disc:   a disc's radius and a ring's outer and inner radii, centred on the origin;
