@@ -29,11 +29,11 @@ constexpr float kMargin = 0.5f;
 // otherwise (a long or diagonal line) a quad hugs the primitive. llvmpipe's cost follows
 // the 4x4 pixel blocks a primitive touches more than the primitive count. Chosen by
 // instruction counts (callgrind, LP_NUM_THREADS=0, steady state) of the 1000-body
-// all-overlay frame of bench_render when one program drew every kind: 6 and 2.5 gave 271 M
-// a frame; 10 and 3, 275 M; 4 and 2, 284 M; always points, 375 M; always quads, 302 M; one
-// enclosing triangle instead of a quad, 297 M (docs/rendering.md).
-constexpr float kSmallSprite = 6.0f;
-constexpr float kMaxSpriteWaste = 2.5f;
+// all-overlay frame of bench_render with one program per kind: 8 and 4 gave 210 M a frame;
+// 6 and 2.5, 214 M; 12 and 8, 214 M. With one program for every kind, 6 and 2.5 had been
+// best (docs/rendering.md).
+constexpr float kSmallSprite = 8.0f;
+constexpr float kMaxSpriteWaste = 4.0f;
 
 void set_color(std::uint8_t (&rgba)[4], Color color) {
   for (int i = 0; i < 4; ++i) {
