@@ -31,15 +31,16 @@ struct PrimitiveStyle {
 };
 
 /// Draws world primitives (segments, bands, rectangle outlines, arrows, discs with their rim,
-/// characters: each one primitive with analytic anti-aliased coverage; polygon fills as
+/// convex polygons of up to `polygon_primitive_edges` edges with their outline, characters:
+/// each one primitive with analytic anti-aliased coverage; fills of larger polygons as
 /// triangles) and screen-space rectangles and text, batched between `begin` and `finish`.
 /// llvmpipe's cost grows with the primitives it rasterises, the 4x4 pixel blocks each one
 /// touches and the work of the fragment program on each block, so a small primitive is a
 /// single point sprite rather than two triangles, and each kind of primitive has a program
 /// of its own. Draw order: layers (`next_layer`) in the order begun; within a layer, the
-/// kinds in `PrimitiveKind` order (polygon fills, discs, boxes, arrows, glyphs); within a
-/// kind, the order emitted. Needs the GL context it was created under to be current for
-/// construction, `finish` and destruction.
+/// kinds in `PrimitiveKind` order (polygons, fill triangles, discs, boxes, arrows, glyphs);
+/// within a kind, the order emitted. Needs the GL context it was created under to be current
+/// for construction, `finish` and destruction.
 class PrimitiveRenderer final : public DebugDraw {
  public:
   /// Compiles the program and creates the buffers. Throws `RenderError` on shader errors.
