@@ -25,15 +25,19 @@ namespace {
 // base corners reach further; draw_arrow widens its bounds for them).
 constexpr float kMargin = 0.5f;
 // Sprites up to this many pixels across are always points. Larger ones are points only
-// while their square is at most kMaxSpriteWaste times the primitive's own rectangle;
-// otherwise (a long or diagonal line) a quad hugs the primitive. llvmpipe's cost follows
-// the 4x4 pixel blocks a primitive touches more than the primitive count. Chosen by
-// instruction counts (callgrind, LP_NUM_THREADS=0, steady state) of the 1000-body
-// all-overlay frame of bench_render with one program per kind: 8 and 4 gave 210 M a frame;
-// 6 and 2.5, 214 M; 12 and 8, 214 M. With one program for every kind, 6 and 2.5 had been
-// best (docs/rendering.md).
+// while their square is at most kMaxSpriteWaste times the primitive's own rectangle
+// (kRunSpriteWaste right after a point sprite of the same kind, so that fewer switches
+// between sprites and quads split the kind's run into more draw calls); otherwise (a long
+// or diagonal line) a quad hugs the primitive. llvmpipe's cost follows the 4x4 pixel blocks
+// a primitive touches more than the primitive count. Chosen by instruction counts
+// (callgrind, LP_NUM_THREADS=0, steady state) of the 1000-body every-overlay frame of
+// bench_render with one program per kind: 8, 4 and 5.5 gave 207 M a frame (37 M shapes
+// only; 188 draw calls instead of 822); 8, 4 and no run limit, 210 M (41 M); 8, 4 and 8,
+// 214 M (37 M); 6 and 2.5, 214 M; 12 and 8, 214 M. With one program for every kind, 6
+// and 2.5 had been best (docs/rendering.md).
 constexpr float kSmallSprite = 8.0f;
 constexpr float kMaxSpriteWaste = 4.0f;
+constexpr float kRunSpriteWaste = 5.5f;
 
 void set_color(std::uint8_t (&rgba)[4], Color color) {
   for (int i = 0; i < 4; ++i) {
@@ -250,13 +254,16 @@ void PrimitiveRenderer::push_quad(PrimitiveKind kind, const Vertex& shape, const
   for (const vec2 corner : corners) push_vertex(batch(kind), kind, shape, corner, 1.0f, false);
 }
 
-bool PrimitiveRenderer::fits_point_sprite(vec2 lower, vec2 upper, float area) const {
+bool PrimitiveRenderer::fits_point_sprite(vec2 lower, vec2 upper, float area, bool after_point) const {
   const float side = std::max(upper.x - lower.x, upper.y - lower.y);
   const vec2 center = 0.5f * (lower + upper);
   // GL drops a whole point whose centre lies outside the viewport, so those are quads.
   const bool centre_visible = center.x >= 0.0f && center.y >= 0.0f && center.x <= static_cast<float>(camera_.width()) &&
                               center.y <= static_cast<float>(camera_.height());
-  return centre_visible && side <= max_point_size_ && (side <= kSmallSprite || side * side <= kMaxSpriteWaste * area);
+  // After a point sprite of the same kind a looser limit keeps the run going: every switch
+  // between sprites and quads is another draw call.
+  const float waste = after_point ? kRunSpriteWaste : kMaxSpriteWaste;
+  return centre_visible && side <= max_point_size_ && (side <= kSmallSprite || side * side <= waste * area);
 }
 
 void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper) {
@@ -275,7 +282,8 @@ void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2
     box_upper = glm::max(box_upper, corner);
   }
   ++primitive_count_;
-  if (fits_point_sprite(box_lower, box_upper, (high.x - low.x) * (high.y - low.y))) {
+  const std::vector<Run>& runs = batch(kind).open_runs;
+  if (fits_point_sprite(box_lower, box_upper, (high.x - low.x) * (high.y - low.y), !runs.empty() && runs.back().points)) {
     push_vertex(batch(kind), kind, shape, 0.5f * (box_lower + box_upper),
                 std::max(box_upper.x - box_lower.x, box_upper.y - box_lower.y), true);
   } else {
@@ -430,7 +438,8 @@ void PrimitiveRenderer::draw_solid_polygon(const vec2* vertices, int count, Colo
     upper = glm::max(upper, far);
   }
   ++primitive_count_;
-  if (fits_point_sprite(lower, upper, std::abs(0.5f * twice_area))) {
+  const bool after_point = !polygons_.open_runs.empty() && polygons_.open_runs.back().points;
+  if (fits_point_sprite(lower, upper, std::abs(0.5f * twice_area), after_point)) {
     push_vertex(polygons_, PrimitiveKind::polygon, shape, 0.5f * (lower + upper),
                 std::max(upper.x - lower.x, upper.y - lower.y), true);
   } else {

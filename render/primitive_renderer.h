@@ -122,9 +122,10 @@ class PrimitiveRenderer final : public DebugDraw {
     std::vector<V> vertices;
     std::vector<Run> open_runs;
   };
-  // What covers a primitive whose window-space bounds are [lower, upper]: one point sprite,
-  // or (when false) a quad.
-  bool fits_point_sprite(vec2 lower, vec2 upper, float area) const;
+  // What covers a primitive of `area` square pixels whose window-space bounds are
+  // [lower, upper]: one point sprite, or (when false) a quad. `after_point`: the open run of
+  // its kind is of point sprites.
+  bool fits_point_sprite(vec2 lower, vec2 upper, float area, bool after_point) const;
   vec2 to_window(vec2 world) const;
   Batch<Vertex>& batch(PrimitiveKind kind) { return batches_[static_cast<int>(kind) - 1]; }
   template <typename V>
