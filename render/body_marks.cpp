@@ -8,6 +8,13 @@
 
 namespace impulse2d::render {
 
+void draw_bounding_boxes(PrimitiveRenderer& renderer, const World& world, Color color) {
+  const std::vector<Body>& bodies = world.body_slots();
+  for (std::uint32_t slot = 0; slot < bodies.size(); ++slot) {
+    if (world.slot_alive(slot)) renderer.draw_box_outline(bodies[slot].aabb.lower, bodies[slot].aabb.upper, color);
+  }
+}
+
 void draw_body_labels(PrimitiveRenderer& renderer, const World& world, const DebugDrawOptions& options,
                       const BodyLabeler& labeler) {
   const float alpha = std::clamp(options.interpolation_alpha, 0.0f, 1.0f);
@@ -29,10 +36,7 @@ void draw_highlight(PrimitiveRenderer& renderer, const World& world, std::uint32
   const float s = static_cast<float>(std::max(scale, 1));
   for (int ring = 0; ring < 3; ++ring) {
     const float grow = (4.0f + static_cast<float>(ring)) * s * pixel;
-    const vec2 lower = box.lower - vec2(grow);
-    const vec2 upper = box.upper + vec2(grow);
-    const vec2 corners[4] = {lower, vec2(upper.x, lower.y), upper, vec2(lower.x, upper.y)};
-    for (int i = 0; i < 4; ++i) renderer.draw_segment(corners[i], corners[(i + 1) % 4], highlight_color);
+    renderer.draw_box_outline(box.lower - vec2(grow), box.upper + vec2(grow), highlight_color);
   }
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file body_marks.h
-/// Marks the renderer puts on bodies: their names (or slot indices) and a highlight frame
-/// around one chosen body.
+/// Marks the renderer puts on bodies: their bounding boxes, their names (or slot indices) and
+/// a highlight frame around one chosen body.
 
 #include "core/debug_draw.h"
 
@@ -22,6 +22,10 @@ using BodyLabeler = std::function<std::string(std::uint32_t slot)>;
 
 /// Colour of the highlight frame (a vivid magenta that no overlay uses).
 constexpr Color highlight_color{0.95f, 0.05f, 0.55f, 1.0f};
+
+/// Outlines each living body's bounding box (`Body::aabb`) in `color`, one primitive per
+/// box (`World::draw` would draw four segments each for `draw_aabbs`).
+void draw_bounding_boxes(PrimitiveRenderer& renderer, const World& world, Color color);
 
 /// Writes each living body's label (`labeler`'s name, else its slot index) at its drawn centre
 /// (interpolated by `options.interpolation_alpha`) in `options.palette.label`.

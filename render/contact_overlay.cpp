@@ -56,7 +56,7 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
   const float max_arrow = style.max_arrow_pixels * s;
   const float offset = style.arrow_offset_pixels * s * metre_per_pixel;
   const float min_bar = style.min_penetration_pixels * s * metre_per_pixel;
-  const float bar_half_width = 0.5f * style.penetration_bar_pixels * s * metre_per_pixel;
+  const float bar_width = style.penetration_bar_pixels * s;
   for (const Contact& contact : world.contacts()) {
     if (!contact.enabled) continue;
     const bool dimmed = sleeping_dynamic(world, contact.body_a) || sleeping_dynamic(world, contact.body_b);
@@ -70,13 +70,8 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
         renderer.draw_point(point.point, 6.0f * s, faded(palette.contact_point, opacity));
       }
       if ((flags & draw_penetration) && point.depth > 0.0f) {
-        const float half = 0.5f * std::max(point.depth * options.penetration_scale, min_bar);
-        const vec2 along = normal * half;
-        const vec2 side = tangent * bar_half_width;
-        const vec2 bar[4] = {point.point - along - side, point.point + along - side,
-                             point.point + along + side, point.point - along + side};
-        const Color color = faded(palette.penetration, opacity);
-        renderer.draw_solid_polygon(bar, 4, color, color);
+        const vec2 along = normal * (0.5f * std::max(point.depth * options.penetration_scale, min_bar));
+        renderer.draw_band(point.point - along, point.point + along, bar_width, faded(palette.penetration, opacity));
       }
       if (flags & draw_contact_normals) {
         const vec2 start = point.point - tangent * offset;

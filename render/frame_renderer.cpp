@@ -70,16 +70,32 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
 
   context_->make_current();
   primitives_->begin(camera);
-  DebugDrawOptions world_options = draw_options;  // what the renderer draws itself is off
-  world_options.flags &= ~(contact_overlay_flags | draw_body_ids);
-  world.draw(*primitives_, world_options);
+  // Each group of marks is a layer over the ones before (within a layer the renderer draws
+  // kind by kind). World::draw draws shapes and the body overlays; the renderer draws
+  // bounding boxes, contacts and body labels itself.
+  const auto draw_world = [&](std::uint32_t flags) {
+    DebugDrawOptions world_options = draw_options;
+    world_options.flags &= flags;
+    if (world_options.flags != 0) world.draw(*primitives_, world_options);
+    primitives_->next_layer();
+  };
+  draw_world(draw_shapes | draw_sleeping);
+  if (draw_options.flags & draw_aabbs) draw_bounding_boxes(*primitives_, world, palette.debug.aabb);
+  primitives_->next_layer();
+  draw_world(draw_broad_phase);
+  draw_world(draw_velocities | draw_center_of_mass);
   if (options.islands) draw_islands(*primitives_, world, scale);
+  primitives_->next_layer();
   draw_contacts(*primitives_, world, draw_options, options.contacts, scale);
+  primitives_->next_layer();
   if (draw_options.flags & draw_body_ids) draw_body_labels(*primitives_, world, draw_options, options.body_labels);
+  primitives_->next_layer();
   if (options.extra_overlays) options.extra_overlays(*primitives_, draw_options);
+  primitives_->next_layer();
   if (options.highlight) draw_highlight(*primitives_, world, *options.highlight, scale);
   const bool trails_on = options.trails != nullptr && !options.trails->empty();
   if (trails_on) options.trails->draw(*primitives_, palette.trail);
+  primitives_->next_layer();
   if (options.show_hud || options.show_legend) {
     std::vector<std::string> lines;
     if (options.show_hud) {

@@ -91,9 +91,11 @@ class FrameRenderer {
   /// "GL_RENDERER | GL_VERSION" of the context, for golden-image sidecars.
   std::string fingerprint() const;
 
-  /// Draws `world` (shapes and body overlays via `World::draw`; contacts with
-  /// `draw_contacts`; body labels with `draw_body_labels`; islands with `draw_islands`), then `extra_overlays`, the
-  /// highlight, trails, HUD and legend, into `frame`. The camera must have this renderer's size (else `RenderError`).
+  /// Draws `world` (shapes, broad-phase pairs and body overlays via `World::draw`; bounding
+  /// boxes with `draw_bounding_boxes`; islands with `draw_islands`; contacts with
+  /// `draw_contacts`; body labels with `draw_body_labels`), then `extra_overlays`, the highlight,
+  /// trails, HUD and legend, into `frame`, each group a layer over the ones before. The camera
+  /// must have this renderer's size (else `RenderError`).
   void render(const World& world, const Camera& camera, const FrameOptions& options,
               const HudInfo& hud, Frame& frame);
   /// As above, returning a new frame.

@@ -13,27 +13,31 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <limits>
+#include <vector>
 
 namespace impulse2d::render {
 
 namespace {
 
-// Half extents so large that a rectangle's coverage is 1 everywhere (polygon fills).
-constexpr float kSolidExtent = 1.0e6f;
 // Pixels around a primitive's edge that its sprite or quad covers: anti-aliased coverage
 // reaches half a pixel beyond every edge and is 0 from there on (an arrow head's mitred
 // base corners reach further; draw_arrow widens its bounds for them).
 constexpr float kMargin = 0.5f;
 // Sprites up to this many pixels across are always points. Larger ones are points only
-// while their square is at most kMaxSpriteWaste times the primitive's own rectangle;
-// otherwise (a long or diagonal line) a quad hugs the primitive. llvmpipe's cost follows
-// the 4x4 pixel blocks a primitive touches more than the primitive count. Chosen by
-// instruction counts (callgrind, LP_NUM_THREADS=0, steady state) of the 1000-body
-// all-overlay frame of bench_render: 6 and 2.5 gave 271 M a frame; 10 and 3, 275 M; 4 and
-// 2, 284 M; always points, 375 M; always quads, 302 M; one enclosing triangle instead of
-// a quad, 297 M (docs/rendering.md).
-constexpr float kSmallSprite = 6.0f;
-constexpr float kMaxSpriteWaste = 2.5f;
+// while their square is at most kMaxSpriteWaste times the primitive's own rectangle
+// (kRunSpriteWaste right after a point sprite of the same kind, so that fewer switches
+// between sprites and quads split the kind's run into more draw calls); otherwise (a long
+// or diagonal line) a quad hugs the primitive. llvmpipe's cost follows the 4x4 pixel blocks
+// a primitive touches more than the primitive count. Chosen by instruction counts
+// (callgrind, LP_NUM_THREADS=0, steady state) of the 1000-body every-overlay frame of
+// bench_render with one program per kind: 8, 4 and 5.5 gave 207 M a frame (37 M shapes
+// only; 188 draw calls instead of 822); 8, 4 and no run limit, 210 M (41 M); 8, 4 and 8,
+// 214 M (37 M); 6 and 2.5, 214 M; 12 and 8, 214 M. With one program for every kind, 6
+// and 2.5 had been best (docs/rendering.md).
+constexpr float kSmallSprite = 8.0f;
+constexpr float kMaxSpriteWaste = 4.0f;
+constexpr float kRunSpriteWaste = 5.5f;
 
 void set_color(std::uint8_t (&rgba)[4], Color color) {
   for (int i = 0; i < 4; ++i) {
@@ -53,19 +57,21 @@ std::string hex(unsigned value) {
 
 PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
     : style_(style), camera_(Camera::centered(vec2(0.0f, 0.0f), 1.0f, 1, 1)) {
-  program_ = std::make_unique<ShaderProgram>("primitives", primitive_vertex_shader,
-                                             primitive_fragment_shader);
-  viewport_location_ = program_->uniform_location("u_viewport");
+  for (int kind = 0; kind < primitive_kind_count; ++kind) {
+    const std::string fragment_shader = primitive_fragment_shader(static_cast<PrimitiveKind>(kind));
+    programs_[kind] = std::make_unique<ShaderProgram>(
+        "primitives " + std::to_string(kind), primitive_vertex_shader(static_cast<PrimitiveKind>(kind)),
+        fragment_shader.c_str());
+    viewport_locations_[kind] = programs_[kind]->uniform_location("u_viewport");
+  }
   GLfloat point_sizes[2] = {1.0f, 1.0f};
   glGetFloatv(GL_POINT_SIZE_RANGE, point_sizes);
   max_point_size_ = std::min(point_sizes[1], style_.max_point_sprite);
 
-  glGenVertexArrays(1, &vertex_array_);
-  glGenBuffers(1, &vertex_buffer_);
-  glBindVertexArray(vertex_array_);
-  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-  const GLsizei stride = sizeof(Vertex);
-  const auto attribute = [stride](GLuint location, GLint size, GLenum type, std::size_t offset) {
+  glGenVertexArrays(2, vertex_arrays_);
+  glGenBuffers(2, vertex_buffers_);
+  glGenBuffers(1, &index_buffer_);
+  const auto attribute = [](GLuint location, GLint size, GLenum type, GLsizei stride, std::size_t offset) {
     glEnableVertexAttribArray(location);
     const void* pointer = reinterpret_cast<const void*>(offset);
     if (type == GL_UNSIGNED_INT) {
@@ -74,20 +80,37 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
       glVertexAttribPointer(location, size, type, type == GL_UNSIGNED_BYTE ? GL_TRUE : GL_FALSE, stride, pointer);
     }
   };
-  attribute(0, 3, GL_FLOAT, offsetof(Vertex, sprite));
-  attribute(1, 4, GL_FLOAT, offsetof(Vertex, frame));
-  attribute(2, 3, GL_FLOAT, offsetof(Vertex, box));
-  attribute(3, 4, GL_FLOAT, offsetof(Vertex, head));
-  attribute(4, 4, GL_FLOAT, offsetof(Vertex, disc));
-  attribute(5, 4, GL_UNSIGNED_BYTE, offsetof(Vertex, fill));
-  attribute(6, 4, GL_UNSIGNED_BYTE, offsetof(Vertex, line));
-  attribute(7, 2, GL_UNSIGNED_INT, offsetof(Vertex, glyph));
+  glBindVertexArray(vertex_arrays_[0]);
+  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[0]);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
+  const GLsizei polygon_stride = sizeof(PolygonVertex);
+  attribute(0, 3, GL_FLOAT, polygon_stride, offsetof(PolygonVertex, sprite));
+  attribute(1, 3, GL_FLOAT, polygon_stride, offsetof(PolygonVertex, origin));
+  attribute(2, 4, GL_UNSIGNED_BYTE, polygon_stride, offsetof(PolygonVertex, fill));
+  attribute(3, 4, GL_UNSIGNED_BYTE, polygon_stride, offsetof(PolygonVertex, line));
+  for (int edge = 0; edge < polygon_primitive_edges; ++edge) {
+    attribute(static_cast<GLuint>(4 + edge), 3, GL_FLOAT, polygon_stride,
+              offsetof(PolygonVertex, edges) + sizeof(PolygonVertex::edges[0]) * static_cast<std::size_t>(edge));
+  }
+  glBindVertexArray(vertex_arrays_[1]);
+  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[1]);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
+  const GLsizei stride = sizeof(Vertex);
+  attribute(0, 3, GL_FLOAT, stride, offsetof(Vertex, sprite));
+  attribute(1, 4, GL_FLOAT, stride, offsetof(Vertex, frame));
+  attribute(2, 4, GL_FLOAT, stride, offsetof(Vertex, box));
+  attribute(3, 4, GL_FLOAT, stride, offsetof(Vertex, head));
+  attribute(4, 3, GL_FLOAT, stride, offsetof(Vertex, disc));
+  attribute(5, 4, GL_UNSIGNED_BYTE, stride, offsetof(Vertex, fill));
+  attribute(6, 4, GL_UNSIGNED_BYTE, stride, offsetof(Vertex, line));
+  attribute(7, 2, GL_UNSIGNED_INT, stride, offsetof(Vertex, glyph));
   glBindVertexArray(0);
 }
 
 PrimitiveRenderer::~PrimitiveRenderer() {
-  glDeleteBuffers(1, &vertex_buffer_);
-  glDeleteVertexArrays(1, &vertex_array_);
+  glDeleteBuffers(1, &index_buffer_);
+  glDeleteBuffers(2, vertex_buffers_);
+  glDeleteVertexArrays(2, vertex_arrays_);
 }
 
 void PrimitiveRenderer::begin(const Camera& camera) {
@@ -100,42 +123,110 @@ void PrimitiveRenderer::begin(const Camera& camera) {
   world_to_window_[1] = (clip[3][0] + 1.0f) * half_width;
   world_to_window_[2] = clip[1][1] * half_height;
   world_to_window_[3] = (clip[3][1] + 1.0f) * half_height;
-  vertices_.clear();
+  polygons_.vertices.clear();
+  polygons_.open_runs.clear();
+  for (Batch<Vertex>& kind_batch : batches_) {
+    kind_batch.vertices.clear();
+    kind_batch.open_runs.clear();
+  }
   runs_.clear();
   primitive_count_ = 0;
+}
+
+void PrimitiveRenderer::next_layer() {
+  runs_.insert(runs_.end(), polygons_.open_runs.begin(), polygons_.open_runs.end());
+  polygons_.open_runs.clear();
+  for (Batch<Vertex>& kind_batch : batches_) {
+    runs_.insert(runs_.end(), kind_batch.open_runs.begin(), kind_batch.open_runs.end());
+    kind_batch.open_runs.clear();
+  }
 }
 
 vec2 PrimitiveRenderer::to_window(vec2 world) const {
   return vec2(world.x * world_to_window_[0] + world_to_window_[1], world.y * world_to_window_[2] + world_to_window_[3]);
 }
 
+namespace {
+
+// Makes `buffer` (bound to GL_ARRAY_BUFFER) hold at least `count` vertices of `size` bytes.
+void reserve_vertices(std::size_t count, std::size_t size, std::size_t& capacity) {
+  if (count <= capacity) return;
+  // Buffers grow geometrically and are kept for later frames: reallocating them every frame
+  // costs more in page faults than the upload itself.
+  capacity = std::max(count, 2 * capacity);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity * size), nullptr, GL_STREAM_DRAW);
+}
+
+template <typename V>
+void upload(const std::vector<V>& vertices, std::size_t first) {
+  if (vertices.empty()) return;
+  glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first * sizeof(V)),
+                  static_cast<GLsizeiptr>(vertices.size() * sizeof(V)), vertices.data());
+}
+
+}  // namespace
+
 void PrimitiveRenderer::finish(Color background) {
+  next_layer();
   glViewport(0, 0, camera_.width(), camera_.height());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  if (!vertices_.empty()) {
-    glBindVertexArray(vertex_array_);
-    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    if (vertices_.size() > capacity_vertices_) {
-      // Buffers grow geometrically and are kept for later frames: reallocating them every
-      // frame costs more in page faults than the upload itself.
-      capacity_vertices_ = std::max(vertices_.size(), 2 * capacity_vertices_);
-      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity_vertices_ * sizeof(Vertex)), nullptr,
-                   GL_STREAM_DRAW);
+  if (!runs_.empty()) {
+    // The polygons' vertices go to their own buffer; each other kind's to its own stretch
+    // of the second.
+    std::size_t first_of_kind[primitive_kind_count] = {};
+    std::size_t shape_vertices = 0;
+    for (int kind = 1; kind < primitive_kind_count; ++kind) {
+      first_of_kind[kind] = shape_vertices;
+      shape_vertices += batches_[kind - 1].vertices.size();
+    }
+    std::size_t most_quads = 0;
+    for (const Run& run : runs_) {
+      if (!run.points) most_quads = std::max(most_quads, run.vertices / 4);
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[0]);
+    reserve_vertices(polygons_.vertices.size(), sizeof(PolygonVertex), capacity_vertices_[0]);
+    upload(polygons_.vertices, 0);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[1]);
+    reserve_vertices(shape_vertices, sizeof(Vertex), capacity_vertices_[1]);
+    for (int kind = 1; kind < primitive_kind_count; ++kind) upload(batches_[kind - 1].vertices, first_of_kind[kind]);
+    if (most_quads > capacity_quads_) {
+      // Two triangles (0, 1, 2) and (0, 2, 3) per quad; a run starts at its base vertex.
+      capacity_quads_ = std::max(most_quads, 2 * capacity_quads_);
+      std::vector<GLuint> indices(6 * capacity_quads_);
+      for (std::size_t quad = 0; quad < capacity_quads_; ++quad) {
+        const auto corner = static_cast<GLuint>(4 * quad);
+        const GLuint pattern[6] = {corner, corner + 1, corner + 2, corner, corner + 2, corner + 3};
+        std::copy(pattern, pattern + 6, indices.begin() + static_cast<std::ptrdiff_t>(6 * quad));
+      }
+      glBindVertexArray(vertex_arrays_[0]);
+      glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
+                   indices.data(), GL_STATIC_DRAW);
     }
     glEnable(GL_BLEND);
     // Premultiplied "over" (the fragment stage multiplies coverage and alpha into the
     // colour); alpha stays at the cleared 1.0, so frames are opaque.
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_PROGRAM_POINT_SIZE);
-    program_->use();
-    glUniform2f(viewport_location_, static_cast<float>(camera_.width()), static_cast<float>(camera_.height()));
-    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vertices_.size() * sizeof(Vertex)), vertices_.data());
+    int current_kind = -1;
     for (const Run& run : runs_) {
-      glDrawArrays(run.points ? GL_POINTS : GL_TRIANGLES, static_cast<GLint>(run.first_vertex),
-                   static_cast<GLsizei>(run.vertices));
+      const int kind = static_cast<int>(run.kind);
+      if (kind != current_kind) {
+        programs_[kind]->use();
+        glUniform2f(viewport_locations_[kind], static_cast<float>(camera_.width()),
+                    static_cast<float>(camera_.height()));
+        glBindVertexArray(vertex_arrays_[run.kind == PrimitiveKind::polygon ? 0 : 1]);
+        current_kind = kind;
+      }
+      const auto first = static_cast<GLint>(first_of_kind[kind] + run.first_vertex);
+      if (run.points) {
+        glDrawArrays(GL_POINTS, first, static_cast<GLsizei>(run.vertices));
+      } else {
+        glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(run.vertices / 4 * 6), GL_UNSIGNED_INT, nullptr,
+                                 first);
+      }
     }
     glBindVertexArray(0);
   }
@@ -146,21 +237,36 @@ void PrimitiveRenderer::finish(Color background) {
   }
 }
 
-void PrimitiveRenderer::push_vertex(const Vertex& shape, vec2 position, float point_size, bool point) {
-  Vertex vertex = shape;
+template <typename V>
+void PrimitiveRenderer::push_vertex(Batch<V>& kind_batch, PrimitiveKind kind, const V& shape, vec2 position,
+                                    float point_size, bool point) {
+  if (kind_batch.open_runs.empty() || kind_batch.open_runs.back().points != point) {
+    kind_batch.open_runs.push_back(Run{kind, point, kind_batch.vertices.size(), 0});
+  }
+  ++kind_batch.open_runs.back().vertices;
+  V& vertex = kind_batch.vertices.emplace_back(shape);
   vertex.sprite[0] = position.x;
   vertex.sprite[1] = position.y;
   vertex.sprite[2] = point_size;
-  if (runs_.empty() || runs_.back().points != point) runs_.push_back(Run{point, vertices_.size(), 0});
-  ++runs_.back().vertices;
-  vertices_.push_back(vertex);
 }
 
-void PrimitiveRenderer::push_triangle(const Vertex& shape, vec2 a, vec2 b, vec2 c) {
-  for (const vec2 corner : {a, b, c}) push_vertex(shape, corner, 1.0f, false);
+void PrimitiveRenderer::push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]) {
+  for (const vec2 corner : corners) push_vertex(batch(kind), kind, shape, corner, 1.0f, false);
 }
 
-void PrimitiveRenderer::push_shape(const Vertex& shape, vec2 lower, vec2 upper) {
+bool PrimitiveRenderer::fits_point_sprite(vec2 lower, vec2 upper, float area, bool after_point) const {
+  const float side = std::max(upper.x - lower.x, upper.y - lower.y);
+  const vec2 center = 0.5f * (lower + upper);
+  // GL drops a whole point whose centre lies outside the viewport, so those are quads.
+  const bool centre_visible = center.x >= 0.0f && center.y >= 0.0f && center.x <= static_cast<float>(camera_.width()) &&
+                              center.y <= static_cast<float>(camera_.height());
+  // After a point sprite of the same kind a looser limit keeps the run going: every switch
+  // between sprites and quads is another draw call.
+  const float waste = after_point ? kRunSpriteWaste : kMaxSpriteWaste;
+  return centre_visible && side <= max_point_size_ && (side <= kSmallSprite || side * side <= waste * area);
+}
+
+void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper) {
   // The rectangle [lower, upper] of the primitive's frame, grown by the margin, in window pixels.
   const vec2 origin(shape.frame[0], shape.frame[1]);
   const vec2 axis(shape.frame[2], shape.frame[3]);
@@ -172,32 +278,39 @@ void PrimitiveRenderer::push_shape(const Vertex& shape, vec2 lower, vec2 upper) 
   vec2 box_lower = corners[0];
   vec2 box_upper = corners[0];
   for (const vec2 corner : corners) {
-    box_lower = vec2(std::min(box_lower.x, corner.x), std::min(box_lower.y, corner.y));
-    box_upper = vec2(std::max(box_upper.x, corner.x), std::max(box_upper.y, corner.y));
+    box_lower = glm::min(box_lower, corner);
+    box_upper = glm::max(box_upper, corner);
   }
-  const float side = std::max(box_upper.x - box_lower.x, box_upper.y - box_lower.y);
-  const float area = (high.x - low.x) * (high.y - low.y);
-  const vec2 center = 0.5f * (box_lower + box_upper);
-  // GL drops a whole point whose centre lies outside the viewport, so those are quads.
-  const bool centre_visible = center.x >= 0.0f && center.y >= 0.0f && center.x <= static_cast<float>(camera_.width()) &&
-                              center.y <= static_cast<float>(camera_.height());
   ++primitive_count_;
-  if (centre_visible && side <= max_point_size_ &&
-      (side <= kSmallSprite || side * side <= kMaxSpriteWaste * area)) {
-    push_vertex(shape, center, side, true);
+  const std::vector<Run>& runs = batch(kind).open_runs;
+  if (fits_point_sprite(box_lower, box_upper, (high.x - low.x) * (high.y - low.y), !runs.empty() && runs.back().points)) {
+    push_vertex(batch(kind), kind, shape, 0.5f * (box_lower + box_upper),
+                std::max(box_upper.x - box_lower.x, box_upper.y - box_lower.y), true);
   } else {
-    push_triangle(shape, corners[0], corners[1], corners[2]);
-    push_triangle(shape, corners[0], corners[2], corners[3]);
+    push_quad(kind, shape, corners);
   }
 }
 
-void PrimitiveRenderer::push_segment(vec2 from, vec2 to, float extension_pixels, Color color) {
+void PrimitiveRenderer::push_filled_triangles(const vec2* window_vertices, int count, Color fill) {
+  // Fan quads (first, i, i+1, i+2), the last one a triangle when the count runs out.
+  Vertex solid;
+  set_color(solid.fill, fill);
+  const vec2 first = window_vertices[0];
+  for (int i = 1; i + 1 < count; i += 2) {
+    const vec2 d = i + 2 < count ? window_vertices[i + 2] : window_vertices[i + 1];  // else an empty triangle
+    ++primitive_count_;
+    push_quad(PrimitiveKind::solid, solid, {first, window_vertices[i], window_vertices[i + 1], d});
+  }
+}
+
+void PrimitiveRenderer::push_segment(vec2 from, vec2 to, float extension_pixels, float width_pixels,
+                                     Color color) {
   const vec2 a = to_window(from);
   const vec2 b = to_window(to);
   const float length = std::sqrt(length_squared(b - a));
   const vec2 direction = length > 1e-6f ? (b - a) / length : vec2(1.0f, 0.0f);
   const vec2 middle = 0.5f * (a + b);
-  const vec2 half(0.5f * length + extension_pixels, 0.5f * style_.line_width);
+  const vec2 half(0.5f * length + extension_pixels, 0.5f * width_pixels);
   Vertex shape;
   shape.frame[0] = middle.x;
   shape.frame[1] = middle.y;
@@ -206,7 +319,7 @@ void PrimitiveRenderer::push_segment(vec2 from, vec2 to, float extension_pixels,
   shape.box[0] = half.x;
   shape.box[1] = half.y;
   set_color(shape.fill, color);
-  push_shape(shape, -half, half);
+  push_shape(PrimitiveKind::box, shape, -half, half);
 }
 
 void PrimitiveRenderer::push_disc(vec2 center, float radius_pixels, Color fill, float ring_radius_pixels,
@@ -219,17 +332,17 @@ void PrimitiveRenderer::push_disc(vec2 center, float radius_pixels, Color fill, 
   shape.frame[0] = c.x;
   shape.frame[1] = c.y;
   if (has_fill) {
-    shape.disc[1] = radius_pixels;
+    shape.disc[0] = radius_pixels;
     set_color(shape.fill, fill);
   }
   if (has_ring) {
     // A ring one line wide, centred on the radius `ring_radius_pixels`.
-    shape.disc[2] = ring_radius_pixels + 0.5f * style_.line_width;
-    shape.disc[3] = ring_radius_pixels - 0.5f * style_.line_width;
+    shape.disc[1] = ring_radius_pixels + 0.5f * style_.line_width;
+    shape.disc[2] = ring_radius_pixels - 0.5f * style_.line_width;
     set_color(shape.line, ring);
   }
-  const float reach = std::max(radius_pixels, shape.disc[2]);
-  push_shape(shape, vec2(-reach), vec2(reach));
+  const float reach = std::max(radius_pixels, shape.disc[1]);
+  push_shape(PrimitiveKind::disc, shape, vec2(-reach), vec2(reach));
 }
 
 void PrimitiveRenderer::push_rect(vec2 lower_left, vec2 upper_right, Color color) {
@@ -241,7 +354,7 @@ void PrimitiveRenderer::push_rect(vec2 lower_left, vec2 upper_right, Color color
   shape.box[0] = half.x;
   shape.box[1] = half.y;
   set_color(shape.fill, color);
-  push_shape(shape, -half, half);
+  push_shape(PrimitiveKind::box, shape, -half, half);
 }
 
 void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text, Color color, float scale) {
@@ -270,7 +383,7 @@ void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text,
                            half.y - static_cast<float>(glyph.ink_bottom) * scale);
       const vec2 ink_upper(static_cast<float>(glyph.ink_right) * scale - half.x,
                            half.y - static_cast<float>(glyph.ink_top) * scale);
-      push_shape(shape, ink_lower, ink_upper);
+      push_shape(PrimitiveKind::glyph, shape, ink_lower, ink_upper);
     }
     pen.x += static_cast<float>(glyph.advance) * scale;
   }
@@ -278,37 +391,91 @@ void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text,
 
 void PrimitiveRenderer::draw_solid_polygon(const vec2* vertices, int count, Color fill, Color outline) {
   if (count < 3) return;
-  // The fill is the polygon's own triangles (coverage 1); the outline covers its edges.
-  Vertex solid;
-  const vec2 first = to_window(vertices[0]);
-  solid.frame[0] = first.x;
-  solid.frame[1] = first.y;
-  solid.box[0] = kSolidExtent;
-  solid.box[1] = kSolidExtent;
-  set_color(solid.fill, fill);
-  for (int i = 1; i + 1 < count; i += 2) {
-    // Fan quads (first, i, i+1, i+2), the last one a triangle when the count runs out.
-    const vec2 b = to_window(vertices[i]);
-    const vec2 c = to_window(vertices[i + 1]);
-    const vec2 d = i + 2 < count ? to_window(vertices[i + 2]) : c;
-    ++primitive_count_;
-    push_triangle(solid, first, b, c);
-    if (i + 2 < count) push_triangle(solid, first, c, d);
+  if (count > polygon_primitive_edges) {
+    // The fill as the polygon's own triangles (coverage 1); the outline over its edges, with
+    // square ends half a line wide so neighbouring edges meet without a notch at corners.
+    std::vector<vec2> window_vertices(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) window_vertices[static_cast<std::size_t>(i)] = to_window(vertices[i]);
+    push_filled_triangles(window_vertices.data(), count, fill);
+    for (int i = 0; i < count; ++i) {
+      push_segment(vertices[i], vertices[(i + 1) % count], 0.5f * style_.line_width, style_.line_width, outline);
+    }
+    return;
   }
-  // Square ends half a line wide, so neighbouring edges meet without a notch at corners.
+  // One primitive: the pixel's distance to the polygon is the largest of its edges'.
+  vec2 corners[polygon_primitive_edges];
+  float twice_area = 0.0f;
+  for (int i = 0; i < count; ++i) corners[i] = to_window(vertices[i]);
+  for (int i = 0; i < count; ++i) twice_area += cross(corners[i], corners[(i + 1) % count]);
+  const float outward = twice_area < 0.0f ? -1.0f : 1.0f;  // right of each edge when counter-clockwise
+  const vec2 origin = corners[0];
+  PolygonVertex shape;
+  shape.origin[0] = origin.x;
+  shape.origin[1] = origin.y;
+  shape.origin[2] = 0.5f * style_.line_width;
+  vec2 normals[polygon_primitive_edges];
   for (int i = 0; i < count; ++i) {
-    push_segment(vertices[i], vertices[(i + 1) % count], 0.5f * style_.line_width, outline);
+    const vec2 edge = corners[(i + 1) % count] - corners[i];
+    const float length = std::sqrt(length_squared(edge));
+    normals[i] = length > 1e-6f ? outward * right_perpendicular(edge) / length : vec2(0.0f);
+    shape.edges[i][0] = normals[i].x;
+    shape.edges[i][1] = normals[i].y;
+    shape.edges[i][2] = length > 1e-6f ? dot(normals[i], corners[i] - origin) : 1.0e6f;
+  }
+  for (int i = count; i < polygon_primitive_edges; ++i) shape.edges[i][2] = 1.0e6f;
+  set_color(shape.fill, fill);
+  set_color(shape.line, outline);
+  // Bounds: each corner's mitre point, where the outline's anti-aliased edge ends on both its
+  // edges (corners sharper than about 30 degrees are cut short).
+  const float reach = 0.5f * style_.line_width + kMargin;
+  vec2 lower(std::numeric_limits<float>::max());
+  vec2 upper(std::numeric_limits<float>::lowest());
+  for (int i = 0; i < count; ++i) {
+    const vec2 before = normals[(i + count - 1) % count];
+    const vec2 after = normals[i];
+    const vec2 far = corners[i] + reach * (before + after) / std::max(1.0f + dot(before, after), 0.125f);
+    lower = glm::min(lower, far);
+    upper = glm::max(upper, far);
+  }
+  ++primitive_count_;
+  const bool after_point = !polygons_.open_runs.empty() && polygons_.open_runs.back().points;
+  if (fits_point_sprite(lower, upper, std::abs(0.5f * twice_area), after_point)) {
+    push_vertex(polygons_, PrimitiveKind::polygon, shape, 0.5f * (lower + upper),
+                std::max(upper.x - lower.x, upper.y - lower.y), true);
+  } else {
+    const vec2 quad[4] = {lower, vec2(upper.x, lower.y), upper, vec2(lower.x, upper.y)};
+    for (const vec2 corner : quad) push_vertex(polygons_, PrimitiveKind::polygon, shape, corner, 1.0f, false);
   }
 }
 
 void PrimitiveRenderer::draw_solid_circle(vec2 center, float radius, vec2 axis, Color fill, Color outline) {
   const float radius_pixels = radius * camera_.pixels_per_metre();
   push_disc(center, radius_pixels, fill, radius_pixels, outline);
-  push_segment(center, center + axis * radius, 0.0f, outline);
+  push_segment(center, center + axis * radius, 0.0f, style_.line_width, outline);
 }
 
 void PrimitiveRenderer::draw_segment(vec2 from, vec2 to, Color color) {
-  push_segment(from, to, 0.5f * style_.line_width, color);
+  push_segment(from, to, 0.5f * style_.line_width, style_.line_width, color);
+}
+
+void PrimitiveRenderer::draw_band(vec2 from, vec2 to, float width_pixels, Color color) {
+  push_segment(from, to, 0.0f, width_pixels, color);
+}
+
+void PrimitiveRenderer::draw_box_outline(vec2 lower, vec2 upper, Color color) {
+  const vec2 a = to_window(lower);
+  const vec2 b = to_window(upper);
+  // Half extents reach half a line beyond the edges; the rectangle one line further in is cut out.
+  const vec2 half = 0.5f * glm::abs(b - a) + vec2(0.5f * style_.line_width);
+  const vec2 middle = 0.5f * (a + b);
+  Vertex shape;
+  shape.frame[0] = middle.x;
+  shape.frame[1] = middle.y;
+  shape.box[0] = half.x;
+  shape.box[1] = half.y;
+  shape.box[3] = style_.line_width;
+  set_color(shape.fill, color);
+  push_shape(PrimitiveKind::box, shape, -half, half);
 }
 
 void PrimitiveRenderer::draw_arrow(vec2 from, vec2 to, Color color) {
@@ -345,7 +512,7 @@ void PrimitiveRenderer::draw_arrow(vec2 from, vec2 to, Color color) {
   // 0.5 (1 + normal.x) / normal.y pixels out from the head's side, more than the margin.
   const float head_reach = head_half_width + 0.5f * (1.0f + shape.head[2]) / shape.head[3] - kMargin;
   const float half_height = std::max(half_line, head_reach);
-  push_shape(shape, vec2(-shaft_half, -half_height), vec2(tip_x, half_height));
+  push_shape(PrimitiveKind::arrow, shape, vec2(-shaft_half, -half_height), vec2(tip_x, half_height));
 }
 
 void PrimitiveRenderer::draw_point(vec2 position, float size_pixels, Color color) {

@@ -1,11 +1,13 @@
 #pragma once
 /// @file primitive_renderer.h
 /// The batched GL implementation of core's `DebugDraw`: every primitive of a frame becomes
-/// one point sprite (a quad when large) of one vertex buffer, drawn by one program in the
-/// order emitted.
+/// one point sprite (a quad when large) of one vertex buffer; primitives are drawn layer by
+/// layer and, within a layer, kind by kind, each kind by its own program in one or a few
+/// draw calls.
 
 #include "core/debug_draw.h"
 #include "render/camera.h"
+#include "render/primitive_shaders.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -28,12 +30,17 @@ struct PrimitiveStyle {
   float max_point_sprite = 255.0f;
 };
 
-/// Draws world primitives (segments, arrows, discs with their rim, characters: each one
-/// primitive with analytic anti-aliased coverage; polygon fills as triangles) and
-/// screen-space rectangles and text, batched between `begin` and `finish`. llvmpipe's cost
-/// grows with the primitives it rasterises and the 4x4 pixel blocks each one touches, so a
-/// small primitive is a single point sprite rather than two triangles. Needs the GL context
-/// it was created under to be current for construction, `finish` and destruction.
+/// Draws world primitives (segments, bands, rectangle outlines, arrows, discs with their rim,
+/// convex polygons of up to `polygon_primitive_edges` edges with their outline, characters:
+/// each one primitive with analytic anti-aliased coverage; fills of larger polygons as
+/// triangles) and screen-space rectangles and text, batched between `begin` and `finish`.
+/// llvmpipe's cost grows with the primitives it rasterises, the 4x4 pixel blocks each one
+/// touches and the work of the fragment program on each block, so a small primitive is a
+/// single point sprite rather than two triangles, and each kind of primitive has a program
+/// of its own. Draw order: layers (`next_layer`) in the order begun; within a layer, the
+/// kinds in `PrimitiveKind` order (polygons, fill triangles, discs, boxes, arrows, glyphs);
+/// within a kind, the order emitted. Needs the GL context it was created under to be current
+/// for construction, `finish` and destruction.
 class PrimitiveRenderer final : public DebugDraw {
  public:
   /// Compiles the program and creates the buffers. Throws `RenderError` on shader errors.
@@ -44,6 +51,8 @@ class PrimitiveRenderer final : public DebugDraw {
 
   /// Starts a frame seen through `camera`; drops anything batched before.
   void begin(const Camera& camera);
+  /// Starts a new layer: primitives emitted from now on are drawn over those emitted before.
+  void next_layer();
   /// Clears the framebuffer to `background` (drawn opaque) and draws the batch, in order.
   /// Throws `RenderError` when GL reports an error.
   void finish(Color background);
@@ -66,6 +75,12 @@ class PrimitiveRenderer final : public DebugDraw {
   void draw_point(vec2 position, float size_pixels, Color color) override;
   void draw_text(vec2 position, const std::string& text, Color color) override;
 
+  /// A straight band `width_pixels` wide from `from` to `to` (metres), ending square at both
+  /// (a penetration bar): one primitive.
+  void draw_band(vec2 from, vec2 to, float width_pixels, Color color);
+  /// The outline of the axis-aligned rectangle [lower, upper] (metres), one line wide and
+  /// centred on its edges: one primitive.
+  void draw_box_outline(vec2 lower, vec2 upper, Color color);
   /// A filled rectangle in screen pixels: top-left corner and size (y down).
   void draw_screen_rect(vec2 top_left, vec2 size, Color color);
   /// Text in screen pixels with its top-left corner at `top_left` (y down), magnified by
@@ -73,29 +88,52 @@ class PrimitiveRenderer final : public DebugDraw {
   void draw_screen_text(vec2 top_left, const std::string& text, Color color, int scale);
 
  private:
-  // One vertex, as the shaders read it (see primitive_shaders.h). The defaults switch
-  // every shape off.
+  // One vertex of the disc, box, arrow, glyph and polygon-fill-triangle kinds, as their
+  // shaders read it (see primitive_shaders.h). The defaults switch every shape off.
   struct Vertex {
     float sprite[3] = {0.0f, 0.0f, 1.0f};
     float frame[4] = {0.0f, 0.0f, 1.0f, 0.0f};
-    float box[3] = {-1.0e6f, -1.0e6f, 0.0f};
+    float box[4] = {-1.0e6f, -1.0e6f, 0.0f, 0.0f};
     float head[4] = {1.0e6f, 0.0f, 0.0f, 0.0f};
-    float disc[4] = {0.0f, -1.0e6f, -1.0e6f, -1.0e6f};
+    float disc[3] = {-1.0e6f, -1.0e6f, -1.0e6f};
     std::uint8_t fill[4] = {0, 0, 0, 0};
     std::uint8_t line[4] = {0, 0, 0, 0};
     std::uint32_t glyph[2] = {0, 0};
   };
-  // Consecutive vertices drawn by one call, as points or as triangles.
+  // One vertex of the polygon kind. Unused edges never bound the polygon.
+  struct PolygonVertex {
+    float sprite[3] = {0.0f, 0.0f, 1.0f};
+    float origin[3] = {0.0f, 0.0f, 0.0f};  // window pixels; half the outline's width
+    float edges[polygon_primitive_edges][3] = {};  // outward unit normal, offset from the origin
+    std::uint8_t fill[4] = {0, 0, 0, 0};
+    std::uint8_t line[4] = {0, 0, 0, 0};
+  };
+  // Consecutive vertices of one kind's buffer drawn by one call, as points or as quads
+  // (four vertices each).
   struct Run {
+    PrimitiveKind kind = PrimitiveKind::polygon;
     bool points = true;
-    std::size_t first_vertex = 0;
+    std::size_t first_vertex = 0;  // in the kind's vertices
     std::size_t vertices = 0;
   };
+  // The primitives of one kind batched in this frame, and the runs of the open layer.
+  template <typename V>
+  struct Batch {
+    std::vector<V> vertices;
+    std::vector<Run> open_runs;
+  };
+  // What covers a primitive of `area` square pixels whose window-space bounds are
+  // [lower, upper]: one point sprite, or (when false) a quad. `after_point`: the open run of
+  // its kind is of point sprites.
+  bool fits_point_sprite(vec2 lower, vec2 upper, float area, bool after_point) const;
   vec2 to_window(vec2 world) const;
-  void push_shape(const Vertex& shape, vec2 lower, vec2 upper);
-  void push_vertex(const Vertex& shape, vec2 position, float point_size, bool point);
-  void push_triangle(const Vertex& shape, vec2 a, vec2 b, vec2 c);
-  void push_segment(vec2 from, vec2 to, float extension_pixels, Color color);
+  Batch<Vertex>& batch(PrimitiveKind kind) { return batches_[static_cast<int>(kind) - 1]; }
+  template <typename V>
+  void push_vertex(Batch<V>& batch, PrimitiveKind kind, const V& shape, vec2 position, float point_size, bool point);
+  void push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]);
+  void push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper);
+  void push_filled_triangles(const vec2* window_vertices, int count, Color fill);
+  void push_segment(vec2 from, vec2 to, float extension_pixels, float width_pixels, Color color);
   void push_disc(vec2 center, float radius_pixels, Color fill, float ring_radius_pixels, Color ring);
   void push_rect(vec2 lower_left, vec2 upper_right, Color color);
   void push_text(vec2 window_top_left, const std::string& text, Color color, float scale);
@@ -104,14 +142,17 @@ class PrimitiveRenderer final : public DebugDraw {
   Camera camera_;
   float world_to_window_[4] = {1.0f, 0.0f, 1.0f, 0.0f};  // x scale, x offset, y scale, y offset
   float max_point_size_ = 1.0f;                           // the driver's largest point sprite
-  std::unique_ptr<ShaderProgram> program_;
-  int viewport_location_ = -1;
-  unsigned int vertex_array_ = 0;
-  unsigned int vertex_buffer_ = 0;
-  std::size_t capacity_vertices_ = 0;  // vertices the vertex buffer holds
+  std::unique_ptr<ShaderProgram> programs_[primitive_kind_count];
+  int viewport_locations_[primitive_kind_count] = {};
+  unsigned int vertex_arrays_[2] = {};   // polygon vertices, other vertices
+  unsigned int vertex_buffers_[2] = {};  // the same
+  unsigned int index_buffer_ = 0;
+  std::size_t capacity_vertices_[2] = {};  // vertices each vertex buffer holds
+  std::size_t capacity_quads_ = 0;         // quads the index buffer indexes
   std::size_t primitive_count_ = 0;
-  std::vector<Vertex> vertices_;
-  std::vector<Run> runs_;
+  Batch<PolygonVertex> polygons_;
+  Batch<Vertex> batches_[primitive_kind_count - 1];  // the other kinds, in order
+  std::vector<Run> runs_;  // of the closed layers, in drawing order
 };
 
 }  // namespace impulse2d::render

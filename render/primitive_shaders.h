@@ -1,27 +1,51 @@
 #pragma once
 /// @file primitive_shaders.h
-/// GLSL 3.30 sources of the one program that draws every primitive of a frame. Each
-/// primitive is one point sprite (or, when large, a quad of four vertices) covering it; all
-/// its parameters are flat, and the fragment stage measures the pixel centre
-/// (`gl_FragCoord`) in the primitive's own frame, so a primitive gives the same pixels
-/// whichever way it is rasterised. Attributes (see `PrimitiveRenderer::Vertex`):
+/// GLSL 3.30 sources of the programs that draw the primitives of a frame, one program per
+/// primitive kind. Each primitive (but the fill triangles of polygons with more edges than
+/// a polygon primitive has) is one point sprite (or, when large, a quad of four
+/// vertices) covering it; all its parameters are flat, and the fragment stage measures the
+/// pixel centre (`gl_FragCoord`) in the primitive's own frame, so a primitive gives the same
+/// pixels whichever way it is rasterised. Attributes (see `PrimitiveRenderer::Vertex`):
 ///   sprite: window position of the point or quad corner, point size;
 ///   frame:  origin (window pixels) and unit x axis of the primitive's frame;
-///   box:    half extents of a rectangle centred on the origin (negative: none) and, for a
-///           glyph, font pixels per window pixel (0: not a glyph);
+///   box:    half extents (x, y) of a rectangle centred on the origin; font pixels per
+///           window pixel of a glyph (z); width of a rectangle's outline (w; 0: filled);
 ///   head:   an arrow head along +x: base x, tip x (it ends there), outward normal of its
 ///           upper side;
-///   disc:   x offset of a disc's centre, its radius, and a ring's outer and inner radii;
+///   disc:   a disc's radius and a ring's outer and inner radii, centred on the origin;
 ///   fill:   colour of the rectangle, head, disc and glyph; line: colour of the ring;
 ///   glyph:  font_glyph_columns x font_glyph_rows bitmap, low word first.
-/// The fill layer is composited under the ring layer in the shader, and the premultiplied
-/// result blended over the framebuffer once.
+/// A polygon's vertex has sprite, fill and line as above, its origin (window pixels) with half
+/// its outline's width, and up to 8 edges as outward unit normal and offset from the origin;
+/// its distance to a pixel centre is the largest of the edges' (a mitred outline).
+/// A disc's or polygon's fill is composited under its ring or outline in the shader, and the premultiplied result
+/// blended over the framebuffer once.
+
+#include <string>
 
 namespace impulse2d::render {
 
-/// Vertex stage: window pixels to clip space and point size; passes the parameters on flat.
-extern const char* const primitive_vertex_shader;
-/// Fragment stage: analytic anti-aliased coverage of the primitive, composited colour.
-extern const char* const primitive_fragment_shader;
+/// What a primitive is, and so which fragment program measures its coverage. llvmpipe
+/// runs every branch of a shader on every 4x4 pixel block, so each kind has a program
+/// that computes only its own shape.
+enum class PrimitiveKind {
+  polygon,  ///< convex polygon of up to `polygon_primitive_edges` edges with its outline
+  solid,    ///< fill triangles of larger polygons: coverage 1
+  disc,   ///< disc with an optional ring (circles, dots)
+  box,    ///< rectangle or rectangle outline in its own frame (segments, bars, panels)
+  arrow,  ///< shaft rectangle and triangular head
+  glyph,  ///< one character of the bitmap font in its cell
+};
+
+/// Number of `PrimitiveKind`s.
+constexpr int primitive_kind_count = 6;
+/// Most edges of one `PrimitiveKind::polygon` (core's `max_polygon_vertices`).
+constexpr int polygon_primitive_edges = 8;
+
+/// Vertex stage of `kind`: window pixels to clip space and point size; passes the parameters
+/// on flat.
+const char* primitive_vertex_shader(PrimitiveKind kind);
+/// Fragment stage of `kind`: analytic anti-aliased coverage of that shape, composited colour.
+std::string primitive_fragment_shader(PrimitiveKind kind);
 
 }  // namespace impulse2d::render

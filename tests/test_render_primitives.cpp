@@ -49,6 +49,10 @@ void draw_mixed_scene(PrimitiveRenderer& draw) {
   }
   const vec2 hexagon[6] = {{2, 0}, {1, 1.7f}, {-1, 1.7f}, {-2, 0}, {-1, -1.7f}, {1, -1.7f}};
   draw.draw_solid_polygon(hexagon, 6, kFill, kOutline);
+  const vec2 triangle[3] = {{5.0f, -4.0f}, {8.3f, -3.1f}, {6.2f, -0.4f}};
+  draw.draw_solid_polygon(triangle, 3, kFill, kOutline);
+  draw.draw_band({-3.0f, -4.2f}, {-1.2f, -3.1f}, 3.0f, kArrow);
+  draw.draw_box_outline({3.1f, 0.2f}, {4.4f, 1.35f}, kArrow);
   draw.draw_segment({-9.5f, -4.5f}, {9.5f, 4.5f}, kOutline);  // long and diagonal
   // Centres just outside the frame: GL would drop such a point sprite whole.
   draw.draw_solid_circle({-10.2f, 1.0f}, 0.5f, {0, 1}, kFill, kOutline);
@@ -163,12 +167,58 @@ TEST(RenderPrimitives, EveryPrimitiveKindDraws) {
   EXPECT_TRUE(differs([&](PrimitiveRenderer& d) { d.draw_solid_polygon(box, 4, kFill, kOutline); }));
   EXPECT_TRUE(differs([&](PrimitiveRenderer& d) { d.draw_solid_polygon(pentagon, 5, kFill, kOutline); }));
   EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_segment({-3, 0}, {3, 1}, kArrow); }));
+  EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_band({-3, 0}, {3, 1}, 4.0f, kArrow); }));
+  EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_box_outline({-3, -1}, {3, 1}, kArrow); }));
+  // More edges than one polygon primitive has: fill triangles and an outline segment per edge.
+  vec2 decagon[10];
+  for (int i = 0; i < 10; ++i) decagon[i] = 3.0f * vec2(std::cos(0.628f * i), std::sin(0.628f * i));
+  EXPECT_TRUE(differs([&](PrimitiveRenderer& d) { d.draw_solid_polygon(decagon, 10, kFill, kOutline); }));
   EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_point({0, 0}, 6.0f, kArrow); }));
   EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_text({0, 0}, "42", kOutline); }));
   EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_screen_rect({5, 5}, {10, 10}, kFill); }));
   EXPECT_TRUE(differs([](PrimitiveRenderer& d) { d.draw_screen_text({5, 5}, "HUD", kOutline, 1); }));
   // A zero-length arrow has no direction and draws nothing.
   EXPECT_FALSE(differs([](PrimitiveRenderer& d) { d.draw_arrow({1, 1}, {1, 1}, kArrow); }));
+}
+
+TEST(RenderPrimitives, ShapesAreFilledAndOutlinedWithTheirInsideClear) {
+  FrameRenderer renderer(200, 100);
+  Frame frame;
+  renderer.render_primitives(test_camera(), kWhite, [](PrimitiveRenderer& draw) {
+    // A square polygon whose edges run through the centres of columns 20 and 59 and rows 30
+    // and 69, and a rectangle outline of the same size through columns 120 and 159.
+    const vec2 square[4] = {{-7.95f, -1.95f}, {-4.05f, -1.95f}, {-4.05f, 1.95f}, {-7.95f, 1.95f}};
+    draw.draw_solid_polygon(square, 4, kFill, kOutline);
+    draw.draw_box_outline({2.05f, -1.95f}, {5.95f, 1.95f}, kArrow);
+  }, frame);
+  EXPECT_EQ(frame.pixel(40, 50), to_pixel(kFill));     // inside the polygon
+  EXPECT_EQ(frame.pixel(20, 50), to_pixel(kOutline));  // on its left edge
+  EXPECT_EQ(frame.pixel(40, 30), to_pixel(kOutline));  // on its top edge
+  EXPECT_EQ(frame.pixel(17, 50), to_pixel(kWhite));
+  EXPECT_EQ(frame.pixel(140, 50), to_pixel(kWhite));  // inside the outline: clear
+  EXPECT_EQ(frame.pixel(120, 50), to_pixel(kArrow));
+  EXPECT_EQ(frame.pixel(140, 69), to_pixel(kArrow));  // bottom edge
+  EXPECT_EQ(frame.pixel(123, 50), to_pixel(kWhite));
+}
+
+TEST(RenderPrimitives, LaterLayersAreDrawnOverEarlierOnes) {
+  // Within a layer the kinds go in a fixed order (polygons before boxes); a new layer goes
+  // over everything before it whatever its kinds.
+  const vec2 square[4] = {{-2, -2}, {2, -2}, {2, 2}, {-2, 2}};
+  FrameRenderer renderer(200, 100);
+  Frame one_layer;
+  renderer.render_primitives(test_camera(), kWhite, [&](PrimitiveRenderer& draw) {
+    draw.draw_screen_rect({90, 40}, {20, 20}, kArrow);
+    draw.draw_solid_polygon(square, 4, kFill, kOutline);
+  }, one_layer);
+  EXPECT_EQ(one_layer.pixel(100, 50), to_pixel(kArrow));
+  Frame two_layers;
+  renderer.render_primitives(test_camera(), kWhite, [&](PrimitiveRenderer& draw) {
+    draw.draw_screen_rect({90, 40}, {20, 20}, kArrow);
+    draw.next_layer();
+    draw.draw_solid_polygon(square, 4, kFill, kOutline);
+  }, two_layers);
+  EXPECT_EQ(two_layers.pixel(100, 50), to_pixel(kFill));
 }
 
 TEST(RenderPrimitives, SameInputTwiceIsBitIdentical) {
