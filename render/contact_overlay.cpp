@@ -57,9 +57,8 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
   const float offset = style.arrow_offset_pixels * s * metre_per_pixel;
   const float min_bar = style.min_penetration_pixels * s * metre_per_pixel;
   const float bar_width = style.penetration_bar_pixels * s;
-  for (const Contact& contact : world.contacts()) {
-    if (!contact.enabled) continue;
-    const bool dimmed = sleeping_dynamic(world, contact.body_a) || sleeping_dynamic(world, contact.body_b);
+  auto draw_contact = [&](const Contact& contact, bool dimmed) {
+    if (!contact.enabled) return;
     const float opacity = dimmed ? style.sleeping_opacity : 1.0f;
     const vec2 normal = contact.normal;
     const vec2 tangent = right_perpendicular(normal);
@@ -94,7 +93,11 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
                            faded(palette.friction_impulse, opacity), max_arrow);
       }
     }
+  };
+  for (const Contact& contact : world.contacts()) {
+    draw_contact(contact, sleeping_dynamic(world, contact.body_a) || sleeping_dynamic(world, contact.body_b));
   }
+  for (const Contact& contact : world.sleeping_contacts()) draw_contact(contact, true);
 }
 
 }  // namespace impulse2d::render

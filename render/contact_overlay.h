@@ -46,9 +46,9 @@ constexpr std::uint32_t contact_overlay_flags = draw_contact_points | draw_conta
 bool draw_clamped_arrow(PrimitiveRenderer& renderer, vec2 from, vec2 to, Color color, float max_pixels);
 
 /// Draws the contact overlays of `world` that are on in `options.flags` (with its palette and
-/// scales) at integer frame scale `scale`. The core keeps no contact between two bodies that
-/// both sleep (or a sleeping and a static one), so dimmed contacts are those of an awake body
-/// resting on a sleeping one.
+/// scales) at integer frame scale `scale`. Dimmed: the contacts the world keeps aside between
+/// sleeping bodies (or a sleeping and a static one, `World::sleeping_contacts`) and those of an
+/// awake body on a sleeping one.
 void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugDrawOptions& options,
                    const ContactOverlayStyle& style, int scale);
 

@@ -104,6 +104,7 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
       counts.body_count = world.body_count();
       counts.contact_count = static_cast<int>(world.contacts().size());
       for (const Contact& contact : world.contacts()) counts.contact_point_count += contact.point_count;
+      counts.sleeping_contact_count = static_cast<int>(world.sleeping_contacts().size());
       lines = hud_lines(hud, counts);
     }
     std::vector<LegendEntry> legend;

@@ -29,7 +29,10 @@ std::vector<std::string> hud_lines(const HudInfo& info, const HudCounts& counts)
   lines.push_back((info.scene_name.empty() ? std::string("scene") : info.scene_name) + "  frame " + frame_text);
   lines.push_back(format("t = %.3f s", counts.simulated_time) + "  bodies " + std::to_string(counts.body_count) +
                   "  contacts " + std::to_string(counts.contact_count) + " (" +
-                  std::to_string(counts.contact_point_count) + " points)");
+                  std::to_string(counts.contact_point_count) + " points)" +
+                  (counts.sleeping_contact_count > 0
+                       ? " + " + std::to_string(counts.sleeping_contact_count) + " sleeping"
+                       : std::string()));
   if (info.step_milliseconds || info.frames_per_second) {
     std::string wall_clock;
     if (info.step_milliseconds) wall_clock += format("step %.2f ms", *info.step_milliseconds);

@@ -35,6 +35,8 @@ struct HudCounts {
   int body_count = 0;           ///< living bodies
   int contact_count = 0;        ///< touching pairs
   int contact_point_count = 0;  ///< manifold points over all touching pairs
+  /// Pairs of sleeping bodies whose contacts the world keeps aside (shown only when > 0).
+  int sleeping_contact_count = 0;
 };
 
 /// One row of the legend: a colour key and what it means.

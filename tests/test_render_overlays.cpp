@@ -244,3 +244,54 @@ TEST(RenderOverlays, IslandsAndFeatureIdsDrawOnlyWhenAsked) {
   EXPECT_NE(plain.hash(), ids.hash());
   EXPECT_NE(islands.hash(), ids.hash());
 }
+
+TEST(RenderOverlays, SleepingContactsAreDrawnDimmedAndCountedInTheHud) {
+  WorldSettings settings;
+  settings.enable_sleeping = true;
+  World world(settings);
+  BodyDef ground;
+  ground.type = BodyType::Static;
+  ground.position = {0.0f, -0.5f};
+  world.create_body(ground, make_box({4.0f, 0.5f}));
+  BodyDef crate;
+  crate.position = {0.0f, 0.5f};
+  const BodyId box = world.create_body(crate, make_oriented_box({0.5f, 0.5f}));
+  for (int i = 0; i < 600 && world.body(box).awake; ++i) world.step();
+  ASSERT_FALSE(world.body(box).awake);
+  world.step();  // the asleep pair's contact is set aside at the next step
+  ASSERT_TRUE(world.contacts().empty());
+  ASSERT_EQ(world.sleeping_contacts().size(), 1u);
+
+  FrameRenderer renderer(320, 240);
+  const Camera camera = Camera::fit(world_bounds(world), 320, 240, 8.0f);
+  FrameOptions options;
+  options.show_hud = false;
+  options.show_legend = false;
+  options.draw.flags = draw_shapes;
+  const Frame shapes = renderer.render(world, camera, options, HudInfo{});
+  options.draw.flags = draw_shapes | draw_contact_points;
+  const Frame asleep = renderer.render(world, camera, options, HudInfo{});
+  const Pixel full = support::to_pixel(theme_palette(Theme::Light).debug.contact_point);
+  auto full_colour_pixels = [&full](const Frame& frame) {
+    int count = 0;
+    for (int y = 0; y < frame.height; ++y) {
+      for (int x = 0; x < frame.width; ++x) count += frame.pixel(x, y) == full ? 1 : 0;
+    }
+    return count;
+  };
+  EXPECT_NE(asleep.hash(), shapes.hash()) << "the sleeping contact was not drawn";
+  EXPECT_EQ(full_colour_pixels(asleep), 0) << "the sleeping contact was not dimmed";
+
+  world.set_awake(box, true);
+  world.step();
+  ASSERT_EQ(world.contacts().size(), 1u);
+  const Frame awake = renderer.render(world, camera, options, HudInfo{});
+  EXPECT_GT(full_colour_pixels(awake), 4) << "an awake contact is drawn at full colour";
+
+  HudCounts counts;
+  counts.contact_count = 0;
+  counts.sleeping_contact_count = 3;
+  EXPECT_NE(hud_lines(support::hud("s", 0), counts)[1].find("+ 3 sleeping"), std::string::npos);
+  counts.sleeping_contact_count = 0;
+  EXPECT_EQ(hud_lines(support::hud("s", 0), counts)[1].find("sleeping"), std::string::npos);
+}
