@@ -30,8 +30,8 @@ void ContactColouring::colour(const std::vector<Contact>& contacts, std::size_t 
       colour_of_[i] = not_solved;
       continue;
     }
-    const bool moves_a = contact.mass.inverse_mass_a > 0.0f || contact.mass.inverse_inertia_a > 0.0f;
-    const bool moves_b = contact.mass.inverse_mass_b > 0.0f || contact.mass.inverse_inertia_b > 0.0f;
+    const bool moves_a = contact_detail::moves_a(contact.mass);
+    const bool moves_b = contact_detail::moves_b(contact.mass);
     std::uint64_t& used_a = used_colours_[contact.body_a.index];
     std::uint64_t& used_b = used_colours_[contact.body_b.index];
     const std::uint64_t used = (moves_a ? used_a : 0) | (moves_b ? used_b : 0);

@@ -38,6 +38,16 @@ inline float inverse_effective_mass(const PairMass& mass, const ContactPoint& po
          arm_b * arm_b * mass.inverse_inertia_b;
 }
 
+/// True when the contact's impulses move body A (it has a finite mass or inertia there).
+inline bool moves_a(const PairMass& mass) {
+  return mass.inverse_mass_a > 0.0f || mass.inverse_inertia_a > 0.0f;
+}
+
+/// True when the contact's impulses move body B.
+inline bool moves_b(const PairMass& mass) {
+  return mass.inverse_mass_b > 0.0f || mass.inverse_inertia_b > 0.0f;
+}
+
 /// True when the contact is enabled and at least one of its bodies can move.
 inline bool is_solvable(const Contact& contact) {
   return contact.enabled &&

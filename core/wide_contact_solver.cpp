@@ -59,6 +59,16 @@ void clear_lane(ContactBlock<Lanes>& block, int lane) {
   for (BlockPoint<Lanes>& slot : block.points) clear_point(slot, lane);
 }
 
+// What the bounce stages may change in a point: its accumulated impulses and bounce plan.
+template <int Lanes>
+void load_point_state(BlockPoint<Lanes>& slot, int lane, const ContactPoint& point) {
+  slot.normal_impulse[lane] = point.normal_impulse;
+  slot.tangent_impulse[lane] = point.tangent_impulse;
+  slot.velocity_bias[lane] = point.velocity_bias;
+  slot.waiting[lane] = point.waiting ? lane_set : 0;
+  slot.bouncing[lane] = point.bouncing ? lane_set : 0;
+}
+
 // One contact into lane `lane` of a block.
 template <int Lanes>
 void pack_contact(const Contact& contact, std::uint32_t index, const SolverContext& context,
@@ -68,8 +78,8 @@ void pack_contact(const Contact& contact, std::uint32_t index, const SolverConte
   const Softness& softness = against_fixed ? context.static_softness : context.dynamic_softness;
   block.body_a[lane] = static_cast<std::int32_t>(contact.body_a.index);
   block.body_b[lane] = static_cast<std::int32_t>(contact.body_b.index);
-  block.moves_a[lane] = mass.inverse_mass_a > 0.0f || mass.inverse_inertia_a > 0.0f;
-  block.moves_b[lane] = mass.inverse_mass_b > 0.0f || mass.inverse_inertia_b > 0.0f;
+  block.moves_a[lane] = contact_detail::moves_a(mass);
+  block.moves_b[lane] = contact_detail::moves_b(mass);
   block.contact_index[lane] = static_cast<std::int32_t>(index);
   block.sliding[lane] = contact.sliding ? lane_set : 0;
   block.normal_x[lane] = contact.normal.x;
@@ -101,12 +111,8 @@ void pack_contact(const Contact& contact, std::uint32_t index, const SolverConte
     slot.stick_offset[lane] = point.stick_offset;
     slot.normal_mass[lane] = point.normal_mass;
     slot.tangent_mass[lane] = point.tangent_mass;
-    slot.normal_impulse[lane] = point.normal_impulse;
-    slot.tangent_impulse[lane] = point.tangent_impulse;
-    slot.velocity_bias[lane] = point.velocity_bias;
+    load_point_state(slot, lane, point);
     slot.present[lane] = lane_set;
-    slot.waiting[lane] = point.waiting ? lane_set : 0;
-    slot.bouncing[lane] = point.bouncing ? lane_set : 0;
     slot.friction_at_limit[lane] = 0;
   }
   for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block.points[i], lane);
@@ -202,11 +208,7 @@ void WideContactSolver::store_velocities(std::vector<Body>& bodies) const {
 
 void WideContactSolver::load_points(const std::vector<Contact>& contacts) {
   auto load = [](auto& slot, int lane, const ContactPoint& point) {
-    slot.normal_impulse[lane] = point.normal_impulse;
-    slot.tangent_impulse[lane] = point.tangent_impulse;
-    slot.velocity_bias[lane] = point.velocity_bias;
-    slot.waiting[lane] = point.waiting ? lane_set : 0;
-    slot.bouncing[lane] = point.bouncing ? lane_set : 0;
+    load_point_state(slot, lane, point);
   };
   if (lanes_ == 8) {
     for_each_point<8>(blocks_8_, contacts, load);

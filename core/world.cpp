@@ -25,6 +25,12 @@ std::string describe(BodyId id) {
   return "body {index " + std::to_string(id.index) + ", generation " + std::to_string(id.generation) + "}";
 }
 
+// Drops every contact of `contacts` that involves body `id`.
+void erase_contacts_of(std::vector<Contact>& contacts, BodyId id) {
+  auto touches = [&id](const Contact& contact) { return contact.body_a == id || contact.body_b == id; };
+  contacts.erase(std::remove_if(contacts.begin(), contacts.end(), touches), contacts.end());
+}
+
 void require_finite(float value, const char* caller, const char* name) {
   if (!std::isfinite(value)) throw Error(std::string(caller) + ": " + name + " is not finite");
 }
@@ -150,21 +156,11 @@ void World::remove_body(BodyId id) {
   free_slots_.push_back(id.index);
   --living_body_count_;
   // Forget its contacts now so nothing refers to the dead slot.
-  auto touches = [&](const Contact& contact) {
-    return contact.body_a == id || contact.body_b == id;
-  };
-  contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), touches), contacts_.end());
+  erase_contacts_of(contacts_, id);
   forget_sleeping_contacts(id);
 }
 
-void World::forget_sleeping_contacts(BodyId id) {
-  auto touches = [&](const Contact& contact) {
-    return contact.body_a == id || contact.body_b == id;
-  };
-  sleeping_contacts_.erase(
-      std::remove_if(sleeping_contacts_.begin(), sleeping_contacts_.end(), touches),
-      sleeping_contacts_.end());
-}
+void World::forget_sleeping_contacts(BodyId id) { erase_contacts_of(sleeping_contacts_, id); }
 
 bool World::is_valid(BodyId id) const {
   return !id.is_null() && id.index < bodies_.size() && alive_[id.index] &&
@@ -370,6 +366,33 @@ bool pair_less(const Contact& a, const Contact& b) {
          (a.body_a.index == b.body_a.index && a.body_b.index < b.body_b.index);
 }
 
+// Last step's contacts whose bodies no longer move would be dropped by the narrow phase (no
+// broad-phase pair has them); they are set aside instead, impulses and all, in pair order.
+// Set-aside contacts of pairs that move again go back among last step's contacts, so the
+// narrow phase carries their impulses over (warm start) as if they had never slept.
+// Moves the contacts of `from` that `leaves` selects into `into`, both lists staying in pair
+// order (a merge through `scratch`); the others stay in `from`, in order.
+template <class Leaves>
+void move_contacts(std::vector<Contact>& from, std::vector<Contact>& into,
+                   std::vector<Contact>& scratch, Leaves leaves) {
+  scratch.clear();
+  std::size_t stayed = 0;
+  std::size_t merged = 0;
+  for (std::size_t i = 0; i < from.size(); ++i) {
+    if (!leaves(from[i])) {
+      if (stayed != i) from[stayed] = from[i];
+      ++stayed;
+      continue;
+    }
+    while (merged < into.size() && pair_less(into[merged], from[i])) scratch.push_back(into[merged++]);
+    scratch.push_back(from[i]);
+  }
+  if (stayed == from.size()) return;
+  scratch.insert(scratch.end(), into.begin() + static_cast<std::ptrdiff_t>(merged), into.end());
+  std::swap(into, scratch);
+  from.erase(from.begin() + static_cast<std::ptrdiff_t>(stayed), from.end());
+}
+
 }  // namespace
 
 // Last step's contacts whose bodies no longer move would be dropped by the narrow phase (no
@@ -380,47 +403,9 @@ void World::set_aside_sleeping_contacts() {
   auto resting = [this](const Contact& contact) {
     return !is_moving(bodies_[contact.body_a.index]) && !is_moving(bodies_[contact.body_b.index]);
   };
-  merged_contacts_.clear();
-  std::size_t still_sleeping = 0;
-  std::size_t last_step = 0;
-  for (std::size_t i = 0; i < sleeping_contacts_.size(); ++i) {
-    if (resting(sleeping_contacts_[i])) {
-      if (still_sleeping != i) sleeping_contacts_[still_sleeping] = sleeping_contacts_[i];
-      ++still_sleeping;
-      continue;
-    }
-    while (last_step < contacts_.size() && pair_less(contacts_[last_step], sleeping_contacts_[i])) {
-      merged_contacts_.push_back(contacts_[last_step++]);
-    }
-    merged_contacts_.push_back(sleeping_contacts_[i]);
-  }
-  if (still_sleeping != sleeping_contacts_.size()) {
-    merged_contacts_.insert(merged_contacts_.end(), contacts_.begin() + static_cast<std::ptrdiff_t>(last_step),
-                            contacts_.end());
-    std::swap(contacts_, merged_contacts_);
-    sleeping_contacts_.erase(sleeping_contacts_.begin() + static_cast<std::ptrdiff_t>(still_sleeping),
-                             sleeping_contacts_.end());
-  }
-
-  merged_contacts_.clear();
-  std::size_t kept = 0;
-  std::size_t sleeping = 0;
-  for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    if (!resting(contacts_[i])) {
-      if (kept != i) contacts_[kept] = contacts_[i];
-      ++kept;
-      continue;
-    }
-    while (sleeping < sleeping_contacts_.size() && pair_less(sleeping_contacts_[sleeping], contacts_[i])) {
-      merged_contacts_.push_back(sleeping_contacts_[sleeping++]);
-    }
-    merged_contacts_.push_back(contacts_[i]);
-  }
-  if (kept == contacts_.size()) return;
-  merged_contacts_.insert(merged_contacts_.end(), sleeping_contacts_.begin() + static_cast<std::ptrdiff_t>(sleeping),
-                          sleeping_contacts_.end());
-  contacts_.erase(contacts_.begin() + static_cast<std::ptrdiff_t>(kept), contacts_.end());
-  std::swap(sleeping_contacts_, merged_contacts_);
+  move_contacts(sleeping_contacts_, contacts_, merged_contacts_,
+                [&resting](const Contact& contact) { return !resting(contact); });
+  move_contacts(contacts_, sleeping_contacts_, merged_contacts_, resting);
 }
 
 void World::find_contacts(float dt) {
