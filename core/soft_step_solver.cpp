@@ -19,32 +19,38 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   prepare_contacts(contacts, bodies, context);
   const bool may_bounce = any_contact_may_bounce(contacts, context);
   WideContactSolver& wide = stages.solver_wide_contacts();
-  wide.begin_step(contacts, bodies, context, context.solver_lanes);
+  wide.begin_step(contacts, bodies.size(), context, context.solver_lanes);
+  // The sub-steps work on the compact body states; the bodies are written once at the end
+  // (and around the bounce stages, which work on them).
+  stages.begin_solver_bodies();
+  SolverBodies& states = stages.solver_body_states();
   for (int substep = 0; substep < context.substeps; ++substep) {
-    stages.integrate_velocities(h);
+    stages.integrate_solver_velocities(h);
     if (may_bounce) {
       // The plan reads the points' impulses (and drops those of finished bounces).
       wide.store_impulses(contacts);
+      states.store(bodies);
       plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
                           stages.solver_body_flags());
       wide.load_points(contacts);
     }
-    wide.load_velocities(bodies);
-    if (context.warm_starting) wide.warm_start();
-    for (int i = 0; i < context.velocity_iterations; ++i) wide.solve(context, /*use_bias=*/true);
-    wide.store_velocities(bodies);
-    stages.integrate_positions(h);
-    wide.load_motion(bodies);
+    if (context.warm_starting) wide.warm_start(states.states());
     for (int i = 0; i < context.velocity_iterations; ++i) {
-      wide.solve(context, /*use_bias=*/false);  // relax
+      wide.solve(context, /*use_bias=*/true, states.states());
     }
-    wide.store_velocities(bodies);
+    stages.integrate_solver_positions(h);
+    for (int i = 0; i < context.velocity_iterations; ++i) {
+      wide.solve(context, /*use_bias=*/false, states.states());  // relax
+    }
     if (may_bounce) {
       wide.store_impulses(contacts);
+      states.store(bodies);
       apply_bounces(contacts, bodies);
+      states.load(bodies);
       wide.load_points(contacts);
     }
   }
+  states.store(bodies);
   wide.store_impulses(contacts);
   if (context.friction) {
     update_friction_state(contacts, bodies);

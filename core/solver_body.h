@@ -14,7 +14,7 @@ struct alignas(32) SolverBody {
   float velocity_x = 0.0f;        ///< m/s
   float velocity_y = 0.0f;        ///< m/s
   float angular_velocity = 0.0f;  ///< rad/s, counter-clockwise
-  float unused = 0.0f;            ///< padding to 32 bytes
+  float angle = 0.0f;             ///< radians, unwrapped (the body's `angle`)
   float position_x = 0.0f;        ///< centre of mass, metres
   float position_y = 0.0f;        ///< centre of mass, metres
   float cosine = 1.0f;            ///< cos of the body's angle

@@ -8,6 +8,7 @@
 #include "core/contact.h"
 #include "core/settings.h"
 #include "core/shock_propagation.h"
+#include "core/solver_bodies.h"
 #include "core/solver_context.h"
 #include "core/wide_contact_solver.h"
 
@@ -27,6 +28,13 @@ class SolverStages {
   virtual void integrate_velocities(float dt) = 0;
   /// Moves every awake body by its velocity over `dt` seconds (bullets swept if enabled).
   virtual void integrate_positions(float dt) = 0;
+  /// Loads `solver_body_states()` from the bodies for this step (after `find_contacts`).
+  virtual void begin_solver_bodies() = 0;
+  /// `integrate_velocities` on `solver_body_states()` instead of the bodies.
+  virtual void integrate_solver_velocities(float dt) = 0;
+  /// `integrate_positions` on `solver_body_states()` instead of the bodies (bullets are swept
+  /// through the bodies: written out, swept, read back).
+  virtual void integrate_solver_positions(float dt) = 0;
   /// Removes overlap left after the velocity solve, by the world's position correction method.
   virtual void correct_positions() = 0;
   /// This step's contacts, sorted by pair.
@@ -37,7 +45,9 @@ class SolverStages {
   virtual std::vector<std::uint8_t>& solver_body_flags() = 0;
   /// Scratch for the shock pass's support order (kept to avoid allocating).
   virtual SupportOrder& solver_support_order() = 0;
-  /// The soft step's coloured contact blocks and solver bodies (kept to avoid allocating).
+  /// The compact body states the soft step integrates and solves on (kept to avoid allocating).
+  virtual SolverBodies& solver_body_states() = 0;
+  /// The soft step's coloured contact blocks (kept to avoid allocating).
   virtual WideContactSolver& solver_wide_contacts() = 0;
 
  protected:

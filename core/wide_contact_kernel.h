@@ -127,7 +127,7 @@ inline __attribute__((always_inline)) BodyLanes<8> gather_8_bodies(const SolverB
 inline __attribute__((always_inline)) BodyLanes<4> gather_4_bodies(const SolverBody* bodies,
                                                                    const std::int32_t* slots) {
   typedef LaneTypes<4>::Floats F;
-  F velocity[4], pose[4];  // per lane: (vx, vy, w, unused) and (px, py, cos, sin)
+  F velocity[4], pose[4];  // per lane: (vx, vy, w, angle) and (px, py, cos, sin)
   for (int lane = 0; lane < 4; ++lane) {
     const SolverBody* body = &bodies[slots[lane]];
     velocity[lane] = load_lanes<F>(&body->velocity_x);

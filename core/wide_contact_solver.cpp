@@ -24,12 +24,6 @@ void for_each_point(Blocks& blocks, Contacts& contacts, Visit visit) {
   }
 }
 
-void load_velocity(SolverBody& solver_body, const Body& body) {
-  solver_body.velocity_x = body.linear_velocity.x;
-  solver_body.velocity_y = body.linear_velocity.y;
-  solver_body.angular_velocity = body.angular_velocity;
-}
-
 // Point slot of lane `lane` left without a point: nothing to solve, no impulse to apply.
 template <int Lanes>
 void clear_point(BlockPoint<Lanes>& slot, int lane) {
@@ -167,42 +161,15 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts, const SolverC
   }
 }
 
-void WideContactSolver::begin_step(const std::vector<Contact>& contacts,
-                                   const std::vector<Body>& bodies, const SolverContext& context,
-                                   int lanes) {
+void WideContactSolver::begin_step(const std::vector<Contact>& contacts, std::size_t body_count,
+                                   const SolverContext& context, int lanes) {
   if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
   lanes_ = lanes;
-  colouring_.colour(contacts, bodies.size());
+  colouring_.colour(contacts, body_count);
   if (lanes_ == 8) {
     pack<8>(contacts, context);
   } else {
     pack<4>(contacts, context);
-  }
-  bodies_.resize(bodies.size());
-  load_motion(bodies);
-}
-
-void WideContactSolver::load_velocities(const std::vector<Body>& bodies) {
-  for (std::size_t i = 0; i < bodies.size(); ++i) load_velocity(bodies_[i], bodies[i]);
-}
-
-void WideContactSolver::load_motion(const std::vector<Body>& bodies) {
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    SolverBody& solver_body = bodies_[i];
-    load_velocity(solver_body, bodies[i]);
-    solver_body.position_x = bodies[i].transform.position.x;
-    solver_body.position_y = bodies[i].transform.position.y;
-    solver_body.cosine = bodies[i].transform.rotation.cosine;
-    solver_body.sine = bodies[i].transform.rotation.sine;
-  }
-}
-
-void WideContactSolver::store_velocities(std::vector<Body>& bodies) const {
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    Body& body = bodies[i];
-    if (body.type != BodyType::Dynamic) continue;  // contacts never move the others
-    body.linear_velocity = vec2(bodies_[i].velocity_x, bodies_[i].velocity_y);
-    body.angular_velocity = bodies_[i].angular_velocity;
   }
 }
 
@@ -230,17 +197,17 @@ void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
   }
 }
 
-void WideContactSolver::warm_start() {
+void WideContactSolver::warm_start(SolverBody* bodies) {
 #if defined(__x86_64__)
   if (lanes_ == 8) {
-    warm_start_contact_blocks_8(blocks_8_.data(), blocks_8_.size(), bodies_.data());
+    warm_start_contact_blocks_8(blocks_8_.data(), blocks_8_.size(), bodies);
     return;
   }
 #endif
-  warm_start_contact_blocks_4(blocks_4_.data(), blocks_4_.size(), bodies_.data());
+  warm_start_contact_blocks_4(blocks_4_.data(), blocks_4_.size(), bodies);
 }
 
-void WideContactSolver::solve(const SolverContext& context, bool use_bias) {
+void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies) {
   WidePassSettings pass;
   pass.inverse_substep = 1.0f / context.substep;
   pass.push_max_speed = context.push_max_speed;
@@ -248,11 +215,11 @@ void WideContactSolver::solve(const SolverContext& context, bool use_bias) {
   pass.friction = context.friction;
 #if defined(__x86_64__)
   if (lanes_ == 8) {
-    solve_contact_blocks_8(blocks_8_.data(), blocks_8_.size(), bodies_.data(), pass);
+    solve_contact_blocks_8(blocks_8_.data(), blocks_8_.size(), bodies, pass);
     return;
   }
 #endif
-  solve_contact_blocks_4(blocks_4_.data(), blocks_4_.size(), bodies_.data(), pass);
+  solve_contact_blocks_4(blocks_4_.data(), blocks_4_.size(), bodies, pass);
 }
 
 }  // namespace impulse2d

@@ -5,10 +5,9 @@
 /// or 8 lanes, solved by the vector kernels (`wide_contact_kernels.h`). The lanes of a block
 /// share no moving body, so 4 and 8 lanes give bit-identical results.
 ///
-/// Per step: `begin_step` after `prepare_contacts`; per sub-step the velocities and poses are
-/// loaded from and stored to the world's `Body`s around the stages that work on them
-/// (integration, bullets, bounces); `end_step` writes the impulses back to the contacts.
-
+/// Per step: `begin_step` after `prepare_contacts`; the passes work on the step's
+/// `SolverBodies` (`solver_bodies.h`), and `store_impulses` writes the impulses back to the
+/// contacts (and `load_points` reads them in again after the bounce stages changed them).
 #include "core/body.h"
 #include "core/contact.h"
 #include "core/contact_block.h"
@@ -26,26 +25,20 @@ class WideContactSolver {
   /// Lanes per block this CPU runs best: 8 with AVX2 (x86-64), else 4.
   static int widest_lanes();
 
-  /// Colours the prepared `contacts`, packs them into blocks of `lanes` (4 or 8, 8 only where
-  /// `widest_lanes()` is 8; 0: the widest) and loads every body's pose and velocity.
-  void begin_step(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+  /// Colours the prepared `contacts` (between `body_count` body slots) and packs them into
+  /// blocks of `lanes` (4 or 8, 8 only where `widest_lanes()` is 8; 0: the widest).
+  void begin_step(const std::vector<Contact>& contacts, std::size_t body_count,
                   const SolverContext& context, int lanes);
-  /// Copies the bodies' velocities in (after the world integrated them).
-  void load_velocities(const std::vector<Body>& bodies);
-  /// Copies the bodies' velocities and poses in (after the world moved them).
-  void load_motion(const std::vector<Body>& bodies);
-  /// Copies the velocities back out to the bodies the contacts move.
-  void store_velocities(std::vector<Body>& bodies) const;
   /// Copies each point's accumulated impulses and bounce plan (`velocity_bias`, `bouncing`,
   /// `waiting`) in, after the bounce stages changed them in the contacts.
   void load_points(const std::vector<Contact>& contacts);
   /// Copies each point's accumulated impulses and `friction_at_limit` out to the contacts.
   void store_impulses(std::vector<Contact>& contacts) const;
 
-  /// Applies the accumulated impulses to the bodies (warm starting).
-  void warm_start();
-  /// One soft (`use_bias`) or relax pass over every block, colour by colour.
-  void solve(const SolverContext& context, bool use_bias);
+  /// Applies the accumulated impulses to `bodies` (one state per body slot: warm starting).
+  void warm_start(SolverBody* bodies);
+  /// One soft (`use_bias`) or relax pass over every block, colour by colour, on `bodies`.
+  void solve(const SolverContext& context, bool use_bias, SolverBody* bodies);
 
   /// Lanes per block of this step (4 or 8).
   int lanes() const { return lanes_; }
@@ -62,7 +55,6 @@ class WideContactSolver {
   ContactColouring colouring_;
   std::vector<ContactBlock<4>> blocks_4_;
   std::vector<ContactBlock<8>> blocks_8_;
-  std::vector<SolverBody> bodies_;  // one per body slot
 };
 
 }  // namespace impulse2d

@@ -154,11 +154,15 @@ class World : private SolverStages {
   void find_contacts(float dt) override;
   void integrate_velocities(float dt) override;
   void integrate_positions(float dt) override;
+  void begin_solver_bodies() override;
+  void integrate_solver_velocities(float dt) override;
+  void integrate_solver_positions(float dt) override;
   void correct_positions() override;
   std::vector<Contact>& solver_contacts() override { return contacts_; }
   std::vector<Body>& solver_bodies() override { return bodies_; }
   std::vector<std::uint8_t>& solver_body_flags() override { return body_flags_; }
   SupportOrder& solver_support_order() override { return support_order_; }
+  SolverBodies& solver_body_states() override { return solver_body_states_; }
   WideContactSolver& solver_wide_contacts() override { return wide_contacts_; }
   void restore_diverged_bodies();
   void set_aside_sleeping_contacts();
@@ -180,6 +184,7 @@ class World : private SolverStages {
   std::vector<Aabb> speculative_bounds_;   // per slot (reused)
   std::vector<std::uint8_t> body_flags_;   // per slot, solver scratch (reused)
   SupportOrder support_order_;             // the shock pass's scratch (reused)
+  SolverBodies solver_body_states_;        // the soft step's compact bodies (reused)
   WideContactSolver wide_contacts_;        // the soft step's contact arrays (reused)
   BroadPhase broad_phase_;
   std::vector<BodyPair> pairs_;            // broad-phase output (reused)
