@@ -54,40 +54,36 @@ struct BodyDef {
 };
 
 /// The state the world keeps for one body. Read it through `World::body(id)`.
+/// The fields the step reads for every contact and sub-step come first, so that they share
+/// the first two cache lines; the shape and material (read by the narrow phase alone) last.
 struct Body {
   BodyId id;                  ///< this body's handle
   BodyType type = BodyType::Dynamic;  ///< how it moves
-  Shape shape;                ///< in body-local coordinates, centroid at the origin
-  Material material;          ///< what it is made of
-
+  bool awake = true;             ///< false while sleeping
+  bool fixed_rotation = false;   ///< inertia treated as infinite
+  bool is_bullet = false;        ///< swept against other bodies each step (no tunnelling)
   Transform transform;        ///< position (centre of mass) and rotation
   float angle = 0.0f;         ///< radians, unwrapped (keeps counting past pi)
   vec2 linear_velocity{0.0f, 0.0f};  ///< m/s
   float angular_velocity = 0.0f;     ///< rad/s
-
-  vec2 previous_position{0.0f, 0.0f};  ///< at the start of the last step (for interpolation)
-  float previous_angle = 0.0f;          ///< at the start of the last step
-
+  float inverse_mass = 0.0f;     ///< 1/kg
+  float inverse_inertia = 0.0f;  ///< 1/(kg m^2); 0 when rotation is fixed
   vec2 force{0.0f, 0.0f};  ///< N, accumulated until the next step, then cleared
   float torque = 0.0f;     ///< N m, accumulated until the next step, then cleared
-
-  float mass = 0.0f;             ///< kg (0 for static and kinematic bodies)
-  float inverse_mass = 0.0f;     ///< 1/kg
-  float inertia = 0.0f;          ///< kg m^2 about the centre of mass
-  float inverse_inertia = 0.0f;  ///< 1/(kg m^2); 0 when rotation is fixed
-
   float gravity_scale = 1.0f;    ///< multiplies the world's gravity
   float linear_damping = 0.0f;   ///< 1/s
   float angular_damping = 0.0f;  ///< 1/s
-  bool fixed_rotation = false;   ///< inertia treated as infinite
-  bool is_bullet = false;        ///< swept against other bodies each step (no tunnelling)
+  float mass = 0.0f;             ///< kg (0 for static and kinematic bodies)
+  float inertia = 0.0f;          ///< kg m^2 about the centre of mass
+  vec2 previous_position{0.0f, 0.0f};  ///< at the start of the last step (for interpolation)
+  float previous_angle = 0.0f;          ///< at the start of the last step
+  float sleep_time = 0.0f;       ///< seconds the body has been slow
   bool speculative = true;       ///< its pairs get speculative contacts
   std::uint32_t collision_layers = 1;  ///< bitmask
-  std::uint64_t user_data = 0;   ///< the caller's value
-
-  bool awake = true;             ///< false while sleeping
-  float sleep_time = 0.0f;       ///< seconds the body has been slow
   Aabb aabb;                     ///< world bounds, updated each step
+  std::uint64_t user_data = 0;   ///< the caller's value
+  Material material;          ///< what it is made of
+  Shape shape;                ///< in body-local coordinates, centroid at the origin
 };
 
 }  // namespace impulse2d

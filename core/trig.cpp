@@ -40,6 +40,26 @@ double cosine_polynomial(double r) {
   return 1.0 + r2 * sum;
 }
 
+// `value` rounded to the nearest integer, ties to even: std::nearbyint in the default rounding
+// mode (the only one the engine runs in), without its library call. Below 2^51 in magnitude,
+// adding and subtracting 1.5 * 2^52 leaves exactly the rounded value (the sum's last bit is
+// worth 1); larger doubles are integers already.
+double nearest_integer(double value) {
+  constexpr double shifter = 6755399441055744.0;  // 1.5 * 2^52
+  if (!(std::fabs(value) < 2251799813685248.0)) return std::nearbyint(value);  // 2^51
+  return (value + shifter) - shifter;
+}
+
+// The quadrant (an integer-valued double) modulo 4, in 0..3: its low two bits in two's
+// complement, as std::fmod(quadrant, 4.0) & 3 gives, without fmod's library call where the
+// quadrant fits a 64-bit integer.
+long long quadrant_mod_4(double quadrant) {
+  if (std::fabs(quadrant) < 4611686018427387904.0) {  // 2^62
+    return static_cast<long long>(quadrant) & 3;
+  }
+  return static_cast<long long>(std::fmod(quadrant, 4.0)) & 3;
+}
+
 }  // namespace
 
 CosSin cos_sin(float angle) {
@@ -48,12 +68,11 @@ CosSin cos_sin(float angle) {
     return {nan, nan};
   }
   const double x = angle;
-  // Nearest quadrant; std::nearbyint is exact (no libm rounding question) in any mode.
-  const double quadrant = std::nearbyint(x * kTwoOverPi);
+  const double quadrant = nearest_integer(x * kTwoOverPi);
   const double r = (x - quadrant * kHalfPiHigh) - quadrant * kHalfPiLow;
   const double s = sine_polynomial(r);
   const double c = cosine_polynomial(r);
-  const long long q = static_cast<long long>(std::fmod(quadrant, 4.0)) & 3;
+  const long long q = quadrant_mod_4(quadrant);
   switch (q) {
     case 0:
       return {static_cast<float>(c), static_cast<float>(s)};

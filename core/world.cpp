@@ -400,6 +400,13 @@ void move_contacts(std::vector<Contact>& from, std::vector<Contact>& into,
 // Set-aside contacts of pairs that move again go back among last step's contacts, so the
 // narrow phase carries their impulses over (warm start) as if they had never slept.
 void World::set_aside_sleeping_contacts() {
+  // A contact rests only when both its bodies do, so with no body asleep (and none set aside)
+  // there is nothing to move: skip the two walks over the contacts.
+  bool any_asleep = false;
+  for (std::size_t i = 0; i < bodies_.size() && !any_asleep; ++i) {
+    any_asleep = alive_[i] && bodies_[i].type != BodyType::Static && !bodies_[i].awake;
+  }
+  if (!any_asleep && sleeping_contacts_.empty()) return;
   auto resting = [this](const Contact& contact) {
     return !is_moving(bodies_[contact.body_a.index]) && !is_moving(bodies_[contact.body_b.index]);
   };
