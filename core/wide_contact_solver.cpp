@@ -11,10 +11,30 @@ namespace {
 constexpr std::int32_t lane_set = -1;  // a true lane in the blocks' masks
 static_assert(max_manifold_points == 2, "ContactBlock has two point slots per lane");
 
+// How many contacts ahead of the one being copied the walks in colour order ask the cache for:
+// in colour order a contact's index is not predictable from the last one's, so without the
+// hint every ~300-byte contact is a run of cache misses.
+constexpr std::size_t prefetch_distance = 8;
+
+// Asks the cache for the whole of `contact` (no effect on results).
+void prefetch_contact(const Contact& contact) {
+  const char* bytes = reinterpret_cast<const char*>(&contact);
+  for (std::size_t offset = 0; offset < sizeof(Contact); offset += 64) {
+    __builtin_prefetch(bytes + offset);
+  }
+}
+
 // Calls visit(point slot, lane point, contact point) for every used point of every lane.
 template <int Lanes, class Blocks, class Contacts, class Visit>
 void for_each_point(Blocks& blocks, Contacts& contacts, Visit visit) {
-  for (auto& block : blocks) {
+  const std::size_t ahead = prefetch_distance / Lanes + 1;  // blocks
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    if (b + ahead < blocks.size()) {
+      for (const std::int32_t index : blocks[b + ahead].contact_index) {
+        if (index >= 0) prefetch_contact(contacts[static_cast<std::size_t>(index)]);
+      }
+    }
+    auto& block = blocks[b];
     for (int lane = 0; lane < Lanes; ++lane) {
       const std::int32_t index = block.contact_index[lane];
       if (index < 0) continue;
@@ -149,6 +169,7 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts, const SolverC
     const int per_block = colour == colours ? 1 : Lanes;
     int lane = 0;
     for (std::size_t k = colouring_.range_start(colour); k < colouring_.range_start(colour + 1); ++k) {
+      if (k + prefetch_distance < order.size()) prefetch_contact(contacts[order[k + prefetch_distance]]);
       pack_contact(contacts[order[k]], order[k], context, packed[block], lane);
       if (++lane < per_block) continue;
       for (int unused = lane; unused < Lanes; ++unused) clear_lane(packed[block], unused);
