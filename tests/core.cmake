@@ -24,6 +24,7 @@ impulse2d_add_test(test_step_allocations
 impulse2d_add_test(test_soft_step
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_soft_step.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_wide_solver.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_solver_bodies.cpp
   LIBS impulse2d_core)
 # The engine's own cos/sin and the speed clamp.
 impulse2d_add_test(test_trig
