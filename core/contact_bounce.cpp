@@ -41,14 +41,6 @@ BouncePlan plan_bounce(float approach_speed, float gap, float approach_accelerat
   return plan;
 }
 
-bool any_contact_may_bounce(const std::vector<Contact>& contacts, const SolverContext& context) {
-  if (!context.restitution) return false;
-  for (const Contact& contact : contacts) {
-    if (is_solvable(contact) && contact.restitution > 0.0f) return true;
-  }
-  return false;
-}
-
 void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                          const SolverContext& context, float h, bool bounces_only,
                          std::vector<std::uint8_t>& bouncing_bodies) {

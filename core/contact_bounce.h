@@ -61,8 +61,4 @@ inline float current_separation(const Body& a, const Body& b, const Contact& con
   return glm::dot(surface_b - surface_a, contact.normal);
 }
 
-/// True when some solvable contact may bounce this step (restitution on and > 0): without one,
-/// `plan_contact_speeds(..., bounces_only = true, ...)` and `apply_bounces` change nothing.
-bool any_contact_may_bounce(const std::vector<Contact>& contacts, const SolverContext& context);
-
 }  // namespace impulse2d

@@ -25,15 +25,18 @@ void update_friction_state(std::vector<Contact>& contacts, std::vector<Body>& bo
     }
     bool at_static_limit = true;
     float total_normal_impulse = 0.0f;
-    float slip_sum = 0.0f;
     for (int i = 0; i < contact.point_count; ++i) {
       at_static_limit = at_static_limit && contact.points[i].friction_at_limit;
       total_normal_impulse += contact.points[i].normal_impulse;
-      slip_sum += glm::dot(relative_velocity(a, b, contact.points[i]), tangent);
     }
     if (!at_static_limit || !(total_normal_impulse > 0.0f)) {
       contact.steps_at_static_limit = 0;
       continue;
+    }
+    // Only now the bodies' velocities (most contacts stop above, without reading them).
+    float slip_sum = 0.0f;
+    for (int i = 0; i < contact.point_count; ++i) {
+      slip_sum += glm::dot(relative_velocity(a, b, contact.points[i]), tangent);
     }
     // Saturated friction that still reduced (or kept) the slip the contact brought into the
     // step holds against what drives it: it is only clearing residual slip of an unconverged

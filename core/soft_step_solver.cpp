@@ -17,9 +17,9 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   std::vector<Contact>& contacts = stages.solver_contacts();
   std::vector<Body>& bodies = stages.solver_bodies();
   prepare_contacts(contacts, bodies, context);
-  const bool may_bounce = any_contact_may_bounce(contacts, context);
   WideContactSolver& wide = stages.solver_wide_contacts();
   wide.begin_step(contacts, bodies.size(), context, context.solver_lanes);
+  const bool may_bounce = context.restitution && wide.has_elastic_contacts();
   // The sub-steps work on the compact body states; the bodies are written once at the end
   // (and around the bounce stages, which work on them).
   stages.begin_solver_bodies();

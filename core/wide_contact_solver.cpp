@@ -170,7 +170,9 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts, const SolverC
     int lane = 0;
     for (std::size_t k = colouring_.range_start(colour); k < colouring_.range_start(colour + 1); ++k) {
       if (k + prefetch_distance < order.size()) prefetch_contact(contacts[order[k + prefetch_distance]]);
-      pack_contact(contacts[order[k]], order[k], context, packed[block], lane);
+      const Contact& contact = contacts[order[k]];
+      has_elastic_contacts_ = has_elastic_contacts_ || contact.restitution > 0.0f;
+      pack_contact(contact, order[k], context, packed[block], lane);
       if (++lane < per_block) continue;
       for (int unused = lane; unused < Lanes; ++unused) clear_lane(packed[block], unused);
       lane = 0;
@@ -186,6 +188,7 @@ void WideContactSolver::begin_step(const std::vector<Contact>& contacts, std::si
                                    const SolverContext& context, int lanes) {
   if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
   lanes_ = lanes;
+  has_elastic_contacts_ = false;
   colouring_.colour(contacts, body_count);
   if (lanes_ == 8) {
     pack<8>(contacts, context);

@@ -40,6 +40,9 @@ class WideContactSolver {
   /// One soft (`use_bias`) or relax pass over every block, colour by colour, on `bodies`.
   void solve(const SolverContext& context, bool use_bias, SolverBody* bodies);
 
+  /// True when some contact of this step has restitution > 0: without one (and so in any
+  /// resting pile) the bounce stages change nothing and are skipped.
+  bool has_elastic_contacts() const { return has_elastic_contacts_; }
   /// Lanes per block of this step (4 or 8).
   int lanes() const { return lanes_; }
   /// Colours of this step's contacts (the overflow not counted).
@@ -52,6 +55,7 @@ class WideContactSolver {
   void pack(const std::vector<Contact>& contacts, const SolverContext& context);
 
   int lanes_ = 4;
+  bool has_elastic_contacts_ = false;
   ContactColouring colouring_;
   std::vector<ContactBlock<4>> blocks_4_;
   std::vector<ContactBlock<8>> blocks_8_;
