@@ -338,23 +338,37 @@ void World::step() {
   if (settings_.enable_sleeping) {
     sleep_islands_.update(bodies_, alive_, contacts_, settings_, settings_.time_step);
   }
-  for (Body& body : bodies_) {
-    body.force = vec2(0.0f);
-    body.torque = 0.0f;
-  }
-  restore_diverged_bodies();
-  update_bounds(bodies_, alive_);
-  for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
-    if (alive_[i]) broad_phase_.cover(i, bodies_[i].aabb);  // queries search the trees
-  }
-
+  finish_bodies();
   time_ += static_cast<double>(settings_.time_step);
   ++step_count_;
   stats_.body_count = living_body_count_;
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (alive_[i] && bodies_[i].awake && bodies_[i].type != BodyType::Static) ++stats_.awake_body_count;
-  }
   stats_.total_ms = elapsed_ms(start);
+}
+
+// One walk over the bodies after the solve: forces cleared, diverged bodies put back where the
+// step began (and reported), bounds refreshed and covered by the broad phase (queries search
+// its trees; the next step's contacts start from these bounds), awake bodies counted.
+void World::finish_bodies() {
+  for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+    Body& body = bodies_[i];
+    body.force = vec2(0.0f);
+    body.torque = 0.0f;
+    if (!alive_[i]) continue;
+    const bool finite = is_finite(body.transform.position) && std::isfinite(body.angle) &&
+                        is_finite(body.linear_velocity) && std::isfinite(body.angular_velocity);
+    if (!finite) {
+      body.transform = Transform{body.previous_position, Rotation::from_angle(body.previous_angle)};
+      body.angle = body.previous_angle;
+      body.linear_velocity = vec2(0.0f);
+      body.angular_velocity = 0.0f;
+      body.awake = false;
+      diverged_bodies_.push_back(body.id);
+    }
+    body.aabb = compute_aabb(body.shape, body.transform);
+    broad_phase_.cover(i, body.aabb);
+    if (body.awake && body.type != BodyType::Static) ++stats_.awake_body_count;
+  }
+  bounds_current_ = true;
 }
 
 namespace {
@@ -418,7 +432,10 @@ void World::set_aside_sleeping_contacts() {
 void World::find_contacts(float dt) {
   Clock::time_point stage = Clock::now();
   set_aside_sleeping_contacts();
-  update_bounds(bodies_, alive_);
+  // Bounds are current after a step, `create_body` and `set_transform`; a sub-step's stages
+  // that move bodies mark them stale.
+  if (!bounds_current_) update_bounds(bodies_, alive_);
+  bounds_current_ = false;
   compute_speculative_reach(bodies_, alive_, settings_, dt, speculative_reach_);
   compute_speculative_bounds(bodies_, alive_, speculative_reach_, settings_.speculative_margin,
                              speculative_bounds_);
@@ -487,21 +504,6 @@ void World::correct_positions() {
   stats_.position_ms += elapsed_ms(stage);
 }
 
-void World::restore_diverged_bodies() {
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    Body& body = bodies_[i];
-    if (!alive_[i]) continue;
-    const bool finite = is_finite(body.transform.position) && std::isfinite(body.angle) &&
-                        is_finite(body.linear_velocity) && std::isfinite(body.angular_velocity);
-    if (finite) continue;
-    body.transform = Transform{body.previous_position, Rotation::from_angle(body.previous_angle)};
-    body.angle = body.previous_angle;
-    body.linear_velocity = vec2(0.0f);
-    body.angular_velocity = 0.0f;
-    body.awake = false;
-    diverged_bodies_.push_back(body.id);
-  }
-}
 
 int World::advance(float frame_time) {
   require_finite(frame_time, "World::advance", "frame_time");

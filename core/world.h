@@ -164,7 +164,7 @@ class World : private SolverStages {
   SupportOrder& solver_support_order() override { return support_order_; }
   SolverBodies& solver_body_states() override { return solver_body_states_; }
   WideContactSolver& solver_wide_contacts() override { return wide_contacts_; }
-  void restore_diverged_bodies();
+  void finish_bodies();
   void set_aside_sleeping_contacts();
   void forget_sleeping_contacts(BodyId id);
 
@@ -193,6 +193,7 @@ class World : private SolverStages {
   ContactFilter contact_filter_;
 
   StepStats stats_;
+  bool bounds_current_ = true;  // every living body's aabb matches its transform
   std::vector<BodyId> diverged_bodies_;
   double time_ = 0.0;
   std::int64_t step_count_ = 0;
