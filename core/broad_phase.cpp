@@ -135,7 +135,7 @@ void BroadPhase::cover(std::uint32_t slot, const Aabb& bounds) {
   mark_moved(slot);
 }
 
-bool BroadPhase::fat_boxes_overlap(const BodyPair& pair) const {
+inline bool BroadPhase::fat_boxes_overlap(const BodyPair& pair) const {
   const Proxy& first = proxies_[pair.first];
   const Proxy& second = proxies_[pair.second];
   if (first.node == DynamicTree::null_node || second.node == DynamicTree::null_node) return false;
