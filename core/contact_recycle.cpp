@@ -102,14 +102,4 @@ void recycle_manifold(const Body& a, const Body& b, Contact& contact) {
   }
 }
 
-void set_recycled_anchors(const Body& a, const Body& b, const Contact& contact, ContactPoint& point) {
-  point.anchor_a = contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a);
-  point.anchor_b = contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
-  const vec2 on_a = a.transform.position + point.anchor_a;
-  const vec2 on_b = b.transform.position + point.anchor_b;
-  const float excess = glm::dot(on_b - on_a, contact.normal) + point.depth;
-  point.local_anchor_a = a.transform.apply_inverse(on_a);
-  point.local_anchor_b = b.transform.apply_inverse(on_b - contact.normal * excess);
-}
-
 }  // namespace impulse2d
