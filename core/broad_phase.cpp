@@ -115,6 +115,8 @@ void BroadPhase::remove_body(std::uint32_t slot) {
 void BroadPhase::cover(std::uint32_t slot, const Aabb& bounds) {
   Proxy& proxy = proxies_[slot];
   DynamicTree& tree = trees_[static_cast<std::size_t>(proxy.type)];
+  // The common case first: bounds still inside the (finite) fat box are finite themselves.
+  if (proxy.node != DynamicTree::null_node && contains(tree.box(proxy.node), bounds)) return;
   if (!is_finite_box(bounds)) {
     if (proxy.node != DynamicTree::null_node) tree.destroy_proxy(proxy.node);
     proxy.node = DynamicTree::null_node;
@@ -127,15 +129,13 @@ void BroadPhase::cover(std::uint32_t slot, const Aabb& bounds) {
   if (proxy.node == DynamicTree::null_node) {
     leave_unbounded(slot);
     proxy.node = tree.create_proxy(fatten(bounds), slot);
-  } else if (contains(tree.box(proxy.node), bounds)) {
-    return;
   } else {
     tree.move_proxy(proxy.node, fatten(bounds));
   }
   mark_moved(slot);
 }
 
-bool BroadPhase::fat_boxes_overlap(const BodyPair& pair) const {
+inline bool BroadPhase::fat_boxes_overlap(const BodyPair& pair) const {
   const Proxy& first = proxies_[pair.first];
   const Proxy& second = proxies_[pair.second];
   if (first.node == DynamicTree::null_node || second.node == DynamicTree::null_node) return false;

@@ -75,34 +75,31 @@ bool may_recycle(const Body& a, const Body& b, const Contact& contact, float rec
   const float turn_cosine = std::min(cosine_between(now.rotation_a, then.rotation_a),
                                      cosine_between(now.rotation_b, then.rotation_b));
   if (!(turn_cosine > min_turn_cosine)) return false;
-  const float extent_a = a.type == BodyType::Static ? 0.0f : shape_extent(a.shape);
-  const float extent_b = b.type == BodyType::Static ? 0.0f : shape_extent(b.shape);
-  const float moved = std::sqrt(length_squared(now.relative_position - then.relative_position));
-  const float turned = std::fabs(sine_between(relative_rotation(now), relative_rotation(then)));
   bool touching = false;
   for (int i = 0; i < contact.point_count; ++i) touching = touching || contact.points[i].depth >= 0.0f;
   const float tolerance = touching ? recycle_distance : std::min(recycle_distance, apart_distance);
+  const float moved = std::sqrt(length_squared(now.relative_position - then.relative_position));
+  // The turn's share below is >= 0, so a shift alone at the tolerance already fails (and the
+  // shapes' extents need not be looked up).
+  if (!(moved < tolerance)) return false;
+  const float turned = std::fabs(sine_between(relative_rotation(now), relative_rotation(then)));
+  const float extent_a = a.type == BodyType::Static ? 0.0f : shape_extent(a.shape);
+  const float extent_b = b.type == BodyType::Static ? 0.0f : shape_extent(b.shape);
   return moved + std::max(extent_a, extent_b) * turned < tolerance;
 }
 
 void recycle_manifold(const Body& a, const Body& b, Contact& contact) {
+  // Copies: the stores into `contact` below cannot then make the compiler reload them.
+  const Transform xa = a.transform;
+  const Transform xb = b.transform;
+  const vec2 normal = contact.normal;
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
-    const vec2 on_a = a.transform.apply(point.recycle_anchor_a);
-    const vec2 on_b = b.transform.apply(point.recycle_anchor_b);
+    const vec2 on_a = xa.apply(point.recycle_anchor_a);
+    const vec2 on_b = xb.apply(point.recycle_anchor_b);
     point.point = 0.5f * (on_a + on_b);
-    point.depth = -(point.base_separation + glm::dot(on_b - on_a, contact.normal));
+    point.depth = -(point.base_separation + glm::dot(on_b - on_a, normal));
   }
-}
-
-void set_recycled_anchors(const Body& a, const Body& b, const Contact& contact, ContactPoint& point) {
-  point.anchor_a = contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a);
-  point.anchor_b = contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
-  const vec2 on_a = a.transform.position + point.anchor_a;
-  const vec2 on_b = b.transform.position + point.anchor_b;
-  const float excess = glm::dot(on_b - on_a, contact.normal) + point.depth;
-  point.local_anchor_a = a.transform.apply_inverse(on_a);
-  point.local_anchor_b = b.transform.apply_inverse(on_b - contact.normal * excess);
 }
 
 }  // namespace impulse2d

@@ -44,6 +44,15 @@ void recycle_manifold(const Body& a, const Body& b, Contact& contact);
 /// the step at the recycled depth. Turning the offsets with the bodies instead (the points
 /// fixed in the material) let a 20-box soft-step stack lean over within 15 s, as collision
 /// afresh every step does; with the offsets kept it stands like Box2D v3's (3 cm of sway).
-void set_recycled_anchors(const Body& a, const Body& b, const Contact& contact, ContactPoint& point);
+/// Defined here so that the per-point prepare loop inlines it.
+inline void set_recycled_anchors(const Body& a, const Body& b, const Contact& contact, ContactPoint& point) {
+  point.anchor_a = contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a);
+  point.anchor_b = contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
+  const vec2 on_a = a.transform.position + point.anchor_a;
+  const vec2 on_b = b.transform.position + point.anchor_b;
+  const float excess = glm::dot(on_b - on_a, contact.normal) + point.depth;
+  point.local_anchor_a = a.transform.apply_inverse(on_a);
+  point.local_anchor_b = b.transform.apply_inverse(on_b - contact.normal * excess);
+}
 
 }  // namespace impulse2d

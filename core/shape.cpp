@@ -280,11 +280,12 @@ Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out) {
     const vec2 edge = polygon.vertices[next_index(i, count)] - polygon.vertices[i];
     polygon.normals[i] = glm::normalize(right_perpendicular(edge));
   }
+  polygon.radius = farthest_vertex_distance(polygon);
   if (centroid_out != nullptr) *centroid_out = centroid;
   return shape;
 }
 
-float polygon_radius(const Polygon& polygon) {
+float farthest_vertex_distance(const Polygon& polygon) {
   float farthest_squared = 0.0f;
   for (int i = 0; i < polygon.count; ++i) {
     farthest_squared = std::max(farthest_squared, length_squared(polygon.vertices[i]));
@@ -297,6 +298,7 @@ Shape make_oriented_box(vec2 half_extents) {
   Shape shape;
   shape.type = ShapeType::Polygon;
   shape.polygon = box_as_polygon(Box{half_extents});
+  shape.polygon.radius = farthest_vertex_distance(shape.polygon);
   return shape;
 }
 

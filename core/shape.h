@@ -35,6 +35,11 @@ struct Polygon {
   int count = 0;                                     ///< number of vertices, 3..8
   std::array<vec2, max_polygon_vertices> vertices{};  ///< local vertices, metres, CCW
   std::array<vec2, max_polygon_vertices> normals{};   ///< outward unit normal of edge i -> i+1
+  /// Distance (m) of the farthest vertex from the origin, kept by `make_polygon` and
+  /// `make_oriented_box` so the step need not recompute it; negative (unknown) for a polygon
+  /// filled in by hand, whose radius `polygon_radius` then computes from the vertices. Edit
+  /// the vertices of a made polygon only through `make_polygon` (or set this back to -1).
+  float radius = -1.0f;
 };
 
 /// A shape of any kind. Build it with `make_circle`, `make_box`, `make_polygon` or
@@ -60,8 +65,15 @@ Shape make_box(vec2 half_extents);
 /// self-overlapping outline, repeated points, or a degenerate (near zero) area.
 Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out = nullptr);
 
-/// Distance (m) of the polygon's farthest vertex from its centre (the body's centre of mass).
-float polygon_radius(const Polygon& polygon);
+/// Distance (m) of the polygon's farthest vertex from its centre, computed from the vertices
+/// (what `Polygon::radius` caches).
+float farthest_vertex_distance(const Polygon& polygon);
+
+/// Distance (m) of the polygon's farthest vertex from its centre (the body's centre of mass):
+/// `polygon.radius` when known, else computed from the vertices.
+inline float polygon_radius(const Polygon& polygon) {
+  return polygon.radius >= 0.0f ? polygon.radius : farthest_vertex_distance(polygon);
+}
 
 /// A rectangle that rotates with its body: a 4-vertex polygon of the given half extents.
 Shape make_oriented_box(vec2 half_extents);
