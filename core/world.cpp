@@ -118,6 +118,11 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   body.id = BodyId{index, generation};
   body.type = def.type;
   body.shape = shape;
+  if (shape.type == ShapeType::Polygon) {
+    // Made here, not trusted from the caller: vertices edited after `make_polygon` would
+    // leave a stale cached radius.
+    body.shape.polygon.radius = farthest_vertex_distance(shape.polygon);
+  }
   body.material = def.material;
   const bool rotates = shape.type != ShapeType::Box && !def.fixed_rotation;
   body.angle = rotates ? def.angle : 0.0f;

@@ -1,8 +1,10 @@
 // The radius each made polygon caches (Polygon::radius) must equal the one computed from its
 // vertices, and a world stepping hand-made polygons (radius unknown, computed on use) must stay
-// bit-identical to one stepping the same polygons made by make_polygon.
+// bit-identical to one stepping the same polygons made by make_polygon; `create_body` makes the
+// radius itself, so a stale one passed in cannot steer the step.
 
 #include "core/collide.h"
+#include "core/speculative_reach.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -22,9 +24,10 @@ Shape hexagon(float size) {
   return make_polygon(vertices.data(), static_cast<int>(vertices.size()));
 }
 
-// Tumbling polygons on a slope: recycled contacts whose recycling depends on the extents, and
-// rotating bodies whose speculative reach does.
-std::uint64_t tumble_hash(float forced_radius, int steps) {
+// Tumbling polygons on a slope, each shape's cached radius first set to `forced_radius` (NaN:
+// left as made): recycled contacts whose recycling depends on the extents, and rotating
+// bodies whose speculative reach does.
+World world_with_radius(float forced_radius) {
   WorldSettings settings;
   settings.solver = SolverMethod::SoftStep;
   World world(settings);
@@ -40,6 +43,11 @@ std::uint64_t tumble_hash(float forced_radius, int steps) {
     if (!std::isnan(forced_radius)) shape.polygon.radius = forced_radius;
     world.create_body(def, shape);
   }
+  return world;
+}
+
+std::uint64_t tumble_hash(float forced_radius, int steps) {
+  World world = world_with_radius(forced_radius);
   for (int s = 0; s < steps; ++s) world.step();
   return world.state_hash();
 }
@@ -66,13 +74,28 @@ TEST(PolygonRadius, HandMadePolygonComputesItsRadius) {
   EXPECT_EQ(polygon_radius(polygon), 7.0f);  // a known radius is used as is
 }
 
-TEST(PolygonRadius, CachedAndComputedRadiiStepTheSame) {
-  const float unknown = -1.0f;  // every polygon's radius computed from its vertices on use
+TEST(PolygonRadius, CreateBodyReplacesAStaleRadius) {
+  const float unknown = -1.0f;  // every polygon's radius computed from its vertices
   const float made = std::nanf("");  // radii as make_polygon / make_oriented_box cached them
+  const float stale = 0.0f;  // e.g. vertices edited after make_polygon
   EXPECT_EQ(tumble_hash(made, 240), tumble_hash(unknown, 240));
-  // The radius does steer the step: a wrong (stale) one changes the states, so the equality
-  // above is a real check of the cached values.
-  EXPECT_NE(tumble_hash(0.0f, 240), tumble_hash(unknown, 240));
+  EXPECT_EQ(tumble_hash(stale, 240), tumble_hash(made, 240));
+  EXPECT_EQ(world_with_radius(stale).body_slots()[1].shape.polygon.radius,
+            farthest_vertex_distance(world_with_radius(made).body_slots()[1].shape.polygon));
+}
+
+TEST(PolygonRadius, TheRadiusSteersTheSpeculativeReach) {
+  // The equalities above are a real check: a wrong radius would change the step (here the
+  // speculative reach of a spinning polygon, read through polygon_radius).
+  const World world = world_with_radius(std::nanf(""));
+  std::vector<Body> bodies = world.body_slots();
+  bodies[1].angular_velocity = 10.0f;
+  const std::vector<std::uint8_t> alive(bodies.size(), 1);
+  std::vector<float> right, wrong;
+  compute_speculative_reach(bodies, alive, world.settings(), 1.0f / 60.0f, right);
+  bodies[1].shape.polygon.radius = 0.0f;
+  compute_speculative_reach(bodies, alive, world.settings(), 1.0f / 60.0f, wrong);
+  EXPECT_GT(right[1], wrong[1]);
 }
 
 }  // namespace
