@@ -1,7 +1,7 @@
 // bench_render: how fast frames come out of the renderer, for 1000 bodies at 800x600 with
 // the HUD and legend, once with every overlay on and once with shapes only.
 //
-//   bench_render [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba]
+//   bench_render [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba] [--render-only]
 //
 // Prints a Markdown table: render ms/frame, wall-clock and CPU time of all threads (llvmpipe
 // rasterises on its own threads); PNG encode ms/frame and size with stb's default deflate
@@ -12,6 +12,10 @@
 // jobs the CPU times move much less than the wall-clock ones. Ratios are against the
 // baselines measured in the same run. Frames go to DIR (default: a temporary directory
 // that is removed afterwards); --dump-frame saves the last all-overlay frame as raw RGBA.
+// --render-only renders N every-overlay frames (a step between them) and nothing else, for
+// profilers: e.g. `LP_NUM_THREADS=0 valgrind --tool=callgrind
+// --toggle-collect='impulse2d::render::FrameRenderer::render(*' bench_render --render-only
+// --frames 3` counts three renders (the first compiles the shaders: subtract a 1-frame run).
 #include "core/world.h"
 #include "render/camera.h"
 #include "render/frame_renderer.h"
@@ -110,6 +114,7 @@ struct Arguments {
   int warmup = 120;
   std::string out;
   std::string dump_frame;
+  bool render_only = false;
 };
 
 Arguments parse_arguments(int argc, char** argv) {
@@ -125,8 +130,10 @@ Arguments parse_arguments(int argc, char** argv) {
       args.out = argv[++i];
     } else if (flag == "--dump-frame" && has_value) {
       args.dump_frame = argv[++i];
+    } else if (flag == "--render-only") {
+      args.render_only = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba]\n",
+      std::fprintf(stderr, "usage: %s [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba] [--render-only]\n",
                    argv[0]);
       std::exit(2);
     }
@@ -220,6 +227,21 @@ int main(int argc, char** argv) {
   for (int i = 0; i < args.warmup; ++i) world.step();
   FrameRenderer renderer(kWidth, kHeight);
   const Camera camera = Camera::fit(world_bounds(world), kWidth, kHeight, 10.0f);
+  if (args.render_only) {
+    const FrameOptions options = overlay_options(draw_all);
+    Frame frame;
+    const double cpu_start = process_cpu_milliseconds();
+    const Clock::time_point render_start = Clock::now();
+    for (int i = 0; i < args.frames; ++i) {
+      world.step();
+      renderer.render(world, camera, options, hud_for(i), frame);
+    }
+    std::printf("bench_render --render-only: %d every-overlay frames, %.2f ms/frame, CPU %.2f ms/frame\n",
+                args.frames, milliseconds_since(render_start) / args.frames,
+                (process_cpu_milliseconds() - cpu_start) / args.frames);
+    if (temporary_output) fs::remove_all(out);
+    return 0;
+  }
 
   // Simulation alone.
   World timed = world;
