@@ -385,10 +385,6 @@ bool pair_less(const Contact& a, const Contact& b) {
          (a.body_a.index == b.body_a.index && a.body_b.index < b.body_b.index);
 }
 
-// Last step's contacts whose bodies no longer move would be dropped by the narrow phase (no
-// broad-phase pair has them); they are set aside instead, impulses and all, in pair order.
-// Set-aside contacts of pairs that move again go back among last step's contacts, so the
-// narrow phase carries their impulses over (warm start) as if they had never slept.
 // Moves the contacts of `from` that `leaves` selects into `into`, both lists staying in pair
 // order (a merge through `scratch`); the others stay in `from`, in order.
 template <class Leaves>
@@ -437,8 +433,9 @@ void World::set_aside_sleeping_contacts() {
 void World::find_contacts(float dt) {
   Clock::time_point stage = Clock::now();
   set_aside_sleeping_contacts();
-  // Bounds are current after a step, `create_body` and `set_transform`; a sub-step's stages
-  // that move bodies mark them stale.
+  // Bounds are current after a step, `create_body` and `set_transform`; from here to the end
+  // of the step the stages move bodies, so they count as stale (a sub-step's next call
+  // remakes them).
   if (!bounds_current_) update_bounds(bodies_, alive_);
   bounds_current_ = false;
   compute_speculative_reach(bodies_, alive_, settings_, dt, speculative_reach_);
