@@ -345,16 +345,19 @@ void PrimitiveRenderer::push_disc(vec2 center, float radius_pixels, Color fill, 
   push_shape(PrimitiveKind::disc, shape, vec2(-reach), vec2(reach));
 }
 
-void PrimitiveRenderer::push_rect(vec2 lower_left, vec2 upper_right, Color color) {
-  const vec2 half = 0.5f * (upper_right - lower_left);
-  const vec2 middle = 0.5f * (upper_right + lower_left);
+void PrimitiveRenderer::push_box(vec2 middle, vec2 half, float outline_width, Color color) {
   Vertex shape;
   shape.frame[0] = middle.x;
   shape.frame[1] = middle.y;
   shape.box[0] = half.x;
   shape.box[1] = half.y;
+  shape.box[3] = outline_width;
   set_color(shape.fill, color);
   push_shape(PrimitiveKind::box, shape, -half, half);
+}
+
+void PrimitiveRenderer::push_rect(vec2 lower_left, vec2 upper_right, Color color) {
+  push_box(0.5f * (upper_right + lower_left), 0.5f * (upper_right - lower_left), 0.0f, color);
 }
 
 void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text, Color color, float scale) {
@@ -467,15 +470,7 @@ void PrimitiveRenderer::draw_box_outline(vec2 lower, vec2 upper, Color color) {
   const vec2 b = to_window(upper);
   // Half extents reach half a line beyond the edges; the rectangle one line further in is cut out.
   const vec2 half = 0.5f * glm::abs(b - a) + vec2(0.5f * style_.line_width);
-  const vec2 middle = 0.5f * (a + b);
-  Vertex shape;
-  shape.frame[0] = middle.x;
-  shape.frame[1] = middle.y;
-  shape.box[0] = half.x;
-  shape.box[1] = half.y;
-  shape.box[3] = style_.line_width;
-  set_color(shape.fill, color);
-  push_shape(PrimitiveKind::box, shape, -half, half);
+  push_box(0.5f * (a + b), half, style_.line_width, color);
 }
 
 void PrimitiveRenderer::draw_arrow(vec2 from, vec2 to, Color color) {

@@ -135,6 +135,8 @@ class PrimitiveRenderer final : public DebugDraw {
   void push_filled_triangles(const vec2* window_vertices, int count, Color fill);
   void push_segment(vec2 from, vec2 to, float extension_pixels, float width_pixels, Color color);
   void push_disc(vec2 center, float radius_pixels, Color fill, float ring_radius_pixels, Color ring);
+  // A box kind primitive (window pixels): filled, or only an outline `outline_width` wide.
+  void push_box(vec2 middle, vec2 half, float outline_width, Color color);
   void push_rect(vec2 lower_left, vec2 upper_right, Color color);
   void push_text(vec2 window_top_left, const std::string& text, Color color, float scale);
 
