@@ -5,9 +5,25 @@
 /// The contacts of one block share no body the solve moves (see `contact_colouring.h`), which
 /// makes the lanes independent: the result does not depend on how many lanes a block has.
 
+#include "core/softness.h"
+
 #include <cstdint>
 
 namespace impulse2d {
+
+/// Bits of `ContactBlock::flags`, one word per lane: what the contact is and, per point slot
+/// `i` (0 or 1), `point_present << i` etc. One word instead of an int per flag keeps a lane at
+/// 192 bytes; the blocks are streamed a dozen times per step, so their size is the solve's cost
+/// once they outgrow the cache.
+enum ContactBlockFlag : std::int32_t {
+  block_moves_a = 1 << 0,         ///< the contacts move A (it has a finite mass)
+  block_moves_b = 1 << 1,         ///< the contacts move B
+  block_sliding = 1 << 2,         ///< the contact slides (dynamic friction)
+  block_against_fixed = 1 << 3,   ///< one body never moves: the static softness applies
+  block_point_present = 1 << 4,   ///< the lane's contact has point slot 0 (<< 1: slot 1)
+  block_point_waiting = 1 << 6,   ///< point slot 0 sits this sub-step out (<< 1: slot 1)
+  block_point_bouncing = 1 << 8,  ///< point slot 0 bounces in this sub-step (<< 1: slot 1)
+};
 
 /// The solver's data of one manifold point slot, one value per lane.
 template <int Lanes>
@@ -30,11 +46,6 @@ struct BlockPoint {
   float normal_impulse[Lanes];   ///< accumulated normal impulse, N s
   float tangent_impulse[Lanes];  ///< accumulated friction impulse, N s
   float velocity_bias[Lanes];    ///< target normal speed of a bouncing point, m/s
-  std::int32_t present[Lanes];   ///< -1 where the lane's contact has this point, else 0
-  std::int32_t waiting[Lanes];   ///< -1 where the point sits this sub-step out
-  std::int32_t bouncing[Lanes];  ///< -1 where the point bounces in this sub-step
-  /// -1 where the last relax pass clamped the friction at the Coulomb limit.
-  std::int32_t friction_at_limit[Lanes];
 };
 
 /// `Lanes` contacts, structure of arrays. An unused lane has no points and moves nothing.
@@ -42,10 +53,9 @@ template <int Lanes>
 struct alignas(4 * Lanes) ContactBlock {
   std::int32_t body_a[Lanes];         ///< A's body slot (0 in an unused lane)
   std::int32_t body_b[Lanes];         ///< B's body slot (0 in an unused lane)
-  std::int32_t moves_a[Lanes];        ///< nonzero where contacts move A (it has a finite mass)
-  std::int32_t moves_b[Lanes];        ///< nonzero where contacts move B
-  std::int32_t contact_index[Lanes];  ///< index in the world's contact list, -1 unused
-  std::int32_t sliding[Lanes];        ///< -1 where the contact slides (dynamic friction)
+  std::int32_t flags[Lanes];          ///< `ContactBlockFlag` bits
+  /// Bit i set where the last relax pass clamped point slot i's friction at the Coulomb limit.
+  std::int32_t friction_at_limit[Lanes];
   float normal_x[Lanes];              ///< unit normal from A to B
   float normal_y[Lanes];              ///< (y)
   float inverse_mass_a[Lanes];        ///< 1/kg
@@ -54,15 +64,15 @@ struct alignas(4 * Lanes) ContactBlock {
   float inverse_inertia_b[Lanes];     ///< 1/(kg m^2)
   float static_friction[Lanes];       ///< mixed coefficient
   float dynamic_friction[Lanes];      ///< mixed coefficient
-  float bias_rate[Lanes];             ///< 1/s: soft push-out speed per metre of overlap
-  float mass_scale[Lanes];            ///< soft constraint: fraction of the rigid impulse
-  float impulse_scale[Lanes];         ///< soft constraint: accumulated impulse relaxed per pass
   BlockPoint<Lanes> points[2];        ///< manifold point slots
 };
 
 /// What one pass of the wide solver needs besides the blocks and bodies.
 struct WidePassSettings {
   float inverse_substep = 0.0f;  ///< 1/s: one over the sub-step
+  /// Softness of contacts against a body they never move (`block_against_fixed`).
+  Softness static_softness;
+  Softness dynamic_softness;  ///< softness of contacts between two moving bodies
   float push_max_speed = 0.0f;   ///< m/s: fastest soft push-out
   bool use_bias = true;          ///< true: the soft (biased) pass; false: the relax pass
   bool friction = true;          ///< friction on

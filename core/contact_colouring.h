@@ -25,6 +25,15 @@ class ContactColouring {
   /// mass or inverse inertia in the contact's `PairMass` is nonzero.
   void colour(const std::vector<Contact>& contacts, std::size_t slot_count);
 
+  /// The same colouring a contact at a time, for a walk over the list that does other work
+  /// too: `begin` for `contact_count` contacts between `slot_count` body slots, `add` for every
+  /// contact in the list's order (its `PairMass` already resolved), then `finish`.
+  void begin(std::size_t contact_count, std::size_t slot_count);
+  /// Colours contact `index` of the list (see `begin`).
+  void add(std::size_t index, const Contact& contact);
+  /// Sorts the coloured contacts into `order()` (see `begin`).
+  void finish();
+
   /// Number of colours used, 0..max_colours (the overflow not counted).
   int colour_count() const { return colour_count_; }
   /// Indices into the contact list, colour by colour, then the overflow; each range in the
@@ -39,6 +48,7 @@ class ContactColouring {
   std::vector<std::uint8_t> colour_of_;      // per contact; overflow_colour when none
   std::vector<std::uint32_t> order_;
   std::vector<std::size_t> starts_;          // colour_count_ + 2 entries
+  std::size_t counts_[max_colours + 1] = {};  // contacts per colour, the overflow last
   int colour_count_ = 0;
 };
 

@@ -29,4 +29,8 @@ constexpr float sticking_speed = 1.0e-3f;
 /// is applied); sliding contacts at rest stick again.
 void update_friction_state(std::vector<Contact>& contacts, std::vector<Body>& bodies);
 
+/// The switch for one solvable contact between bodies `a` and `b` (see above), for solvers that
+/// walk the contacts for more than this.
+void update_friction_state(Contact& contact, Body& a, Body& b);
+
 }  // namespace impulse2d

@@ -17,48 +17,50 @@ vec2 free_acceleration(const Body& body, vec2 gravity) {
 
 }  // namespace
 
+void prepare_contact(Contact& contact, const Body& a, const Body& b, const SolverContext& context) {
+  contact.mass = PairMass{a.inverse_mass, b.inverse_mass,
+                          context.rotation ? a.inverse_inertia : 0.0f,
+                          context.rotation ? b.inverse_inertia : 0.0f};
+  const vec2 normal = contact.normal;
+  const vec2 tangent = tangent_of(normal);
+  contact.approach_acceleration =
+      -glm::dot(free_acceleration(b, context.gravity) - free_acceleration(a, context.gravity), normal);
+  float slip_sum = 0.0f;
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    if (contact.recycled) {
+      set_recycled_anchors(a, b, contact, point);
+    } else {
+      point.anchor_a = point.point - a.transform.position;
+      point.anchor_b = point.point - b.transform.position;
+      // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n.
+      const vec2 half_depth = normal * (0.5f * point.depth);
+      point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth);
+      point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
+    }
+    slip_sum += glm::dot(relative_velocity(a, b, point), tangent);
+    const float k_normal = inverse_effective_mass(contact.mass, point, normal);
+    const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
+    point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
+    point.tangent_mass = k_tangent > 0.0f ? 1.0f / k_tangent : 0.0f;
+    point.velocity_bias = 0.0f;
+    point.bouncing = false;
+    point.waiting = false;
+    point.bounce_speed = 0.0f;
+    if (!context.warm_starting) {
+      point.normal_impulse = 0.0f;
+      point.tangent_impulse = 0.0f;
+    }
+    if (!context.friction) point.tangent_impulse = 0.0f;
+  }
+  contact.start_slip = slip_sum / static_cast<float>(contact.point_count);
+}
+
 void prepare_contacts(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                       const SolverContext& context) {
   for (Contact& contact : contacts) {
     if (!contact.enabled) continue;
-    const Body& a = bodies[contact.body_a.index];
-    const Body& b = bodies[contact.body_b.index];
-    contact.mass = PairMass{a.inverse_mass, b.inverse_mass,
-                            context.rotation ? a.inverse_inertia : 0.0f,
-                            context.rotation ? b.inverse_inertia : 0.0f};
-    const vec2 normal = contact.normal;
-    const vec2 tangent = tangent_of(normal);
-    contact.approach_acceleration =
-        -glm::dot(free_acceleration(b, context.gravity) - free_acceleration(a, context.gravity), normal);
-    float slip_sum = 0.0f;
-    for (int i = 0; i < contact.point_count; ++i) {
-      ContactPoint& point = contact.points[i];
-      if (contact.recycled) {
-        set_recycled_anchors(a, b, contact, point);
-      } else {
-        point.anchor_a = point.point - a.transform.position;
-        point.anchor_b = point.point - b.transform.position;
-        // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n.
-        const vec2 half_depth = normal * (0.5f * point.depth);
-        point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth);
-        point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
-      }
-      slip_sum += glm::dot(relative_velocity(a, b, point), tangent);
-      const float k_normal = inverse_effective_mass(contact.mass, point, normal);
-      const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
-      point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
-      point.tangent_mass = k_tangent > 0.0f ? 1.0f / k_tangent : 0.0f;
-      point.velocity_bias = 0.0f;
-      point.bouncing = false;
-      point.waiting = false;
-      point.bounce_speed = 0.0f;
-      if (!context.warm_starting) {
-        point.normal_impulse = 0.0f;
-        point.tangent_impulse = 0.0f;
-      }
-      if (!context.friction) point.tangent_impulse = 0.0f;
-    }
-    contact.start_slip = slip_sum / static_cast<float>(contact.point_count);
+    prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
   }
 }
 

@@ -2,7 +2,6 @@
 
 #include "core/contact_bounce.h"
 #include "core/contact_friction_state.h"
-#include "core/contact_prepare.h"
 #include "core/contact_solver_internal.h"
 #include "core/wide_contact_solver.h"
 
@@ -16,9 +15,8 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   stages.find_contacts(context.time_step);
   std::vector<Contact>& contacts = stages.solver_contacts();
   std::vector<Body>& bodies = stages.solver_bodies();
-  prepare_contacts(contacts, bodies, context);
   WideContactSolver& wide = stages.solver_wide_contacts();
-  wide.begin_step(contacts, bodies.size(), context, context.solver_lanes);
+  wide.begin_step(contacts, bodies, context, context.solver_lanes);  // prepares them too
   const bool may_bounce = context.restitution && wide.has_elastic_contacts();
   // The sub-steps work on the compact body states; the bodies are written once at the end
   // (and around the bounce stages, which work on them).
@@ -52,17 +50,18 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   }
   states.store(bodies);
   wide.store_impulses(contacts);
-  if (context.friction) {
-    update_friction_state(contacts, bodies);
+  if (!context.friction) return;
+  for (Contact& contact : contacts) {
+    if (!is_solvable(contact)) continue;
+    Body& a = bodies[contact.body_a.index];
+    Body& b = bodies[contact.body_b.index];
+    update_friction_state(contact, a, b);
+    if (!contact.sliding) continue;
     // A sliding contact sticks, when it does, where it came to rest: its points' drift so far
-    // is no longer taken back.
-    for (Contact& contact : contacts) {
-      if (!contact.sliding || !is_solvable(contact)) continue;
-      const Body& a = bodies[contact.body_a.index];
-      const Body& b = bodies[contact.body_b.index];
-      for (int i = 0; i < contact.point_count; ++i) {
-        contact.points[i].stick_offset += friction_drift(a, b, contact, contact.points[i]);
-      }
+    // is no longer taken back. (The switch changes velocities only, the drift reads poses, so
+    // one walk does both.)
+    for (int i = 0; i < contact.point_count; ++i) {
+      contact.points[i].stick_offset += friction_drift(a, b, contact, contact.points[i]);
     }
   }
 }

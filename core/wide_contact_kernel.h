@@ -160,13 +160,13 @@ inline __attribute__((always_inline)) BodyLanes<Lanes> gather_bodies(const Solve
   if constexpr (Lanes == 4) return gather_4_bodies(bodies, slots);
 }
 
-// Writes the velocities back to the bodies the contacts move (never to a static, kinematic or
-// unused lane's slot, which other lanes may share).
+// Writes the velocities back to the bodies the contacts move (`moves` set in the lane's flags;
+// never to a static, kinematic or unused lane's slot, which other lanes may share).
 template <int Lanes>
-void scatter_velocities(SolverBody* bodies, const std::int32_t* slots, const std::int32_t* moves,
-                        const BodyLanes<Lanes>& lanes) {
+void scatter_velocities(SolverBody* bodies, const std::int32_t* slots, const std::int32_t* flags,
+                        std::int32_t moves, const BodyLanes<Lanes>& lanes) {
   for (int lane = 0; lane < Lanes; ++lane) {
-    if (!moves[lane]) continue;
+    if (!(flags[lane] & moves)) continue;
     SolverBody& body = bodies[slots[lane]];
     body.velocity_x = lanes.velocity_x[lane];
     body.velocity_y = lanes.velocity_y[lane];
@@ -174,17 +174,27 @@ void scatter_velocities(SolverBody* bodies, const std::int32_t* slots, const std
   }
 }
 
+// The lanes where `flag` is set in `flags`: -1 there, 0 elsewhere.
+template <class Masks>
+Masks flag_lanes(Masks flags, std::int32_t flag) {
+  const Masks none = {};
+  return (flags & (none + flag)) != none;
+}
+
 // The block's per-contact constants and both sides' bodies.
 template <int Lanes>
 struct BlockState {
   typedef typename LaneTypes<Lanes>::Floats Floats;
+  typedef typename LaneTypes<Lanes>::Masks Masks;
   BodyLanes<Lanes> a, b;
+  Masks flags;
   Floats normal_x, normal_y, tangent_x, tangent_y;
   Floats inverse_mass_a, inverse_mass_b, inverse_inertia_a, inverse_inertia_b;
 
   BlockState(const ContactBlock<Lanes>& block, const SolverBody* bodies)
       : a(gather_bodies<Lanes>(bodies, block.body_a)),
         b(gather_bodies<Lanes>(bodies, block.body_b)),
+        flags(load_lanes<Masks>(block.flags)),
         normal_x(load_lanes<Floats>(block.normal_x)),
         normal_y(load_lanes<Floats>(block.normal_y)),
         tangent_x(normal_y),
@@ -227,8 +237,26 @@ struct BlockState {
   }
 
   void store(const ContactBlock<Lanes>& block, SolverBody* bodies) const {
-    scatter_velocities<Lanes>(bodies, block.body_a, block.moves_a, a);
-    scatter_velocities<Lanes>(bodies, block.body_b, block.moves_b, b);
+    scatter_velocities<Lanes>(bodies, block.body_a, block.flags, block_moves_a, a);
+    scatter_velocities<Lanes>(bodies, block.body_b, block.flags, block_moves_b, b);
+  }
+};
+
+// A lane's softness (`Softness`' fields): the static one where the contact is against a body
+// it never moves, the dynamic one elsewhere.
+template <int Lanes>
+struct SoftnessLanes {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  Floats bias_rate, mass_scale, impulse_scale;
+
+  SoftnessLanes(const BlockState<Lanes>& state, const WidePassSettings& pass) {
+    const typename LaneTypes<Lanes>::Masks fixed = flag_lanes(state.flags, block_against_fixed);
+    bias_rate = select_lanes(fixed, splat<Floats>(pass.static_softness.bias_rate),
+                             splat<Floats>(pass.dynamic_softness.bias_rate));
+    mass_scale = select_lanes(fixed, splat<Floats>(pass.static_softness.mass_scale),
+                              splat<Floats>(pass.dynamic_softness.mass_scale));
+    impulse_scale = select_lanes(fixed, splat<Floats>(pass.static_softness.impulse_scale),
+                                 splat<Floats>(pass.dynamic_softness.impulse_scale));
   }
 };
 
@@ -238,17 +266,17 @@ Floats clamp_lanes(Floats value, Floats low, Floats high) {
   return select_lanes(value < low, low, select_lanes(high < value, high, value));
 }
 
-// The soft step's normal constraint of one point slot.
+// The soft step's normal constraint of point slot `slot` (0 or 1).
 template <int Lanes>
-void solve_normal(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
+void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
                   BlockPoint<Lanes>& point, const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
   const Floats zero = {};
   const Floats one = splat<Floats>(1.0f);
-  const Masks present = load_lanes<Masks>(point.present);
-  const Masks waiting = load_lanes<Masks>(point.waiting);
-  const Masks bouncing = load_lanes<Masks>(point.bouncing);
+  const Masks present = flag_lanes(state.flags, block_point_present << slot);
+  const Masks waiting = flag_lanes(state.flags, block_point_waiting << slot);
+  const Masks bouncing = flag_lanes(state.flags, block_point_bouncing << slot);
   const Floats velocity_bias = load_lanes<Floats>(point.velocity_bias);
   const Floats separation = state.offset_along(
       load_lanes<Floats>(point.surface_ax), load_lanes<Floats>(point.surface_ay),
@@ -260,14 +288,14 @@ void solve_normal(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
   Floats target_speed, mass_scale, impulse_scale;
   if (pass.use_bias) {
     // Apart: may approach until the gap closes; touching: pushed out softly.
-    const Floats push_out = -load_lanes<Floats>(block.bias_rate) * separation;
+    const Floats push_out = -softness.bias_rate * separation;
     const Floats push_max = splat<Floats>(pass.push_max_speed);
     const Floats soft_target = select_lanes(push_max < push_out, push_max, push_out);
     const Floats gap_target = -separation * splat<Floats>(pass.inverse_substep);
     target_speed = select_lanes(bouncing, velocity_bias, select_lanes(apart, gap_target, soft_target));
     const Masks rigid = bouncing | apart;
-    mass_scale = select_lanes(rigid, one, load_lanes<Floats>(block.mass_scale));
-    impulse_scale = select_lanes(rigid, zero, load_lanes<Floats>(block.impulse_scale));
+    mass_scale = select_lanes(rigid, one, softness.mass_scale);
+    impulse_scale = select_lanes(rigid, zero, softness.impulse_scale);
   } else {
     // Relaxing takes the push-out speed off touching points; points still apart keep theirs.
     active &= bouncing | ~apart;
@@ -294,16 +322,17 @@ void solve_normal(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
               state.normal_y * change);
 }
 
-// Friction of one point slot: anchored static friction in the biased pass (sticking contacts
-// only), Coulomb friction with the contact's current coefficient in the relax pass.
+// Friction of point slot `slot`: anchored static friction in the biased pass (sticking
+// contacts only), Coulomb friction with the contact's current coefficient in the relax pass.
 template <int Lanes>
-void solve_friction(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
-                    BlockPoint<Lanes>& point, const WidePassSettings& pass) {
+void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
+                    ContactBlock<Lanes>& block, BlockPoint<Lanes>& point,
+                    const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
   const Floats zero = {};
-  const Masks present = load_lanes<Masks>(point.present);
-  const Masks sliding = load_lanes<Masks>(block.sliding);
+  const Masks present = flag_lanes(state.flags, block_point_present << slot);
+  const Masks sliding = flag_lanes(state.flags, block_sliding);
   const Masks active = pass.use_bias ? present & ~sliding : present;
 
   const Floats anchor_ax = load_lanes<Floats>(point.anchor_ax);
@@ -324,7 +353,7 @@ void solve_friction(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
         state.tangent_x, state.tangent_y) - load_lanes<Floats>(point.stick_offset);
     const Floats push_max = splat<Floats>(pass.push_max_speed);
     const Floats target_speed =
-        clamp_lanes(-load_lanes<Floats>(block.bias_rate) * drift, -push_max, push_max);
+        clamp_lanes(-softness.bias_rate * drift, -push_max, push_max);
     unclamped = tangent_impulse - tangent_mass * (tangent_speed - target_speed);
     limit = load_lanes<Floats>(block.static_friction) * normal_impulse;
   } else {
@@ -334,7 +363,12 @@ void solve_friction(BlockState<Lanes>& state, const ContactBlock<Lanes>& block,
     limit = coefficient * normal_impulse;
   }
   const Floats accumulated = clamp_lanes(unclamped, -limit, limit);
-  if (!pass.use_bias) store_lanes(point.friction_at_limit, present & (accumulated != unclamped));
+  if (!pass.use_bias) {
+    const Masks bit = {};
+    const Masks at_limit = present & (accumulated != unclamped) & (bit + (1 << slot));
+    const Masks others = load_lanes<Masks>(block.friction_at_limit) & ~(bit + (1 << slot));
+    store_lanes(block.friction_at_limit, others | at_limit);
+  }
   const Floats change = select_lanes(active, accumulated - tangent_impulse, zero);
   store_lanes(point.tangent_impulse, select_lanes(active, accumulated, tangent_impulse));
   state.apply(anchor_ax, anchor_ay, anchor_bx, anchor_by, state.tangent_x * change,
@@ -347,9 +381,12 @@ void solve_blocks(ContactBlock<Lanes>* blocks, std::size_t count, SolverBody* bo
   for (std::size_t i = 0; i < count; ++i) {
     ContactBlock<Lanes>& block = blocks[i];
     BlockState<Lanes> state(block, bodies);
-    for (BlockPoint<Lanes>& point : block.points) solve_normal(state, block, point, pass);
+    const SoftnessLanes<Lanes> softness(state, pass);
+    for (int slot = 0; slot < 2; ++slot) solve_normal(state, softness, slot, block.points[slot], pass);
     if (pass.friction) {
-      for (BlockPoint<Lanes>& point : block.points) solve_friction(state, block, point, pass);
+      for (int slot = 0; slot < 2; ++slot) {
+        solve_friction(state, softness, slot, block, block.points[slot], pass);
+      }
     }
     state.store(block, bodies);
   }

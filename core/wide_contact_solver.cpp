@@ -1,5 +1,6 @@
 #include "core/wide_contact_solver.h"
 
+#include "core/contact_prepare.h"
 #include "core/contact_solver_internal.h"
 #include "core/wide_contact_kernels.h"
 
@@ -8,7 +9,6 @@ namespace impulse2d {
 
 namespace {
 
-constexpr std::int32_t lane_set = -1;  // a true lane in the blocks' masks
 static_assert(max_manifold_points == 2, "ContactBlock has two point slots per lane");
 
 // How many contacts ahead of the one being copied the walks in colour order ask the cache for:
@@ -24,22 +24,25 @@ void prefetch_contact(const Contact& contact) {
   }
 }
 
-// Calls visit(point slot, lane point, contact point) for every used point of every lane.
+// Calls visit(block, point slot index, lane, contact point) for every used point of every
+// lane; `contact_index` holds the blocks' contact indices, Lanes per block (-1: unused lane).
 template <int Lanes, class Blocks, class Contacts, class Visit>
-void for_each_point(Blocks& blocks, Contacts& contacts, Visit visit) {
+void for_each_point(Blocks& blocks, const std::vector<std::int32_t>& contact_index,
+                    Contacts& contacts, Visit visit) {
   const std::size_t ahead = prefetch_distance / Lanes + 1;  // blocks
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     if (b + ahead < blocks.size()) {
-      for (const std::int32_t index : blocks[b + ahead].contact_index) {
+      for (int lane = 0; lane < Lanes; ++lane) {
+        const std::int32_t index = contact_index[(b + ahead) * Lanes + lane];
         if (index >= 0) prefetch_contact(contacts[static_cast<std::size_t>(index)]);
       }
     }
     auto& block = blocks[b];
     for (int lane = 0; lane < Lanes; ++lane) {
-      const std::int32_t index = block.contact_index[lane];
+      const std::int32_t index = contact_index[b * Lanes + lane];
       if (index < 0) continue;
       auto& contact = contacts[static_cast<std::size_t>(index)];
-      for (int i = 0; i < contact.point_count; ++i) visit(block.points[i], lane, contact.points[i]);
+      for (int i = 0; i < contact.point_count; ++i) visit(block, i, lane, contact.points[i]);
     }
   }
 }
@@ -51,10 +54,6 @@ void clear_point(BlockPoint<Lanes>& slot, int lane) {
   slot.tangent_mass[lane] = 0.0f;
   slot.normal_impulse[lane] = 0.0f;
   slot.tangent_impulse[lane] = 0.0f;
-  slot.present[lane] = 0;
-  slot.waiting[lane] = 0;
-  slot.bouncing[lane] = 0;
-  slot.friction_at_limit[lane] = 0;
 }
 
 // An unused lane: no contact, no points, body slot 0 (never written: it moves nothing).
@@ -62,10 +61,8 @@ template <int Lanes>
 void clear_lane(ContactBlock<Lanes>& block, int lane) {
   block.body_a[lane] = 0;
   block.body_b[lane] = 0;
-  block.moves_a[lane] = 0;
-  block.moves_b[lane] = 0;
-  block.contact_index[lane] = -1;
-  block.sliding[lane] = 0;
+  block.flags[lane] = 0;
+  block.friction_at_limit[lane] = 0;
   block.inverse_mass_a[lane] = 0.0f;
   block.inverse_mass_b[lane] = 0.0f;
   block.inverse_inertia_a[lane] = 0.0f;
@@ -73,29 +70,34 @@ void clear_lane(ContactBlock<Lanes>& block, int lane) {
   for (BlockPoint<Lanes>& slot : block.points) clear_point(slot, lane);
 }
 
-// What the bounce stages may change in a point: its accumulated impulses and bounce plan.
+// What the bounce stages may change in point slot `slot`: its accumulated impulses and bounce
+// plan.
 template <int Lanes>
-void load_point_state(BlockPoint<Lanes>& slot, int lane, const ContactPoint& point) {
-  slot.normal_impulse[lane] = point.normal_impulse;
-  slot.tangent_impulse[lane] = point.tangent_impulse;
-  slot.velocity_bias[lane] = point.velocity_bias;
-  slot.waiting[lane] = point.waiting ? lane_set : 0;
-  slot.bouncing[lane] = point.bouncing ? lane_set : 0;
+void load_point_state(ContactBlock<Lanes>& block, int slot, int lane, const ContactPoint& point) {
+  BlockPoint<Lanes>& target = block.points[slot];
+  target.normal_impulse[lane] = point.normal_impulse;
+  target.tangent_impulse[lane] = point.tangent_impulse;
+  target.velocity_bias[lane] = point.velocity_bias;
+  const std::int32_t waiting = block_point_waiting << slot;
+  const std::int32_t bouncing = block_point_bouncing << slot;
+  block.flags[lane] = (block.flags[lane] & ~(waiting | bouncing)) | (point.waiting ? waiting : 0) |
+                      (point.bouncing ? bouncing : 0);
 }
 
 // One contact into lane `lane` of a block.
 template <int Lanes>
-void pack_contact(const Contact& contact, std::uint32_t index, const SolverContext& context,
-                  ContactBlock<Lanes>& block, int lane) {
+void pack_contact(const Contact& contact, ContactBlock<Lanes>& block, int lane) {
   const PairMass& mass = contact.mass;
   const bool against_fixed = mass.inverse_mass_a == 0.0f || mass.inverse_mass_b == 0.0f;
-  const Softness& softness = against_fixed ? context.static_softness : context.dynamic_softness;
   block.body_a[lane] = static_cast<std::int32_t>(contact.body_a.index);
   block.body_b[lane] = static_cast<std::int32_t>(contact.body_b.index);
-  block.moves_a[lane] = contact_detail::moves_a(mass);
-  block.moves_b[lane] = contact_detail::moves_b(mass);
-  block.contact_index[lane] = static_cast<std::int32_t>(index);
-  block.sliding[lane] = contact.sliding ? lane_set : 0;
+  std::int32_t flags = 0;
+  if (contact_detail::moves_a(mass)) flags |= block_moves_a;
+  if (contact_detail::moves_b(mass)) flags |= block_moves_b;
+  if (contact.sliding) flags |= block_sliding;
+  if (against_fixed) flags |= block_against_fixed;
+  block.flags[lane] = flags;
+  block.friction_at_limit[lane] = 0;
   block.normal_x[lane] = contact.normal.x;
   block.normal_y[lane] = contact.normal.y;
   block.inverse_mass_a[lane] = mass.inverse_mass_a;
@@ -104,9 +106,6 @@ void pack_contact(const Contact& contact, std::uint32_t index, const SolverConte
   block.inverse_inertia_b[lane] = mass.inverse_inertia_b;
   block.static_friction[lane] = contact.static_friction;
   block.dynamic_friction[lane] = contact.dynamic_friction;
-  block.bias_rate[lane] = softness.bias_rate;
-  block.mass_scale[lane] = softness.mass_scale;
-  block.impulse_scale[lane] = softness.impulse_scale;
   for (int i = 0; i < contact.point_count; ++i) {
     const ContactPoint& point = contact.points[i];
     BlockPoint<Lanes>& slot = block.points[i];
@@ -125,9 +124,8 @@ void pack_contact(const Contact& contact, std::uint32_t index, const SolverConte
     slot.stick_offset[lane] = point.stick_offset;
     slot.normal_mass[lane] = point.normal_mass;
     slot.tangent_mass[lane] = point.tangent_mass;
-    load_point_state(slot, lane, point);
-    slot.present[lane] = lane_set;
-    slot.friction_at_limit[lane] = 0;
+    block.flags[lane] |= block_point_present << i;
+    load_point_state(block, i, lane, point);
   }
   for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block.points[i], lane);
 }
@@ -152,7 +150,7 @@ std::vector<ContactBlock<8>>& WideContactSolver::blocks<8>() {
 }
 
 template <int Lanes>
-void WideContactSolver::pack(const std::vector<Contact>& contacts, const SolverContext& context) {
+void WideContactSolver::pack(const std::vector<Contact>& contacts) {
   // Each colour fills blocks of Lanes contacts (its last one partly); the overflow goes one
   // contact per block, as its contacts may share bodies.
   const int colours = colouring_.colour_count();
@@ -163,6 +161,7 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts, const SolverC
   }
   std::vector<ContactBlock<Lanes>>& packed = blocks<Lanes>();
   packed.resize(block_count);  // every lane is written below: packed or cleared
+  contact_index_.assign(block_count * Lanes, -1);
   const std::vector<std::uint32_t>& order = colouring_.order();
   std::size_t block = 0;
   for (int colour = 0; colour <= colours; ++colour) {
@@ -172,7 +171,8 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts, const SolverC
       if (k + prefetch_distance < order.size()) prefetch_contact(contacts[order[k + prefetch_distance]]);
       const Contact& contact = contacts[order[k]];
       has_elastic_contacts_ = has_elastic_contacts_ || contact.restitution > 0.0f;
-      pack_contact(contact, order[k], context, packed[block], lane);
+      pack_contact(contact, packed[block], lane);
+      contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(order[k]);
       if (++lane < per_block) continue;
       for (int unused = lane; unused < Lanes; ++unused) clear_lane(packed[block], unused);
       lane = 0;
@@ -184,40 +184,49 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts, const SolverC
   }
 }
 
-void WideContactSolver::begin_step(const std::vector<Contact>& contacts, std::size_t body_count,
+void WideContactSolver::begin_step(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                                    const SolverContext& context, int lanes) {
   if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
   lanes_ = lanes;
   has_elastic_contacts_ = false;
-  colouring_.colour(contacts, body_count);
+  // One walk prepares and colours: each contact is read from memory once for both.
+  colouring_.begin(contacts.size(), bodies.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& contact = contacts[i];
+    if (contact.enabled) {
+      prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
+    }
+    colouring_.add(i, contact);
+  }
+  colouring_.finish();
   if (lanes_ == 8) {
-    pack<8>(contacts, context);
+    pack<8>(contacts);
   } else {
-    pack<4>(contacts, context);
+    pack<4>(contacts);
   }
 }
 
 void WideContactSolver::load_points(const std::vector<Contact>& contacts) {
-  auto load = [](auto& slot, int lane, const ContactPoint& point) {
-    load_point_state(slot, lane, point);
+  auto load = [](auto& block, int slot, int lane, const ContactPoint& point) {
+    load_point_state(block, slot, lane, point);
   };
   if (lanes_ == 8) {
-    for_each_point<8>(blocks_8_, contacts, load);
+    for_each_point<8>(blocks_8_, contact_index_, contacts, load);
   } else {
-    for_each_point<4>(blocks_4_, contacts, load);
+    for_each_point<4>(blocks_4_, contact_index_, contacts, load);
   }
 }
 
 void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
-  auto store = [](const auto& slot, int lane, ContactPoint& point) {
-    point.normal_impulse = slot.normal_impulse[lane];
-    point.tangent_impulse = slot.tangent_impulse[lane];
-    point.friction_at_limit = slot.friction_at_limit[lane] != 0;
+  auto store = [](const auto& block, int slot, int lane, ContactPoint& point) {
+    point.normal_impulse = block.points[slot].normal_impulse[lane];
+    point.tangent_impulse = block.points[slot].tangent_impulse[lane];
+    point.friction_at_limit = (block.friction_at_limit[lane] & (1 << slot)) != 0;
   };
   if (lanes_ == 8) {
-    for_each_point<8>(blocks_8_, contacts, store);
+    for_each_point<8>(blocks_8_, contact_index_, contacts, store);
   } else {
-    for_each_point<4>(blocks_4_, contacts, store);
+    for_each_point<4>(blocks_4_, contact_index_, contacts, store);
   }
 }
 
@@ -234,6 +243,8 @@ void WideContactSolver::warm_start(SolverBody* bodies) {
 void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies) {
   WidePassSettings pass;
   pass.inverse_substep = 1.0f / context.substep;
+  pass.static_softness = context.static_softness;
+  pass.dynamic_softness = context.dynamic_softness;
   pass.push_max_speed = context.push_max_speed;
   pass.use_bias = use_bias;
   pass.friction = context.friction;

@@ -5,9 +5,10 @@
 /// or 8 lanes, solved by the vector kernels (`wide_contact_kernels.h`). The lanes of a block
 /// share no moving body, so 4 and 8 lanes give bit-identical results.
 ///
-/// Per step: `begin_step` after `prepare_contacts`; the passes work on the step's
-/// `SolverBodies` (`solver_bodies.h`), and `store_impulses` writes the impulses back to the
-/// contacts (and `load_points` reads them in again after the bounce stages changed them).
+/// Per step: `begin_step` prepares (`contact_prepare.h`), colours and packs the contacts; the
+/// passes work on the step's `SolverBodies` (`solver_bodies.h`), and `store_impulses` writes
+/// the impulses back to the contacts (and `load_points` reads them in again after the bounce
+/// stages changed them).
 #include "core/body.h"
 #include "core/contact.h"
 #include "core/contact_block.h"
@@ -25,9 +26,10 @@ class WideContactSolver {
   /// Lanes per block this CPU runs best: 8 with AVX2 (x86-64), else 4.
   static int widest_lanes();
 
-  /// Colours the prepared `contacts` (between `body_count` body slots) and packs them into
-  /// blocks of `lanes` (4 or 8, 8 only where `widest_lanes()` is 8; 0: the widest).
-  void begin_step(const std::vector<Contact>& contacts, std::size_t body_count,
+  /// Prepares the step's `contacts` between `bodies` (as `prepare_contacts` does), colours
+  /// them and packs them into blocks of `lanes` (4 or 8, 8 only where `widest_lanes()` is 8;
+  /// 0: the widest).
+  void begin_step(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                   const SolverContext& context, int lanes);
   /// Copies each point's accumulated impulses and bounce plan (`velocity_bias`, `bouncing`,
   /// `waiting`) in, after the bounce stages changed them in the contacts.
@@ -52,13 +54,15 @@ class WideContactSolver {
   template <int Lanes>
   std::vector<ContactBlock<Lanes>>& blocks();
   template <int Lanes>
-  void pack(const std::vector<Contact>& contacts, const SolverContext& context);
+  void pack(const std::vector<Contact>& contacts);
 
   int lanes_ = 4;
   bool has_elastic_contacts_ = false;
   ContactColouring colouring_;
   std::vector<ContactBlock<4>> blocks_4_;
   std::vector<ContactBlock<8>> blocks_8_;
+  /// Per lane of the blocks, in order: the index of its contact in the list, -1 when unused.
+  std::vector<std::int32_t> contact_index_;
 };
 
 }  // namespace impulse2d
