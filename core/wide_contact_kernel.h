@@ -77,11 +77,12 @@ Floats splat(float value) {
   return lanes + value;
 }
 
-// The velocities and poses of one side's bodies, lane by lane.
+// The velocities and poses of one side's bodies, lane by lane (the angle only to write each
+// body's first 16 bytes back whole).
 template <int Lanes>
 struct BodyLanes {
   typedef typename LaneTypes<Lanes>::Floats Floats;
-  Floats velocity_x, velocity_y, angular_velocity;
+  Floats velocity_x, velocity_y, angular_velocity, angle;
   Floats position_x, position_y, cosine, sine;
 };
 
@@ -116,6 +117,7 @@ inline __attribute__((always_inline)) BodyLanes<8> gather_8_bodies(const SolverB
   lanes.velocity_x = __builtin_shufflevector(u[0], u[4], 0, 1, 2, 3, 8, 9, 10, 11);
   lanes.velocity_y = __builtin_shufflevector(u[1], u[5], 0, 1, 2, 3, 8, 9, 10, 11);
   lanes.angular_velocity = __builtin_shufflevector(u[2], u[6], 0, 1, 2, 3, 8, 9, 10, 11);
+  lanes.angle = __builtin_shufflevector(u[3], u[7], 0, 1, 2, 3, 8, 9, 10, 11);
   lanes.position_x = __builtin_shufflevector(u[0], u[4], 4, 5, 6, 7, 12, 13, 14, 15);
   lanes.position_y = __builtin_shufflevector(u[1], u[5], 4, 5, 6, 7, 12, 13, 14, 15);
   lanes.cosine = __builtin_shufflevector(u[2], u[6], 4, 5, 6, 7, 12, 13, 14, 15);
@@ -134,7 +136,7 @@ inline __attribute__((always_inline)) BodyLanes<4> gather_4_bodies(const SolverB
     pose[lane] = load_lanes<F>(&body->position_x);
   }
   BodyLanes<4> lanes;
-  F* fields[2][4] = {{&lanes.velocity_x, &lanes.velocity_y, &lanes.angular_velocity, nullptr},
+  F* fields[2][4] = {{&lanes.velocity_x, &lanes.velocity_y, &lanes.angular_velocity, &lanes.angle},
                      {&lanes.position_x, &lanes.position_y, &lanes.cosine, &lanes.sine}};
   const F* rows[2] = {velocity, pose};
   for (int half = 0; half < 2; ++half) {
@@ -146,7 +148,7 @@ inline __attribute__((always_inline)) BodyLanes<4> gather_4_bodies(const SolverB
     *fields[half][0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
     *fields[half][1] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
     *fields[half][2] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
-    if (fields[half][3]) *fields[half][3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+    *fields[half][3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
   }
   return lanes;
 }
@@ -160,17 +162,63 @@ inline __attribute__((always_inline)) BodyLanes<Lanes> gather_bodies(const Solve
   if constexpr (Lanes == 4) return gather_4_bodies(bodies, slots);
 }
 
+// Each lane's first 16 bytes of its SolverBody (velocity, angular velocity and the angle as
+// gathered), transposed back from fields to rows with shuffles: row[lane].
+typedef float BodyRow __attribute__((vector_size(16)));
+
+#if defined(__AVX2__)
+inline __attribute__((always_inline)) void velocity_rows_8(const BodyLanes<8>& lanes,
+                                                           BodyRow* rows) {
+  typedef LaneTypes<8>::Floats F;
+  const F t0 = __builtin_shufflevector(lanes.velocity_x, lanes.velocity_y, 0, 8, 1, 9, 4, 12, 5, 13);
+  const F t1 = __builtin_shufflevector(lanes.velocity_x, lanes.velocity_y, 2, 10, 3, 11, 6, 14, 7, 15);
+  const F t2 = __builtin_shufflevector(lanes.angular_velocity, lanes.angle, 0, 8, 1, 9, 4, 12, 5, 13);
+  const F t3 = __builtin_shufflevector(lanes.angular_velocity, lanes.angle, 2, 10, 3, 11, 6, 14, 7, 15);
+  const F r04 = __builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+  const F r15 = __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+  const F r26 = __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+  const F r37 = __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+  rows[0] = __builtin_shufflevector(r04, r04, 0, 1, 2, 3);
+  rows[4] = __builtin_shufflevector(r04, r04, 4, 5, 6, 7);
+  rows[1] = __builtin_shufflevector(r15, r15, 0, 1, 2, 3);
+  rows[5] = __builtin_shufflevector(r15, r15, 4, 5, 6, 7);
+  rows[2] = __builtin_shufflevector(r26, r26, 0, 1, 2, 3);
+  rows[6] = __builtin_shufflevector(r26, r26, 4, 5, 6, 7);
+  rows[3] = __builtin_shufflevector(r37, r37, 0, 1, 2, 3);
+  rows[7] = __builtin_shufflevector(r37, r37, 4, 5, 6, 7);
+}
+#endif
+
+inline __attribute__((always_inline)) void velocity_rows_4(const BodyLanes<4>& lanes,
+                                                           BodyRow* rows) {
+  const BodyRow t0 = __builtin_shufflevector(lanes.velocity_x, lanes.velocity_y, 0, 4, 1, 5);
+  const BodyRow t1 = __builtin_shufflevector(lanes.velocity_x, lanes.velocity_y, 2, 6, 3, 7);
+  const BodyRow t2 = __builtin_shufflevector(lanes.angular_velocity, lanes.angle, 0, 4, 1, 5);
+  const BodyRow t3 = __builtin_shufflevector(lanes.angular_velocity, lanes.angle, 2, 6, 3, 7);
+  rows[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+  rows[1] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+  rows[2] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+  rows[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+}
+
 // Writes the velocities back to the bodies the contacts move (`moves` set in the lane's flags;
-// never to a static, kinematic or unused lane's slot, which other lanes may share).
+// never to a static, kinematic or unused lane's slot, which other lanes may share), 16 bytes
+// a body: the velocities and the angle it had (no lane of a block changes another's body).
 template <int Lanes>
-void scatter_velocities(SolverBody* bodies, const std::int32_t* slots, const std::int32_t* flags,
-                        std::int32_t moves, const BodyLanes<Lanes>& lanes) {
+inline __attribute__((always_inline)) void scatter_velocities(SolverBody* bodies,
+                                                              const std::int32_t* slots,
+                                                              const std::int32_t* flags,
+                                                              std::int32_t moves,
+                                                              const BodyLanes<Lanes>& lanes) {
+  BodyRow rows[Lanes];
+#if defined(__AVX2__)
+  if constexpr (Lanes == 8) velocity_rows_8(lanes, rows);
+#endif
+  if constexpr (Lanes == 4) velocity_rows_4(lanes, rows);
+#pragma GCC unroll 8
   for (int lane = 0; lane < Lanes; ++lane) {
     if (!(flags[lane] & moves)) continue;
-    SolverBody& body = bodies[slots[lane]];
-    body.velocity_x = lanes.velocity_x[lane];
-    body.velocity_y = lanes.velocity_y[lane];
-    body.angular_velocity = lanes.angular_velocity[lane];
+    store_lanes(&bodies[slots[lane]].velocity_x, rows[lane]);
   }
 }
 
