@@ -77,31 +77,61 @@ void carry_over_impulses(const Contact& old_contact, Contact& contact) {
 
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
                     const std::vector<float>& reach, const WorldSettings& settings,
-                    const ContactFilter& filter,
-                    const std::vector<Contact>& previous, std::vector<Contact>& contacts) {
-  contacts.clear();
+                    const ContactFilter& filter, std::vector<Contact>& contacts,
+                    std::vector<Contact>& spill) {
+  // This step's contacts are written over last step's in the same list: `write` never passes
+  // `read` while every new contact lands on a slot already read, so a kept contact is updated
+  // where it lies (no copy). A new contact with no read slot to land on moves the unread rest
+  // of the old list to `spill`, and the walk goes on reading from there.
+  const std::size_t old_count = contacts.size();
+  std::size_t write = 0;
+  std::size_t read = 0;  // next unread old contact: in `contacts`, or in `spill` once spilled
+  bool spilled = false;
+  auto old_size = [&] { return spilled ? spill.size() : old_count; };
+  auto old_at = [&](std::size_t i) -> Contact& { return spilled ? spill[i] : contacts[i]; };
+  // The slot contact `write` goes to: the old contact at `read` when `replaces_old` (it is
+  // consumed), else one already read, else a new one after spilling.
+  auto place = [&](bool replaces_old) -> Contact& {
+    if (spilled) return contacts.emplace_back();
+    if (write == read) {
+      if (replaces_old) {
+        ++read;
+        return contacts[write];
+      }
+      if (spill.capacity() < contacts.capacity()) spill.reserve(contacts.capacity());
+      spill.assign(contacts.begin() + static_cast<std::ptrdiff_t>(read),
+                   contacts.begin() + static_cast<std::ptrdiff_t>(old_count));
+      contacts.resize(write);
+      spilled = true;
+      read = 0;
+      return contacts.emplace_back();
+    }
+    return contacts[write];
+  };
+
   int point_total = 0;
-  std::size_t old_index = 0;  // merge walk: both lists are sorted by pair
   for (const BodyPair& pair : pairs) {
     const Body& a = bodies[pair.first];
     const Body& b = bodies[pair.second];
-    while (old_index < previous.size() &&
-           (previous[old_index].body_a.index < pair.first ||
-            (previous[old_index].body_a.index == pair.first &&
-             previous[old_index].body_b.index < pair.second))) {
-      ++old_index;
+    while (read < old_size() &&
+           (old_at(read).body_a.index < pair.first ||
+            (old_at(read).body_a.index == pair.first && old_at(read).body_b.index < pair.second))) {
+      ++read;
     }
-    const bool touched_before = old_index < previous.size() &&
-                                previous[old_index].body_a == a.id &&
-                                previous[old_index].body_b == b.id;
-    if (touched_before && may_recycle(a, b, previous[old_index], settings.contact_recycle_distance,
+    const bool touched_before =
+        read < old_size() && old_at(read).body_a == a.id && old_at(read).body_b == b.id;
+    if (touched_before && may_recycle(a, b, old_at(read), settings.contact_recycle_distance,
                                       settings.speculative_margin)) {
-      Contact& contact = contacts.emplace_back(previous[old_index]);
+      const std::size_t old_index = read;
+      Contact& contact = place(/*replaces_old=*/true);
+      if (&contact != &old_at(old_index)) contact = old_at(old_index);
+      if (spilled) ++read;
       recycle_manifold(a, b, contact);
       contact.recycled = true;
       forget_bounced_impulses(contact);
       mix_materials(a, b, settings, contact);
       point_total += contact.point_count;
+      ++write;
       continue;
     }
     const float margin = settings.speculative_margin > 0.0f && a.speculative && b.speculative
@@ -123,16 +153,17 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
     mix_materials(a, b, settings, contact);
     remember_manifold_pose(a, b, contact);
     if (touched_before) {
-      contact.enabled = previous[old_index].enabled;
+      const Contact& old_contact = old_at(read);
+      contact.enabled = old_contact.enabled;
       // A disabled pair stays disabled while its shapes overlap (re-enabling then would pop a
       // body through a one-way platform); once they are apart again, with speculative contacts
       // still inside the margin, the decision is taken afresh.
       if (!contact.enabled && deepest_depth(manifold) < -separated_gap) {
         contact.enabled = filter ? filter(a, b, manifold) : true;
       }
-      contact.sliding = previous[old_index].sliding;
-      contact.steps_at_static_limit = previous[old_index].steps_at_static_limit;
-      carry_over_impulses(previous[old_index], contact);
+      contact.sliding = old_contact.sliding;
+      contact.steps_at_static_limit = old_contact.steps_at_static_limit;
+      carry_over_impulses(old_contact, contact);
     } else {
       // A contact that begins with its surfaces already slipping past each other slides
       // (kinetic friction) until it comes to rest; one that begins at rest sticks.
@@ -140,8 +171,10 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       if (filter) contact.enabled = filter(a, b, manifold);
     }
     point_total += contact.point_count;
-    contacts.push_back(contact);
+    place(/*replaces_old=*/touched_before) = contact;
+    ++write;
   }
+  if (!spilled) contacts.resize(write);
   return point_total;
 }
 

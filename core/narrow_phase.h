@@ -12,13 +12,14 @@
 
 namespace impulse2d {
 
-/// Builds `contacts` (sorted by pair) from `pairs`, each pair collided with the speculative
-/// margin `settings.speculative_margin + reach[a] + reach[b]` (metres; `reach` per slot, see
-/// `speculative_reach.h`). `previous` holds last step's contacts, sorted by pair. `filter`
+/// Turns `contacts`, last step's contacts sorted by pair, into this step's (sorted by pair)
+/// from `pairs`, each pair collided with the speculative margin `settings.speculative_margin +
+/// reach[a] + reach[b]` (metres; `reach` per slot, see `speculative_reach.h`); kept contacts
+/// are updated in place. `spill` is scratch space (reused: no allocation once warm). `filter`
 /// may be empty. Returns the number of manifold points made.
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
                     const std::vector<float>& reach, const WorldSettings& settings,
-                    const ContactFilter& filter,
-                    const std::vector<Contact>& previous, std::vector<Contact>& contacts);
+                    const ContactFilter& filter, std::vector<Contact>& contacts,
+                    std::vector<Contact>& spill);
 
 }  // namespace impulse2d

@@ -445,9 +445,8 @@ void World::find_contacts(float dt) {
   stats_.broad_phase_ms += elapsed_ms(stage);
 
   stage = Clock::now();
-  std::swap(previous_contacts_, contacts_);
   stats_.contact_point_count = update_contacts(bodies_, pairs_, speculative_reach_, settings_,
-                                               contact_filter_, previous_contacts_, contacts_);
+                                               contact_filter_, contacts_, spilled_contacts_);
   stats_.pairs_tested = static_cast<int>(pairs_.size());
   stats_.contact_count = static_cast<int>(contacts_.size());
   stats_.sleeping_contact_count = static_cast<int>(sleeping_contacts_.size());

@@ -175,7 +175,7 @@ class World : private SolverStages {
   int living_body_count_ = 0;
 
   std::vector<Contact> contacts_;          // sorted by (a.index, b.index)
-  std::vector<Contact> previous_contacts_; // last step's, for warm starting (reused buffer)
+  std::vector<Contact> spilled_contacts_;  // the narrow phase's scratch (reused buffer)
   std::vector<Contact> sleeping_contacts_; // pairs with no moving body, sorted by pair
   std::vector<Contact> merged_contacts_;   // scratch for sleeping_contacts_ (reused)
   std::shared_ptr<const StepSolver> solver_;    // made for solver_method_ (re-made when it changes)
