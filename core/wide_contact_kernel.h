@@ -314,10 +314,36 @@ Floats clamp_lanes(Floats value, Floats low, Floats high) {
   return select_lanes(value < low, low, select_lanes(high < value, high, value));
 }
 
-// The soft step's normal constraint of point slot `slot` (0 or 1).
+// Separation (m) of point slot `point`'s surface anchors along the normal, from the bodies'
+// current poses (> 0: apart).
+template <int Lanes>
+typename LaneTypes<Lanes>::Floats separation_of(const BlockState<Lanes>& state,
+                                                const BlockPoint<Lanes>& point) {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  return state.offset_along(
+      load_lanes<Floats>(point.surface_ax), load_lanes<Floats>(point.surface_ay),
+      load_lanes<Floats>(point.surface_bx), load_lanes<Floats>(point.surface_by),
+      state.normal_x, state.normal_y);
+}
+
+// Tangential drift (m) of point slot `point` from where it last stuck, from the bodies'
+// current poses.
+template <int Lanes>
+typename LaneTypes<Lanes>::Floats drift_of(const BlockState<Lanes>& state,
+                                           const BlockPoint<Lanes>& point) {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  return state.offset_along(
+      load_lanes<Floats>(point.stick_ax), load_lanes<Floats>(point.stick_ay),
+      load_lanes<Floats>(point.stick_bx), load_lanes<Floats>(point.stick_by),
+      state.tangent_x, state.tangent_y) - load_lanes<Floats>(point.stick_offset);
+}
+
+// The soft step's normal constraint of point slot `slot` (0 or 1), whose separation (m) is
+// `separation`.
 template <int Lanes>
 void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
-                  BlockPoint<Lanes>& point, const WidePassSettings& pass) {
+                  typename LaneTypes<Lanes>::Floats separation, BlockPoint<Lanes>& point,
+                  const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
   const Floats zero = {};
@@ -326,10 +352,6 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
   const Masks waiting = flag_lanes(state.flags, block_point_waiting << slot);
   const Masks bouncing = flag_lanes(state.flags, block_point_bouncing << slot);
   const Floats velocity_bias = load_lanes<Floats>(point.velocity_bias);
-  const Floats separation = state.offset_along(
-      load_lanes<Floats>(point.surface_ax), load_lanes<Floats>(point.surface_ay),
-      load_lanes<Floats>(point.surface_bx), load_lanes<Floats>(point.surface_by),
-      state.normal_x, state.normal_y);
   const Masks apart = separation > zero;
 
   Masks active = present & ~waiting;
@@ -371,11 +393,12 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
 }
 
 // Friction of point slot `slot`: anchored static friction in the biased pass (sticking
-// contacts only), Coulomb friction with the contact's current coefficient in the relax pass.
+// contacts only; `drift` is the point's, see `drift_of`), Coulomb friction with the contact's
+// current coefficient in the relax pass.
 template <int Lanes>
 void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
-                    ContactBlock<Lanes>& block, BlockPoint<Lanes>& point,
-                    const WidePassSettings& pass) {
+                    typename LaneTypes<Lanes>::Floats drift, ContactBlock<Lanes>& block,
+                    BlockPoint<Lanes>& point, const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
   const Floats zero = {};
@@ -395,10 +418,6 @@ void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softne
   Floats unclamped, limit;
   if (pass.use_bias) {
     // Drive the point back to where it stuck, at the contact's stiffness.
-    const Floats drift = state.offset_along(
-        load_lanes<Floats>(point.stick_ax), load_lanes<Floats>(point.stick_ay),
-        load_lanes<Floats>(point.stick_bx), load_lanes<Floats>(point.stick_by),
-        state.tangent_x, state.tangent_y) - load_lanes<Floats>(point.stick_offset);
     const Floats push_max = splat<Floats>(pass.push_max_speed);
     const Floats target_speed =
         clamp_lanes(-softness.bias_rate * drift, -push_max, push_max);
@@ -429,11 +448,21 @@ void solve_blocks(ContactBlock<Lanes>* blocks, std::size_t count, SolverBody* bo
   for (std::size_t i = 0; i < count; ++i) {
     ContactBlock<Lanes>& block = blocks[i];
     BlockState<Lanes> state(block, bodies);
+    // The poses stay put through a velocity pass: every offset that reads them is taken first,
+    // which frees their eight vector registers before the velocity work.
+    const bool pulls_back = pass.use_bias && pass.friction;
+    typename LaneTypes<Lanes>::Floats separation[2], drift[2] = {};
+    for (int slot = 0; slot < 2; ++slot) {
+      separation[slot] = separation_of(state, block.points[slot]);
+      if (pulls_back) drift[slot] = drift_of(state, block.points[slot]);
+    }
     const SoftnessLanes<Lanes> softness(state, pass);
-    for (int slot = 0; slot < 2; ++slot) solve_normal(state, softness, slot, block.points[slot], pass);
+    for (int slot = 0; slot < 2; ++slot) {
+      solve_normal(state, softness, slot, separation[slot], block.points[slot], pass);
+    }
     if (pass.friction) {
       for (int slot = 0; slot < 2; ++slot) {
-        solve_friction(state, softness, slot, block, block.points[slot], pass);
+        solve_friction(state, softness, slot, drift[slot], block, block.points[slot], pass);
       }
     }
     state.store(block, bodies);
