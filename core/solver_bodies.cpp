@@ -1,5 +1,7 @@
 #include "core/solver_bodies.h"
 
+#include "core/trig.h"
+
 #include "core/integrate.h"
 
 namespace impulse2d {
@@ -68,6 +70,20 @@ void SolverBodies::integrate_velocities(float dt) {
 }
 
 void SolverBodies::integrate_positions(float dt) {
+  // Turned bodies get their cosine and sine four at a time (`cos_sin_4`, bit for bit as
+  // `Rotation::from_angle`).
+  std::size_t turned[4];
+  float angles[4];
+  CosSin rotations[4];
+  int pending = 0;
+  auto rotate_pending = [&] {
+    cos_sin_4(angles, rotations);
+    for (int k = 0; k < pending; ++k) {
+      states_[turned[k]].cosine = rotations[k].cosine;
+      states_[turned[k]].sine = rotations[k].sine;
+    }
+    pending = 0;
+  };
   for (std::size_t i = 0; i < states_.size(); ++i) {
     const std::uint32_t flags = integration_[i].flags;
     if ((flags & flag_moves) == 0) continue;
@@ -78,10 +94,13 @@ void SolverBodies::integrate_positions(float dt) {
     state.position_y = position.y;
     if ((flags & flag_turns) == 0 || state.angular_velocity == 0.0f) continue;
     state.angle += state.angular_velocity * dt;
-    const Rotation rotation = Rotation::from_angle(state.angle);
-    state.cosine = rotation.cosine;
-    state.sine = rotation.sine;
+    turned[pending] = i;
+    angles[pending] = state.angle;
+    if (++pending == 4) rotate_pending();
   }
+  if (pending == 0) return;
+  for (int k = pending; k < 4; ++k) angles[k] = 0.0f;
+  rotate_pending();
 }
 
 void SolverBodies::store(std::vector<Body>& bodies) const {

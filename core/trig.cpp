@@ -2,6 +2,7 @@
 #include "core/trig.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace impulse2d {
@@ -15,9 +16,11 @@ constexpr double kTwoOverPi = 0.6366197723675814;
 
 // Taylor series on |r| <= pi/4, evaluated by Horner's rule; the first omitted term is below
 // 2^-56 of the result.
-double sine_polynomial(double r) {
-  const double r2 = r * r;
-  double sum = -1.0 / 1307674368000.0;             // -1/15!
+// Written once for a double and for a vector of doubles (the same operations lane by lane).
+template <class Real>
+Real sine_polynomial(Real r) {
+  const Real r2 = r * r;
+  Real sum = Real{} + -1.0 / 1307674368000.0;  // -1/15!
   sum = sum * r2 + 1.0 / 6227020800.0;             // 1/13!
   sum = sum * r2 - 1.0 / 39916800.0;               // -1/11!
   sum = sum * r2 + 1.0 / 362880.0;                 // 1/9!
@@ -27,9 +30,10 @@ double sine_polynomial(double r) {
   return r + r * r2 * sum;
 }
 
-double cosine_polynomial(double r) {
-  const double r2 = r * r;
-  double sum = 1.0 / 20922789888000.0;             // 1/16!
+template <class Real>
+Real cosine_polynomial(Real r) {
+  const Real r2 = r * r;
+  Real sum = Real{} + 1.0 / 20922789888000.0;  // 1/16!
   sum = sum * r2 - 1.0 / 87178291200.0;            // -1/14!
   sum = sum * r2 + 1.0 / 479001600.0;              // 1/12!
   sum = sum * r2 - 1.0 / 3628800.0;                // -1/10!
@@ -39,6 +43,9 @@ double cosine_polynomial(double r) {
   sum = sum * r2 - 0.5;                            // -1/2!
   return 1.0 + r2 * sum;
 }
+
+typedef double Doubles2 __attribute__((vector_size(16)));  // one SSE2 register
+typedef std::int64_t Int64s2 __attribute__((vector_size(16)));
 
 // `value` rounded to the nearest integer, ties to even: std::nearbyint in the default rounding
 // mode (the only one the engine runs in), without its library call. Below 2^51 in magnitude,
@@ -82,6 +89,40 @@ CosSin cos_sin(float angle) {
       return {static_cast<float>(-c), static_cast<float>(-s)};
     default:
       return {static_cast<float>(s), static_cast<float>(-c)};
+  }
+}
+
+void cos_sin_4(const float* angles, CosSin* results) {
+  // The vector path covers |angle| < 2^30 (quadrants well inside 2^51 and 2^62, where
+  // `nearest_integer` and `quadrant_mod_4` take their exact shortcuts); anything else, and any
+  // non-finite angle, goes through cos_sin one lane at a time.
+  constexpr float vector_limit = 1073741824.0f;  // 2^30
+  bool all_in_range = true;
+  for (int lane = 0; lane < 4; ++lane) {
+    all_in_range = all_in_range && std::fabs(angles[lane]) < vector_limit;
+  }
+  if (!all_in_range) {
+    for (int lane = 0; lane < 4; ++lane) results[lane] = cos_sin(angles[lane]);
+    return;
+  }
+  for (int half = 0; half < 4; half += 2) {
+    const Doubles2 x = {angles[half], angles[half + 1]};
+    constexpr double shifter = 6755399441055744.0;  // 1.5 * 2^52: see nearest_integer
+    const Doubles2 quadrant = (x * kTwoOverPi + shifter) - shifter;
+    const Doubles2 r = (x - quadrant * kHalfPiHigh) - quadrant * kHalfPiLow;
+    const Doubles2 s = sine_polynomial(r);
+    const Doubles2 c = cosine_polynomial(r);
+    const Int64s2 q = __builtin_convertvector(quadrant, Int64s2) & 3;
+    for (int lane = 0; lane < 2; ++lane) {
+      // The quadrant's turn, as cos_sin's switch: (c, s), (-s, c), (-c, -s), (s, -c).
+      const bool swap = (q[lane] & 1) != 0;
+      const double cosine = swap ? s[lane] : c[lane];
+      const double sine = swap ? c[lane] : s[lane];
+      const bool negate_cosine = ((q[lane] + 1) & 2) != 0;
+      const bool negate_sine = (q[lane] & 2) != 0;
+      results[half + lane] = {static_cast<float>(negate_cosine ? -cosine : cosine),
+                              static_cast<float>(negate_sine ? -sine : sine)};
+    }
   }
 }
 

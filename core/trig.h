@@ -18,4 +18,8 @@ struct CosSin {
 /// Angles beyond 1e9 rad lose accuracy in the range reduction; non-finite angles give NaN.
 CosSin cos_sin(float angle);
 
+/// `cos_sin` of four angles (radians) at once, bit for bit as four calls give (the same double
+/// operations, lane by lane): `results[i]` for `angles[i]`.
+void cos_sin_4(const float* angles, CosSin* results);
+
 }  // namespace impulse2d

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include "core/math.h"
 #include "core/trig.h"
@@ -75,6 +76,37 @@ TEST(Trig, PinnedBitsOfAFewAngles) {
     std::memcpy(&s, &values.sine, sizeof s);
     EXPECT_EQ(c, each.cosine_bits) << each.angle;
     EXPECT_EQ(s, each.sine_bits) << each.angle;
+  }
+}
+
+TEST(Trig, FourAtOnceGiveTheSameBitsAsOneAtATime) {
+  // Angles on both sides of every quadrant boundary, small and large ones, the edge of the
+  // vector path (2^30) and beyond it, and non-finite ones (each batch of four holding one
+  // outside the vector path goes one lane at a time).
+  std::vector<float> angles = {0.0f, -0.0f, 1e-30f, -1e-30f, 1073741760.0f, -1073741760.0f,
+                               1073741824.0f, 3e9f, 1e20f, -1e30f, INFINITY, -INFINITY, NAN};
+  for (int quadrant = -8; quadrant <= 8; ++quadrant) {
+    const float boundary = static_cast<float>(quadrant * 1.5707963267948966);
+    angles.push_back(std::nextafter(boundary, -INFINITY));
+    angles.push_back(boundary);
+    angles.push_back(std::nextafter(boundary, INFINITY));
+  }
+  std::uint32_t seed = 12345u;
+  for (int i = 0; i < 4000; ++i) {
+    seed = seed * 1664525u + 1013904223u;
+    const float unit = static_cast<float>(seed >> 8) / 16777216.0f;  // [0, 1)
+    const float scale = i % 4 == 0 ? 1e6f : (i % 4 == 1 ? 100.0f : (i % 4 == 2 ? 7.0f : 1.0f));
+    angles.push_back((2.0f * unit - 1.0f) * scale);
+  }
+  while (angles.size() % 4 != 0) angles.push_back(0.25f);
+  for (std::size_t i = 0; i < angles.size(); i += 4) {
+    CosSin four[4];
+    cos_sin_4(&angles[i], four);
+    for (int lane = 0; lane < 4; ++lane) {
+      const CosSin one = cos_sin(angles[i + lane]);
+      EXPECT_EQ(std::memcmp(&four[lane].cosine, &one.cosine, sizeof(float)), 0) << angles[i + lane];
+      EXPECT_EQ(std::memcmp(&four[lane].sine, &one.sine, sizeof(float)), 0) << angles[i + lane];
+    }
   }
 }
 
