@@ -274,9 +274,11 @@ struct BlockState {
   }
 
   // Offset (m) along (direction_x, direction_y) of B's local point from A's, both placed by
-  // the bodies' current poses.
-  Floats offset_along(Floats local_ax, Floats local_ay, Floats local_bx, Floats local_by,
+  // the bodies' current poses; the local points' coordinates are lane arrays of a block.
+  Floats offset_along(const float* ax, const float* ay, const float* bx, const float* by,
                       Floats direction_x, Floats direction_y) const {
+    const Floats local_ax = load_lanes<Floats>(ax), local_ay = load_lanes<Floats>(ay);
+    const Floats local_bx = load_lanes<Floats>(bx), local_by = load_lanes<Floats>(by);
     const Floats world_ax = (a.cosine * local_ax - a.sine * local_ay) + a.position_x;
     const Floats world_ay = (a.sine * local_ax + a.cosine * local_ay) + a.position_y;
     const Floats world_bx = (b.cosine * local_bx - b.sine * local_by) + b.position_x;
@@ -312,30 +314,6 @@ struct SoftnessLanes {
 template <class Floats>
 Floats clamp_lanes(Floats value, Floats low, Floats high) {
   return select_lanes(value < low, low, select_lanes(high < value, high, value));
-}
-
-// Separation (m) of point slot `point`'s surface anchors along the normal, from the bodies'
-// current poses (> 0: apart).
-template <int Lanes>
-typename LaneTypes<Lanes>::Floats separation_of(const BlockState<Lanes>& state,
-                                                const BlockPoint<Lanes>& point) {
-  typedef typename LaneTypes<Lanes>::Floats Floats;
-  return state.offset_along(
-      load_lanes<Floats>(point.surface_ax), load_lanes<Floats>(point.surface_ay),
-      load_lanes<Floats>(point.surface_bx), load_lanes<Floats>(point.surface_by),
-      state.normal_x, state.normal_y);
-}
-
-// Tangential drift (m) of point slot `point` from where it last stuck, from the bodies'
-// current poses.
-template <int Lanes>
-typename LaneTypes<Lanes>::Floats drift_of(const BlockState<Lanes>& state,
-                                           const BlockPoint<Lanes>& point) {
-  typedef typename LaneTypes<Lanes>::Floats Floats;
-  return state.offset_along(
-      load_lanes<Floats>(point.stick_ax), load_lanes<Floats>(point.stick_ay),
-      load_lanes<Floats>(point.stick_bx), load_lanes<Floats>(point.stick_by),
-      state.tangent_x, state.tangent_y) - load_lanes<Floats>(point.stick_offset);
 }
 
 // The soft step's normal constraint of point slot `slot` (0 or 1), whose separation (m) is
@@ -393,8 +371,8 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
 }
 
 // Friction of point slot `slot`: anchored static friction in the biased pass (sticking
-// contacts only; `drift` is the point's, see `drift_of`), Coulomb friction with the contact's
-// current coefficient in the relax pass.
+// contacts only; `drift`: the point's tangential drift (m) from where it stuck), Coulomb
+// friction with the contact's current coefficient in the relax pass.
 template <int Lanes>
 void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
                     typename LaneTypes<Lanes>::Floats drift, ContactBlock<Lanes>& block,
@@ -453,8 +431,15 @@ void solve_blocks(ContactBlock<Lanes>* blocks, std::size_t count, SolverBody* bo
     const bool pulls_back = pass.use_bias && pass.friction;
     typename LaneTypes<Lanes>::Floats separation[2], drift[2] = {};
     for (int slot = 0; slot < 2; ++slot) {
-      separation[slot] = separation_of(state, block.points[slot]);
-      if (pulls_back) drift[slot] = drift_of(state, block.points[slot]);
+      const BlockPoint<Lanes>& point = block.points[slot];
+      // Along the normal between the surface anchors (> 0: apart); along the tangent from
+      // where the point last stuck.
+      separation[slot] = state.offset_along(point.surface_ax, point.surface_ay, point.surface_bx,
+                                            point.surface_by, state.normal_x, state.normal_y);
+      if (!pulls_back) continue;
+      drift[slot] = state.offset_along(point.stick_ax, point.stick_ay, point.stick_bx,
+                                       point.stick_by, state.tangent_x, state.tangent_y) -
+                    load_lanes<typename LaneTypes<Lanes>::Floats>(point.stick_offset);
     }
     const SoftnessLanes<Lanes> softness(state, pass);
     for (int slot = 0; slot < 2; ++slot) {
