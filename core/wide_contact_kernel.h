@@ -320,8 +320,8 @@ Floats clamp_lanes(Floats value, Floats low, Floats high) {
 // `separation`.
 template <int Lanes>
 void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
-                  typename LaneTypes<Lanes>::Floats separation, BlockPoint<Lanes>& point,
-                  const WidePassSettings& pass) {
+                  typename LaneTypes<Lanes>::Floats separation, BlockPointImpulse<Lanes>& point,
+                  const BlockPointSolve<Lanes>& solve, const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
   const Floats zero = {};
@@ -329,7 +329,7 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
   const Masks present = flag_lanes(state.flags, block_point_present << slot);
   const Masks waiting = flag_lanes(state.flags, block_point_waiting << slot);
   const Masks bouncing = flag_lanes(state.flags, block_point_bouncing << slot);
-  const Floats velocity_bias = load_lanes<Floats>(point.velocity_bias);
+  const Floats velocity_bias = load_lanes<Floats>(solve.velocity_bias);
   const Masks apart = separation > zero;
 
   Masks active = present & ~waiting;
@@ -360,7 +360,7 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
   const Floats normal_speed = state.relative_speed(anchor_ax, anchor_ay, anchor_bx, anchor_by,
                                                    state.normal_x, state.normal_y);
   const Floats unclamped = normal_impulse -
-                           load_lanes<Floats>(point.normal_mass) * mass_scale *
+                           load_lanes<Floats>(solve.normal_mass) * mass_scale *
                                (normal_speed - target_speed) -
                            impulse_scale * normal_impulse;
   const Floats accumulated = select_lanes(unclamped < zero, zero, unclamped);
@@ -375,8 +375,8 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
 // friction with the contact's current coefficient in the relax pass.
 template <int Lanes>
 void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
-                    typename LaneTypes<Lanes>::Floats drift, ContactBlock<Lanes>& block,
-                    BlockPoint<Lanes>& point, const WidePassSettings& pass) {
+                    typename LaneTypes<Lanes>::Floats drift, BlockPointImpulse<Lanes>& point,
+                    ContactBlockSolve<Lanes>& solve, const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
   const Floats zero = {};
@@ -389,7 +389,7 @@ void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softne
   const Floats anchor_bx = load_lanes<Floats>(point.anchor_bx);
   const Floats anchor_by = load_lanes<Floats>(point.anchor_by);
   const Floats tangent_impulse = load_lanes<Floats>(point.tangent_impulse);
-  const Floats tangent_mass = load_lanes<Floats>(point.tangent_mass);
+  const Floats tangent_mass = load_lanes<Floats>(solve.points[slot].tangent_mass);
   const Floats normal_impulse = load_lanes<Floats>(point.normal_impulse);
   const Floats tangent_speed = state.relative_speed(anchor_ax, anchor_ay, anchor_bx, anchor_by,
                                                     state.tangent_x, state.tangent_y);
@@ -400,19 +400,19 @@ void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softne
     const Floats target_speed =
         clamp_lanes(-softness.bias_rate * drift, -push_max, push_max);
     unclamped = tangent_impulse - tangent_mass * (tangent_speed - target_speed);
-    limit = load_lanes<Floats>(block.static_friction) * normal_impulse;
+    limit = load_lanes<Floats>(solve.static_friction) * normal_impulse;
   } else {
     unclamped = tangent_impulse - tangent_speed * tangent_mass;
-    const Floats coefficient = select_lanes(sliding, load_lanes<Floats>(block.dynamic_friction),
-                                            load_lanes<Floats>(block.static_friction));
+    const Floats coefficient = select_lanes(sliding, load_lanes<Floats>(solve.dynamic_friction),
+                                            load_lanes<Floats>(solve.static_friction));
     limit = coefficient * normal_impulse;
   }
   const Floats accumulated = clamp_lanes(unclamped, -limit, limit);
   if (!pass.use_bias) {
     const Masks bit = {};
     const Masks at_limit = present & (accumulated != unclamped) & (bit + (1 << slot));
-    const Masks others = load_lanes<Masks>(block.friction_at_limit) & ~(bit + (1 << slot));
-    store_lanes(block.friction_at_limit, others | at_limit);
+    const Masks others = load_lanes<Masks>(solve.friction_at_limit) & ~(bit + (1 << slot));
+    store_lanes(solve.friction_at_limit, others | at_limit);
   }
   const Floats change = select_lanes(active, accumulated - tangent_impulse, zero);
   store_lanes(point.tangent_impulse, select_lanes(active, accumulated, tangent_impulse));
@@ -421,33 +421,37 @@ void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softne
 }
 
 template <int Lanes>
-void solve_blocks(ContactBlock<Lanes>* blocks, std::size_t count, SolverBody* bodies,
+void solve_blocks(const ContactBlockArrays<Lanes>& arrays, SolverBody* bodies,
                   const WidePassSettings& pass) {
-  for (std::size_t i = 0; i < count; ++i) {
-    ContactBlock<Lanes>& block = blocks[i];
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  const bool pulls_back = pass.use_bias && pass.friction;
+  for (std::size_t i = 0; i < arrays.count; ++i) {
+    ContactBlock<Lanes>& block = arrays.blocks[i];
+    ContactBlockSolve<Lanes>& solve = arrays.solves[i];
     BlockState<Lanes> state(block, bodies);
     // The poses stay put through a velocity pass: every offset that reads them is taken first,
     // which frees their eight vector registers before the velocity work.
-    const bool pulls_back = pass.use_bias && pass.friction;
-    typename LaneTypes<Lanes>::Floats separation[2], drift[2] = {};
+    Floats separation[2], drift[2] = {};
     for (int slot = 0; slot < 2; ++slot) {
-      const BlockPoint<Lanes>& point = block.points[slot];
       // Along the normal between the surface anchors (> 0: apart); along the tangent from
-      // where the point last stuck.
+      // where the point last stuck (the sticking anchors are read by the biased pass only).
+      const BlockPointSolve<Lanes>& point = solve.points[slot];
       separation[slot] = state.offset_along(point.surface_ax, point.surface_ay, point.surface_bx,
                                             point.surface_by, state.normal_x, state.normal_y);
       if (!pulls_back) continue;
-      drift[slot] = state.offset_along(point.stick_ax, point.stick_ay, point.stick_bx,
-                                       point.stick_by, state.tangent_x, state.tangent_y) -
-                    load_lanes<typename LaneTypes<Lanes>::Floats>(point.stick_offset);
+      const BlockPointStick<Lanes>& stick = arrays.sticks[i].points[slot];
+      drift[slot] = state.offset_along(stick.stick_ax, stick.stick_ay, stick.stick_bx,
+                                       stick.stick_by, state.tangent_x, state.tangent_y) -
+                    load_lanes<Floats>(stick.stick_offset);
     }
     const SoftnessLanes<Lanes> softness(state, pass);
     for (int slot = 0; slot < 2; ++slot) {
-      solve_normal(state, softness, slot, separation[slot], block.points[slot], pass);
+      solve_normal(state, softness, slot, separation[slot], block.points[slot], solve.points[slot],
+                   pass);
     }
     if (pass.friction) {
       for (int slot = 0; slot < 2; ++slot) {
-        solve_friction(state, softness, slot, drift[slot], block, block.points[slot], pass);
+        solve_friction(state, softness, slot, drift[slot], block.points[slot], solve, pass);
       }
     }
     state.store(block, bodies);
@@ -460,7 +464,7 @@ void warm_start_blocks(const ContactBlock<Lanes>* blocks, std::size_t count, Sol
   for (std::size_t i = 0; i < count; ++i) {
     const ContactBlock<Lanes>& block = blocks[i];
     BlockState<Lanes> state(block, bodies);
-    for (const BlockPoint<Lanes>& point : block.points) {
+    for (const BlockPointImpulse<Lanes>& point : block.points) {
       const Floats normal_impulse = load_lanes<Floats>(point.normal_impulse);
       const Floats tangent_impulse = load_lanes<Floats>(point.tangent_impulse);
       state.apply(load_lanes<Floats>(point.anchor_ax), load_lanes<Floats>(point.anchor_ay),

@@ -4,9 +4,9 @@
 
 namespace impulse2d {
 
-void solve_contact_blocks_4(ContactBlock<4>* blocks, std::size_t count, SolverBody* bodies,
+void solve_contact_blocks_4(const ContactBlockArrays<4>& blocks, SolverBody* bodies,
                             const WidePassSettings& pass) {
-  solve_blocks<4>(blocks, count, bodies, pass);
+  solve_blocks<4>(blocks, bodies, pass);
 }
 
 void warm_start_contact_blocks_4(const ContactBlock<4>* blocks, std::size_t count,

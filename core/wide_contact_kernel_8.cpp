@@ -10,9 +10,9 @@ namespace impulse2d {
 
 bool wide_contact_kernels_8_available() { return __builtin_cpu_supports("avx2"); }
 
-void solve_contact_blocks_8(ContactBlock<8>* blocks, std::size_t count, SolverBody* bodies,
+void solve_contact_blocks_8(const ContactBlockArrays<8>& blocks, SolverBody* bodies,
                             const WidePassSettings& pass) {
-  solve_blocks<8>(blocks, count, bodies, pass);
+  solve_blocks<8>(blocks, bodies, pass);
 }
 
 void warm_start_contact_blocks_8(const ContactBlock<8>* blocks, std::size_t count,

@@ -12,7 +12,7 @@
 namespace impulse2d {
 
 /// One pass (soft or relax, per `pass`) over `count` 4-lane blocks, in order.
-void solve_contact_blocks_4(ContactBlock<4>* blocks, std::size_t count, SolverBody* bodies,
+void solve_contact_blocks_4(const ContactBlockArrays<4>& blocks, SolverBody* bodies,
                             const WidePassSettings& pass);
 /// Applies the blocks' accumulated impulses to their bodies (warm starting), 4 lanes.
 void warm_start_contact_blocks_4(const ContactBlock<4>* blocks, std::size_t count,
@@ -22,7 +22,7 @@ void warm_start_contact_blocks_4(const ContactBlock<4>* blocks, std::size_t coun
 /// True when this CPU runs the 8-lane kernels (AVX2).
 bool wide_contact_kernels_8_available();
 /// One pass over `count` 8-lane blocks; only when `wide_contact_kernels_8_available()`.
-void solve_contact_blocks_8(ContactBlock<8>* blocks, std::size_t count, SolverBody* bodies,
+void solve_contact_blocks_8(const ContactBlockArrays<8>& blocks, SolverBody* bodies,
                             const WidePassSettings& pass);
 /// Warm starting over 8-lane blocks; only when `wide_contact_kernels_8_available()`.
 void warm_start_contact_blocks_8(const ContactBlock<8>* blocks, std::size_t count,

@@ -4,7 +4,6 @@
 #include "core/contact_solver_internal.h"
 #include "core/wide_contact_kernels.h"
 
-
 namespace impulse2d {
 
 namespace {
@@ -24,69 +23,74 @@ void prefetch_contact(const Contact& contact) {
   }
 }
 
-// Calls visit(block, point slot index, lane, contact point) for every used point of every
-// lane; `contact_index` holds the blocks' contact indices, Lanes per block (-1: unused lane).
-template <int Lanes, class Blocks, class Contacts, class Visit>
-void for_each_point(Blocks& blocks, const std::vector<std::int32_t>& contact_index,
+// Calls visit(block, its solve part, point slot index, lane, contact point) for every used
+// point of every lane of the blocks in `packed` (a `BlockStorage`); `contact_index` holds the
+// blocks' contact indices, lanes per block (-1: unused lane).
+template <class Storage, class Contacts, class Visit>
+void for_each_point(Storage& packed, const std::vector<std::int32_t>& contact_index,
                     Contacts& contacts, Visit visit) {
+  constexpr int Lanes = Storage::lanes;
+  const std::size_t block_count = packed.blocks.size();
   const std::size_t ahead = prefetch_distance / Lanes + 1;  // blocks
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    if (b + ahead < blocks.size()) {
+  for (std::size_t b = 0; b < block_count; ++b) {
+    if (b + ahead < block_count) {
       for (int lane = 0; lane < Lanes; ++lane) {
         const std::int32_t index = contact_index[(b + ahead) * Lanes + lane];
         if (index >= 0) prefetch_contact(contacts[static_cast<std::size_t>(index)]);
       }
     }
-    auto& block = blocks[b];
     for (int lane = 0; lane < Lanes; ++lane) {
       const std::int32_t index = contact_index[b * Lanes + lane];
       if (index < 0) continue;
       auto& contact = contacts[static_cast<std::size_t>(index)];
-      for (int i = 0; i < contact.point_count; ++i) visit(block, i, lane, contact.points[i]);
+      for (int i = 0; i < contact.point_count; ++i) {
+        visit(packed.blocks[b], packed.solves[b], i, lane, contact.points[i]);
+      }
     }
   }
 }
 
-// Point slot of lane `lane` left without a point: nothing to solve, no impulse to apply.
+// Point slot `slot` of lane `lane` left without a point: nothing to solve, no impulse to apply.
 template <int Lanes>
-void clear_point(BlockPoint<Lanes>& slot, int lane) {
-  slot.normal_mass[lane] = 0.0f;
-  slot.tangent_mass[lane] = 0.0f;
-  slot.normal_impulse[lane] = 0.0f;
-  slot.tangent_impulse[lane] = 0.0f;
+void clear_point(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot, int lane) {
+  solve.points[slot].normal_mass[lane] = 0.0f;
+  solve.points[slot].tangent_mass[lane] = 0.0f;
+  block.points[slot].normal_impulse[lane] = 0.0f;
+  block.points[slot].tangent_impulse[lane] = 0.0f;
 }
 
 // An unused lane: no contact, no points, body slot 0 (never written: it moves nothing).
 template <int Lanes>
-void clear_lane(ContactBlock<Lanes>& block, int lane) {
+void clear_lane(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int lane) {
   block.body_a[lane] = 0;
   block.body_b[lane] = 0;
   block.flags[lane] = 0;
-  block.friction_at_limit[lane] = 0;
+  solve.friction_at_limit[lane] = 0;
   block.inverse_mass_a[lane] = 0.0f;
   block.inverse_mass_b[lane] = 0.0f;
   block.inverse_inertia_a[lane] = 0.0f;
   block.inverse_inertia_b[lane] = 0.0f;
-  for (BlockPoint<Lanes>& slot : block.points) clear_point(slot, lane);
+  for (int slot = 0; slot < max_manifold_points; ++slot) clear_point(block, solve, slot, lane);
 }
 
 // What the bounce stages may change in point slot `slot`: its accumulated impulses and bounce
 // plan.
 template <int Lanes>
-void load_point_state(ContactBlock<Lanes>& block, int slot, int lane, const ContactPoint& point) {
-  BlockPoint<Lanes>& target = block.points[slot];
-  target.normal_impulse[lane] = point.normal_impulse;
-  target.tangent_impulse[lane] = point.tangent_impulse;
-  target.velocity_bias[lane] = point.velocity_bias;
+void load_point_state(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot,
+                      int lane, const ContactPoint& point) {
+  block.points[slot].normal_impulse[lane] = point.normal_impulse;
+  block.points[slot].tangent_impulse[lane] = point.tangent_impulse;
+  solve.points[slot].velocity_bias[lane] = point.velocity_bias;
   const std::int32_t waiting = block_point_waiting << slot;
   const std::int32_t bouncing = block_point_bouncing << slot;
   block.flags[lane] = (block.flags[lane] & ~(waiting | bouncing)) | (point.waiting ? waiting : 0) |
                       (point.bouncing ? bouncing : 0);
 }
 
-// One contact into lane `lane` of a block.
+// One contact into lane `lane` of a block's three parts.
 template <int Lanes>
-void pack_contact(const Contact& contact, ContactBlock<Lanes>& block, int lane) {
+void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
+                  ContactBlockSolve<Lanes>& solve, ContactBlockStick<Lanes>& stick, int lane) {
   const PairMass& mass = contact.mass;
   const bool against_fixed = mass.inverse_mass_a == 0.0f || mass.inverse_mass_b == 0.0f;
   block.body_a[lane] = static_cast<std::int32_t>(contact.body_a.index);
@@ -97,37 +101,39 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block, int lane) 
   if (contact.sliding) flags |= block_sliding;
   if (against_fixed) flags |= block_against_fixed;
   block.flags[lane] = flags;
-  block.friction_at_limit[lane] = 0;
   block.normal_x[lane] = contact.normal.x;
   block.normal_y[lane] = contact.normal.y;
   block.inverse_mass_a[lane] = mass.inverse_mass_a;
   block.inverse_mass_b[lane] = mass.inverse_mass_b;
   block.inverse_inertia_a[lane] = mass.inverse_inertia_a;
   block.inverse_inertia_b[lane] = mass.inverse_inertia_b;
-  block.static_friction[lane] = contact.static_friction;
-  block.dynamic_friction[lane] = contact.dynamic_friction;
+  solve.friction_at_limit[lane] = 0;
+  solve.static_friction[lane] = contact.static_friction;
+  solve.dynamic_friction[lane] = contact.dynamic_friction;
   for (int i = 0; i < contact.point_count; ++i) {
     const ContactPoint& point = contact.points[i];
-    BlockPoint<Lanes>& slot = block.points[i];
-    slot.anchor_ax[lane] = point.anchor_a.x;
-    slot.anchor_ay[lane] = point.anchor_a.y;
-    slot.anchor_bx[lane] = point.anchor_b.x;
-    slot.anchor_by[lane] = point.anchor_b.y;
-    slot.surface_ax[lane] = point.local_anchor_a.x;
-    slot.surface_ay[lane] = point.local_anchor_a.y;
-    slot.surface_bx[lane] = point.local_anchor_b.x;
-    slot.surface_by[lane] = point.local_anchor_b.y;
-    slot.stick_ax[lane] = point.recycle_anchor_a.x;
-    slot.stick_ay[lane] = point.recycle_anchor_a.y;
-    slot.stick_bx[lane] = point.recycle_anchor_b.x;
-    slot.stick_by[lane] = point.recycle_anchor_b.y;
-    slot.stick_offset[lane] = point.stick_offset;
-    slot.normal_mass[lane] = point.normal_mass;
-    slot.tangent_mass[lane] = point.tangent_mass;
+    BlockPointImpulse<Lanes>& impulse = block.points[i];
+    impulse.anchor_ax[lane] = point.anchor_a.x;
+    impulse.anchor_ay[lane] = point.anchor_a.y;
+    impulse.anchor_bx[lane] = point.anchor_b.x;
+    impulse.anchor_by[lane] = point.anchor_b.y;
+    BlockPointSolve<Lanes>& solved = solve.points[i];
+    solved.surface_ax[lane] = point.local_anchor_a.x;
+    solved.surface_ay[lane] = point.local_anchor_a.y;
+    solved.surface_bx[lane] = point.local_anchor_b.x;
+    solved.surface_by[lane] = point.local_anchor_b.y;
+    solved.normal_mass[lane] = point.normal_mass;
+    solved.tangent_mass[lane] = point.tangent_mass;
+    BlockPointStick<Lanes>& stuck = stick.points[i];
+    stuck.stick_ax[lane] = point.recycle_anchor_a.x;
+    stuck.stick_ay[lane] = point.recycle_anchor_a.y;
+    stuck.stick_bx[lane] = point.recycle_anchor_b.x;
+    stuck.stick_by[lane] = point.recycle_anchor_b.y;
+    stuck.stick_offset[lane] = point.stick_offset;
     block.flags[lane] |= block_point_present << i;
-    load_point_state(block, i, lane, point);
+    load_point_state(block, solve, i, lane, point);
   }
-  for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block.points[i], lane);
+  for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block, solve, i, lane);
 }
 
 }  // namespace
@@ -140,13 +146,13 @@ int WideContactSolver::widest_lanes() {
 }
 
 template <>
-std::vector<ContactBlock<4>>& WideContactSolver::blocks<4>() {
-  return blocks_4_;
+WideContactSolver::BlockStorage<4>& WideContactSolver::storage<4>() {
+  return storage_4_;
 }
 
 template <>
-std::vector<ContactBlock<8>>& WideContactSolver::blocks<8>() {
-  return blocks_8_;
+WideContactSolver::BlockStorage<8>& WideContactSolver::storage<8>() {
+  return storage_8_;
 }
 
 template <int Lanes>
@@ -159,8 +165,11 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
     const std::size_t size = colouring_.range_start(colour + 1) - colouring_.range_start(colour);
     block_count += (size + Lanes - 1) / Lanes;
   }
-  std::vector<ContactBlock<Lanes>>& packed = blocks<Lanes>();
-  packed.resize(block_count);  // every lane is written below: packed or cleared
+  BlockStorage<Lanes>& packed = storage<Lanes>();
+  // Every lane is written below: packed or cleared.
+  packed.blocks.resize(block_count);
+  packed.solves.resize(block_count);
+  packed.sticks.resize(block_count);
   contact_index_.assign(block_count * Lanes, -1);
   const std::vector<std::uint32_t>& order = colouring_.order();
   std::size_t block = 0;
@@ -171,15 +180,19 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
       if (k + prefetch_distance < order.size()) prefetch_contact(contacts[order[k + prefetch_distance]]);
       const Contact& contact = contacts[order[k]];
       has_elastic_contacts_ = has_elastic_contacts_ || contact.restitution > 0.0f;
-      pack_contact(contact, packed[block], lane);
+      pack_contact(contact, packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
       contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(order[k]);
       if (++lane < per_block) continue;
-      for (int unused = lane; unused < Lanes; ++unused) clear_lane(packed[block], unused);
+      for (int unused = lane; unused < Lanes; ++unused) {
+        clear_lane(packed.blocks[block], packed.solves[block], unused);
+      }
       lane = 0;
       ++block;
     }
     if (lane == 0) continue;
-    for (int unused = lane; unused < Lanes; ++unused) clear_lane(packed[block], unused);
+    for (int unused = lane; unused < Lanes; ++unused) {
+      clear_lane(packed.blocks[block], packed.solves[block], unused);
+    }
     ++block;
   }
 }
@@ -207,37 +220,37 @@ void WideContactSolver::begin_step(std::vector<Contact>& contacts, const std::ve
 }
 
 void WideContactSolver::load_points(const std::vector<Contact>& contacts) {
-  auto load = [](auto& block, int slot, int lane, const ContactPoint& point) {
-    load_point_state(block, slot, lane, point);
+  auto load = [](auto& block, auto& solve, int slot, int lane, const ContactPoint& point) {
+    load_point_state(block, solve, slot, lane, point);
   };
   if (lanes_ == 8) {
-    for_each_point<8>(blocks_8_, contact_index_, contacts, load);
+    for_each_point(storage_8_, contact_index_, contacts, load);
   } else {
-    for_each_point<4>(blocks_4_, contact_index_, contacts, load);
+    for_each_point(storage_4_, contact_index_, contacts, load);
   }
 }
 
 void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
-  auto store = [](const auto& block, int slot, int lane, ContactPoint& point) {
+  auto store = [](const auto& block, const auto& solve, int slot, int lane, ContactPoint& point) {
     point.normal_impulse = block.points[slot].normal_impulse[lane];
     point.tangent_impulse = block.points[slot].tangent_impulse[lane];
-    point.friction_at_limit = (block.friction_at_limit[lane] & (1 << slot)) != 0;
+    point.friction_at_limit = (solve.friction_at_limit[lane] & (1 << slot)) != 0;
   };
   if (lanes_ == 8) {
-    for_each_point<8>(blocks_8_, contact_index_, contacts, store);
+    for_each_point(storage_8_, contact_index_, contacts, store);
   } else {
-    for_each_point<4>(blocks_4_, contact_index_, contacts, store);
+    for_each_point(storage_4_, contact_index_, contacts, store);
   }
 }
 
 void WideContactSolver::warm_start(SolverBody* bodies) {
 #if defined(__x86_64__)
   if (lanes_ == 8) {
-    warm_start_contact_blocks_8(blocks_8_.data(), blocks_8_.size(), bodies);
+    warm_start_contact_blocks_8(storage_8_.blocks.data(), storage_8_.blocks.size(), bodies);
     return;
   }
 #endif
-  warm_start_contact_blocks_4(blocks_4_.data(), blocks_4_.size(), bodies);
+  warm_start_contact_blocks_4(storage_4_.blocks.data(), storage_4_.blocks.size(), bodies);
 }
 
 void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies) {
@@ -250,11 +263,11 @@ void WideContactSolver::solve(const SolverContext& context, bool use_bias, Solve
   pass.friction = context.friction;
 #if defined(__x86_64__)
   if (lanes_ == 8) {
-    solve_contact_blocks_8(blocks_8_.data(), blocks_8_.size(), bodies, pass);
+    solve_contact_blocks_8(storage_8_.arrays(), bodies, pass);
     return;
   }
 #endif
-  solve_contact_blocks_4(blocks_4_.data(), blocks_4_.size(), bodies, pass);
+  solve_contact_blocks_4(storage_4_.arrays(), bodies, pass);
 }
 
 }  // namespace impulse2d

@@ -51,16 +51,29 @@ class WideContactSolver {
   int colour_count() const { return colouring_.colour_count(); }
 
  private:
+  /// A step's blocks of `Lanes` lanes, in their three parts (`contact_block.h`).
   template <int Lanes>
-  std::vector<ContactBlock<Lanes>>& blocks();
+  struct BlockStorage {
+    static constexpr int lanes = Lanes;  ///< contacts side by side
+    std::vector<ContactBlock<Lanes>> blocks;       ///< read by every pass
+    std::vector<ContactBlockSolve<Lanes>> solves;  ///< read by both solve passes
+    std::vector<ContactBlockStick<Lanes>> sticks;  ///< read by the biased pass
+    /// The three arrays as the kernels take them.
+    ContactBlockArrays<Lanes> arrays() {
+      return {blocks.data(), solves.data(), sticks.data(), blocks.size()};
+    }
+  };
+
+  template <int Lanes>
+  BlockStorage<Lanes>& storage();
   template <int Lanes>
   void pack(const std::vector<Contact>& contacts);
 
   int lanes_ = 4;
   bool has_elastic_contacts_ = false;
   ContactColouring colouring_;
-  std::vector<ContactBlock<4>> blocks_4_;
-  std::vector<ContactBlock<8>> blocks_8_;
+  BlockStorage<4> storage_4_;
+  BlockStorage<8> storage_8_;
   /// Per lane of the blocks, in order: the index of its contact in the list, -1 when unused.
   std::vector<std::int32_t> contact_index_;
 };
