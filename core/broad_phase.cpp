@@ -100,6 +100,7 @@ void BroadPhase::add_body(std::uint32_t slot, BodyType type, const Aabb& bounds)
   proxies_[slot] = Proxy{};
   proxies_[slot].type = type;
   proxies_[slot].moved = queued;
+  mark_changed(slot);
   cover(slot, bounds);
 }
 
@@ -109,6 +110,7 @@ void BroadPhase::remove_body(std::uint32_t slot) {
     trees_[static_cast<std::size_t>(proxy.type)].destroy_proxy(proxy.node);
     proxy.node = DynamicTree::null_node;
   }
+  mark_changed(slot);
   leave_unbounded(slot);
 }
 
@@ -117,6 +119,7 @@ void BroadPhase::cover(std::uint32_t slot, const Aabb& bounds) {
   DynamicTree& tree = trees_[static_cast<std::size_t>(proxy.type)];
   // The common case first: bounds still inside the (finite) fat box are finite themselves.
   if (proxy.node != DynamicTree::null_node && contains(tree.box(proxy.node), bounds)) return;
+  mark_changed(slot);
   if (!is_finite_box(bounds)) {
     if (proxy.node != DynamicTree::null_node) tree.destroy_proxy(proxy.node);
     proxy.node = DynamicTree::null_node;
@@ -181,13 +184,16 @@ void BroadPhase::find_tree_pairs(const std::vector<Body>& bodies,
   std::size_t fresh = 0;
   while (kept < tree_pairs_.size() || fresh < found_.size()) {
     BodyPair pair;
+    bool unchanged = false;  // a kept pair whose proxies did not change: its fat boxes overlap
     if (fresh == found_.size() || (kept < tree_pairs_.size() && tree_pairs_[kept] < found_[fresh])) {
       pair = tree_pairs_[kept++];
+      unchanged = proxies_[pair.first].changed_epoch != pairing_epoch_ &&
+                  proxies_[pair.second].changed_epoch != pairing_epoch_;
     } else {
       pair = found_[fresh++];
       if (kept < tree_pairs_.size() && tree_pairs_[kept] == pair) ++kept;
     }
-    if (!fat_boxes_overlap(pair)) continue;
+    if (!unchanged && !fat_boxes_overlap(pair)) continue;
     merged_.push_back(pair);
     if (bounds[pair.first].overlaps(bounds[pair.second]) &&
         bodies_can_collide(bodies[pair.first], bodies[pair.second])) {
@@ -195,6 +201,7 @@ void BroadPhase::find_tree_pairs(const std::vector<Body>& bodies,
     }
   }
   std::swap(tree_pairs_, merged_);
+  ++pairing_epoch_;
 
   // Slots whose bounds are not finite are in no tree: test them against every living slot
   // exactly as brute force does.

@@ -66,6 +66,9 @@ class BroadPhase {
     BodyType type = BodyType::Static;            ///< which tree
     bool unbounded = false;  ///< bounds were not finite: in `unbounded_`, not in a tree
     bool moved = false;      ///< queued in `moved_`
+    /// `pairing_epoch_` when the proxy last changed (made, moved, removed): a kept pair of two
+    /// proxies that did not change since the last pairing still overlaps.
+    std::uint32_t changed_epoch = 0;
   };
   /// A living slot's bounds, copied so that the sweep reads one contiguous array.
   struct SweepEntry {
@@ -74,6 +77,7 @@ class BroadPhase {
   };
 
   void mark_moved(std::uint32_t slot);
+  void mark_changed(std::uint32_t slot) { proxies_[slot].changed_epoch = pairing_epoch_; }
   void leave_unbounded(std::uint32_t slot);
   void find_tree_pairs(const std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
                        const std::vector<Aabb>& bounds, std::vector<BodyPair>& pairs);
@@ -87,6 +91,7 @@ class BroadPhase {
   std::vector<BodyPair> found_;             // new pairs of moved proxies (reused)
   std::vector<BodyPair> merged_;            // next tree_pairs_ (reused)
   std::vector<SweepEntry> sorted_;          // living slots ordered by (bounds.lower.x, slot)
+  std::uint32_t pairing_epoch_ = 0;         // tree pairings done (wraps; see Proxy)
 };
 
 }  // namespace impulse2d

@@ -11,16 +11,6 @@ namespace {
 // (Box2D v3's 0.98: about 11.5 degrees).
 constexpr float min_turn_cosine = 0.98f;
 
-// Farthest distance (m) of the shape's surface from the body's centre.
-float shape_extent(const Shape& shape) {
-  switch (shape.type) {
-    case ShapeType::Circle: return shape.circle.radius;
-    case ShapeType::Box: return std::sqrt(length_squared(shape.box.half_extents));
-    case ShapeType::Polygon: return polygon_radius(shape.polygon);
-  }
-  return 0.0f;
-}
-
 // Where the bodies stand now: B's centre in A's frame and both rotations.
 ManifoldPose pose_of(const Body& a, const Body& b) {
   const Rotation& qa = a.transform.rotation;
@@ -83,8 +73,8 @@ bool may_recycle(const Body& a, const Body& b, const Contact& contact, float rec
   // shapes' extents need not be looked up).
   if (!(moved < tolerance)) return false;
   const float turned = std::fabs(sine_between(relative_rotation(now), relative_rotation(then)));
-  const float extent_a = a.type == BodyType::Static ? 0.0f : shape_extent(a.shape);
-  const float extent_b = b.type == BodyType::Static ? 0.0f : shape_extent(b.shape);
+  const float extent_a = a.type == BodyType::Static ? 0.0f : a.extent;
+  const float extent_b = b.type == BodyType::Static ? 0.0f : b.extent;
   return moved + std::max(extent_a, extent_b) * turned < tolerance;
 }
 

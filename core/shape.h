@@ -6,6 +6,7 @@
 #include "core/math.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace impulse2d {
@@ -73,6 +74,16 @@ float farthest_vertex_distance(const Polygon& polygon);
 /// `polygon.radius` when known, else computed from the vertices.
 inline float polygon_radius(const Polygon& polygon) {
   return polygon.radius >= 0.0f ? polygon.radius : farthest_vertex_distance(polygon);
+}
+
+/// Farthest distance (m) of the shape's surface from its centre (the body's centre of mass).
+inline float shape_extent(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::Circle: return shape.circle.radius;
+    case ShapeType::Box: return std::sqrt(length_squared(shape.box.half_extents));
+    case ShapeType::Polygon: return polygon_radius(shape.polygon);
+  }
+  return 0.0f;
 }
 
 /// A rectangle that rotates with its body: a 4-vertex polygon of the given half extents.

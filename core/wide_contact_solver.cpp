@@ -4,6 +4,8 @@
 #include "core/contact_solver_internal.h"
 #include "core/wide_contact_kernels.h"
 
+#include <cstddef>
+
 namespace impulse2d {
 
 namespace {
@@ -15,13 +17,19 @@ static_assert(max_manifold_points == 2, "ContactBlock has two point slots per la
 // hint every ~300-byte contact is a run of cache misses.
 constexpr std::size_t prefetch_distance = 8;
 
-// Asks the cache for the whole of `contact` (no effect on results).
-void prefetch_contact(const Contact& contact) {
+// Asks the cache for bytes [begin, end) of `contact` (no effect on results).
+void prefetch_contact(const Contact& contact, std::size_t begin = 0,
+                      std::size_t end = sizeof(Contact)) {
   const char* bytes = reinterpret_cast<const char*>(&contact);
-  for (std::size_t offset = 0; offset < sizeof(Contact); offset += 64) {
-    __builtin_prefetch(bytes + offset);
-  }
+  for (std::size_t offset = begin; offset < end; offset += 64) __builtin_prefetch(bytes + offset);
+  __builtin_prefetch(bytes + end - 1);
 }
+
+// The bytes of a contact that writing impulses back and reading bounce plans touch: its
+// points' solver state and the point count (the rest of its ~300 bytes need not be fetched).
+constexpr std::size_t point_state_begin = offsetof(Contact, points) +
+                                          offsetof(ContactPoint, normal_impulse);
+constexpr std::size_t point_state_end = offsetof(Contact, point_count) + sizeof(int);
 
 // Calls visit(block, its solve part, point slot index, lane, contact point) for every used
 // point of every lane of the blocks in `packed` (a `BlockStorage`); `contact_index` holds the
@@ -36,7 +44,10 @@ void for_each_point(Storage& packed, const std::vector<std::int32_t>& contact_in
     if (b + ahead < block_count) {
       for (int lane = 0; lane < Lanes; ++lane) {
         const std::int32_t index = contact_index[(b + ahead) * Lanes + lane];
-        if (index >= 0) prefetch_contact(contacts[static_cast<std::size_t>(index)]);
+        if (index >= 0) {
+          prefetch_contact(contacts[static_cast<std::size_t>(index)], point_state_begin,
+                           point_state_end);
+        }
       }
     }
     for (int lane = 0; lane < Lanes; ++lane) {

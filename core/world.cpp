@@ -123,6 +123,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
     // leave a stale cached radius.
     body.shape.polygon.radius = farthest_vertex_distance(shape.polygon);
   }
+  body.extent = shape_extent(body.shape);
   body.material = def.material;
   const bool rotates = shape.type != ShapeType::Box && !def.fixed_rotation;
   body.angle = rotates ? def.angle : 0.0f;
