@@ -98,6 +98,14 @@ void load_point_state(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solv
                       (point.bouncing ? bouncing : 0);
 }
 
+// A's point `on_a` and B's point `on_b` into lane `lane` of four lane arrays (x and y of each).
+void set_lane_points(float* ax, float* ay, float* bx, float* by, int lane, vec2 on_a, vec2 on_b) {
+  ax[lane] = on_a.x;
+  ay[lane] = on_a.y;
+  bx[lane] = on_b.x;
+  by[lane] = on_b.y;
+}
+
 // One contact into lane `lane` of a block's three parts.
 template <int Lanes>
 void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
@@ -124,22 +132,16 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
   for (int i = 0; i < contact.point_count; ++i) {
     const ContactPoint& point = contact.points[i];
     BlockPointImpulse<Lanes>& impulse = block.points[i];
-    impulse.anchor_ax[lane] = point.anchor_a.x;
-    impulse.anchor_ay[lane] = point.anchor_a.y;
-    impulse.anchor_bx[lane] = point.anchor_b.x;
-    impulse.anchor_by[lane] = point.anchor_b.y;
+    set_lane_points(impulse.anchor_ax, impulse.anchor_ay, impulse.anchor_bx, impulse.anchor_by,
+                    lane, point.anchor_a, point.anchor_b);
     BlockPointSolve<Lanes>& solved = solve.points[i];
-    solved.surface_ax[lane] = point.local_anchor_a.x;
-    solved.surface_ay[lane] = point.local_anchor_a.y;
-    solved.surface_bx[lane] = point.local_anchor_b.x;
-    solved.surface_by[lane] = point.local_anchor_b.y;
+    set_lane_points(solved.surface_ax, solved.surface_ay, solved.surface_bx, solved.surface_by,
+                    lane, point.local_anchor_a, point.local_anchor_b);
     solved.normal_mass[lane] = point.normal_mass;
     solved.tangent_mass[lane] = point.tangent_mass;
     BlockPointStick<Lanes>& stuck = stick.points[i];
-    stuck.stick_ax[lane] = point.recycle_anchor_a.x;
-    stuck.stick_ay[lane] = point.recycle_anchor_a.y;
-    stuck.stick_bx[lane] = point.recycle_anchor_b.x;
-    stuck.stick_by[lane] = point.recycle_anchor_b.y;
+    set_lane_points(stuck.stick_ax, stuck.stick_ay, stuck.stick_bx, stuck.stick_by, lane,
+                    point.recycle_anchor_a, point.recycle_anchor_b);
     stuck.stick_offset[lane] = point.stick_offset;
     block.flags[lane] |= block_point_present << i;
     load_point_state(block, solve, i, lane, point);
