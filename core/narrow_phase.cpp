@@ -125,7 +125,6 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       const std::size_t old_index = read;
       Contact& contact = place(/*replaces_old=*/true);
       if (&contact != &old_at(old_index)) contact = old_at(old_index);
-      if (spilled) ++read;
       recycle_manifold(a, b, contact);
       contact.recycled = true;
       forget_bounced_impulses(contact);

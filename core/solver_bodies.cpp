@@ -1,8 +1,7 @@
 #include "core/solver_bodies.h"
 
-#include "core/trig.h"
-
 #include "core/integrate.h"
+#include "core/trig.h"
 
 namespace impulse2d {
 

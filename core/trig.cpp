@@ -44,17 +44,15 @@ Real cosine_polynomial(Real r) {
   return 1.0 + r2 * sum;
 }
 
-typedef double Doubles2 __attribute__((vector_size(16)));  // one SSE2 register
-typedef std::int64_t Int64s2 __attribute__((vector_size(16)));
-
 // `value` rounded to the nearest integer, ties to even: std::nearbyint in the default rounding
 // mode (the only one the engine runs in), without its library call. Below 2^51 in magnitude,
 // adding and subtracting 1.5 * 2^52 leaves exactly the rounded value (the sum's last bit is
 // worth 1); larger doubles are integers already.
+constexpr double kShifter = 6755399441055744.0;  // 1.5 * 2^52
+
 double nearest_integer(double value) {
-  constexpr double shifter = 6755399441055744.0;  // 1.5 * 2^52
   if (!(std::fabs(value) < 2251799813685248.0)) return std::nearbyint(value);  // 2^51
-  return (value + shifter) - shifter;
+  return (value + kShifter) - kShifter;
 }
 
 // The quadrant (an integer-valued double) modulo 4, in 0..3: its low two bits in two's
@@ -66,6 +64,23 @@ long long quadrant_mod_4(double quadrant) {
   }
   return static_cast<long long>(std::fmod(quadrant, 4.0)) & 3;
 }
+
+// cos and sin of r + q pi/2 from c = cos r and s = sin r, q in 0..3.
+CosSin in_quadrant(double c, double s, long long q) {
+  switch (q) {
+    case 0:
+      return {static_cast<float>(c), static_cast<float>(s)};
+    case 1:
+      return {static_cast<float>(-s), static_cast<float>(c)};
+    case 2:
+      return {static_cast<float>(-c), static_cast<float>(-s)};
+    default:
+      return {static_cast<float>(s), static_cast<float>(-c)};
+  }
+}
+
+typedef double Doubles2 __attribute__((vector_size(16)));  // one SSE2 register
+typedef std::int64_t Int64s2 __attribute__((vector_size(16)));
 
 }  // namespace
 
@@ -79,17 +94,7 @@ CosSin cos_sin(float angle) {
   const double r = (x - quadrant * kHalfPiHigh) - quadrant * kHalfPiLow;
   const double s = sine_polynomial(r);
   const double c = cosine_polynomial(r);
-  const long long q = quadrant_mod_4(quadrant);
-  switch (q) {
-    case 0:
-      return {static_cast<float>(c), static_cast<float>(s)};
-    case 1:
-      return {static_cast<float>(-s), static_cast<float>(c)};
-    case 2:
-      return {static_cast<float>(-c), static_cast<float>(-s)};
-    default:
-      return {static_cast<float>(s), static_cast<float>(-c)};
-  }
+  return in_quadrant(c, s, quadrant_mod_4(quadrant));
 }
 
 void cos_sin_4(const float* angles, CosSin* results) {
@@ -107,21 +112,13 @@ void cos_sin_4(const float* angles, CosSin* results) {
   }
   for (int half = 0; half < 4; half += 2) {
     const Doubles2 x = {angles[half], angles[half + 1]};
-    constexpr double shifter = 6755399441055744.0;  // 1.5 * 2^52: see nearest_integer
-    const Doubles2 quadrant = (x * kTwoOverPi + shifter) - shifter;
+    const Doubles2 quadrant = (x * kTwoOverPi + kShifter) - kShifter;  // nearest_integer's
     const Doubles2 r = (x - quadrant * kHalfPiHigh) - quadrant * kHalfPiLow;
     const Doubles2 s = sine_polynomial(r);
     const Doubles2 c = cosine_polynomial(r);
     const Int64s2 q = __builtin_convertvector(quadrant, Int64s2) & 3;
     for (int lane = 0; lane < 2; ++lane) {
-      // The quadrant's turn, as cos_sin's switch: (c, s), (-s, c), (-c, -s), (s, -c).
-      const bool swap = (q[lane] & 1) != 0;
-      const double cosine = swap ? s[lane] : c[lane];
-      const double sine = swap ? c[lane] : s[lane];
-      const bool negate_cosine = ((q[lane] + 1) & 2) != 0;
-      const bool negate_sine = (q[lane] & 2) != 0;
-      results[half + lane] = {static_cast<float>(negate_cosine ? -cosine : cosine),
-                              static_cast<float>(negate_sine ? -sine : sine)};
+      results[half + lane] = in_quadrant(c[lane], s[lane], q[lane]);
     }
   }
 }

@@ -409,9 +409,9 @@ void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softne
   }
   const Floats accumulated = clamp_lanes(unclamped, -limit, limit);
   if (!pass.use_bias) {
-    const Masks bit = {};
-    const Masks at_limit = present & (accumulated != unclamped) & (bit + (1 << slot));
-    const Masks others = load_lanes<Masks>(solve.friction_at_limit) & ~(bit + (1 << slot));
+    const Masks slot_bit = Masks{} + (1 << slot);
+    const Masks at_limit = present & (accumulated != unclamped) & slot_bit;
+    const Masks others = load_lanes<Masks>(solve.friction_at_limit) & ~slot_bit;
     store_lanes(solve.friction_at_limit, others | at_limit);
   }
   const Floats change = select_lanes(active, accumulated - tangent_impulse, zero);
