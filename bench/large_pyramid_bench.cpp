@@ -9,8 +9,10 @@
 //   over    - how many boxes moved sideways more than 0.1 m
 //   turn    - the largest turn of any box (degrees; at most 5)
 // Box2D v3 is not in Debian; README "Measured figures: physics" quotes it built from source
-// beside this program. Usage: bench_large_pyramid [--rows R] [--steps N] [--check]
-// --check runs the soft step alone and exits 1 unless it stands (a ctest in optimised builds).
+// beside this program. Usage: bench_large_pyramid [--rows R] [--steps N] [--lanes 4|8] [--check]
+// --check runs the soft step alone and exits 1 unless it stands (a ctest in optimised builds);
+// --lanes picks the soft step's contact block width (default: the widest this CPU runs).
+#include "core/wide_contact_solver.h"
 #include "core/world.h"
 
 #include <algorithm>
@@ -30,13 +32,14 @@ struct Method {
   WorldSettings settings;
 };
 
-std::vector<Method> methods() {
+std::vector<Method> methods(int lanes) {
   WorldSettings base;
   base.gravity = {0.0f, -10.0f};
   WorldSettings soft = base;
   soft.solver = SolverMethod::SoftStep;
   soft.substeps = 4;
   soft.velocity_iterations = 1;
+  soft.solver_lanes = lanes;
   return {{"default (accumulated, 16 iterations)", base},
           {"soft step, 4 substeps x 1 + 1 relax", soft}};
 }
@@ -94,7 +97,7 @@ Outcome run(const WorldSettings& settings, int rows, int steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int rows = 100, steps = 500;
+  int rows = 100, steps = 500, lanes = 0;
   bool check = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -107,8 +110,19 @@ int main(int argc, char** argv) {
         return 2;
       }
       (arg == "--rows" ? rows : steps) = value;
+    } else if (arg == "--lanes" && i + 1 < argc) {
+      lanes = std::atoi(argv[++i]);
+      if (lanes != 4 && lanes != 8) {
+        std::fprintf(stderr, "bench_large_pyramid: --lanes must be 4 or 8\n");
+        return 2;
+      }
+      if (lanes > WideContactSolver::widest_lanes()) {
+        std::fprintf(stderr, "bench_large_pyramid: this CPU runs at most %d lanes\n",
+                     WideContactSolver::widest_lanes());
+        return 2;
+      }
     } else {
-      std::fprintf(stderr, "usage: bench_large_pyramid [--rows R] [--steps N] [--check]\n");
+      std::fprintf(stderr, "usage: bench_large_pyramid [--rows R] [--steps N] [--lanes 4|8] [--check]\n");
       return 2;
     }
   }
@@ -118,7 +132,7 @@ int main(int argc, char** argv) {
               "over", "turn °", "stands (sag <= 0.732, side <= 0.1, turn <= 5)");
   double baseline = 0;
   bool all_stand = true;
-  for (const Method& method : methods()) {
+  for (const Method& method : methods(lanes)) {
     if (check && method.settings.solver != SolverMethod::SoftStep) continue;
     const Outcome o = run(method.settings, rows, steps);
     if (baseline == 0) baseline = o.ms_per_step;

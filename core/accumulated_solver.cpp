@@ -36,7 +36,7 @@ void solve_pass(std::vector<Contact>& contacts, std::vector<Body>& bodies,
 void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context) const {
   const float h = context.substep;
   for (int substep = 0; substep < context.substeps; ++substep) {
-    stages.find_contacts(h);
+    stages.find_contacts(h, nullptr);
     std::vector<Contact>& contacts = stages.solver_contacts();
     std::vector<Body>& bodies = stages.solver_bodies();
     prepare_contacts(contacts, bodies, context);

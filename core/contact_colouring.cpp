@@ -19,17 +19,17 @@ int lowest_free_colour(std::uint64_t used) {
 
 }  // namespace
 
-void ContactColouring::begin(std::size_t contact_count, std::size_t slot_count) {
+void ContactColouring::begin(std::size_t slot_count) {
   used_colours_.assign(slot_count, 0);
-  colour_of_.resize(contact_count);
+  colour_of_.clear();
   std::fill(std::begin(counts_), std::end(counts_), std::size_t{0});
   colour_count_ = 0;
 }
 
-void ContactColouring::add(std::size_t index, const Contact& contact) {
+int ContactColouring::add(const Contact& contact) {
   if (!contact_detail::is_solvable(contact)) {
-    colour_of_[index] = not_solved;
-    return;
+    colour_of_.push_back(not_solved);
+    return -1;
   }
   const bool moves_a = contact_detail::moves_a(contact.mass);
   const bool moves_b = contact_detail::moves_b(contact.mass);
@@ -45,8 +45,9 @@ void ContactColouring::add(std::size_t index, const Contact& contact) {
     if (moves_b) used_b |= bit;
     colour_count_ = std::max(colour_count_, free + 1);
   }
-  colour_of_[index] = colour;
+  colour_of_.push_back(colour);
   ++counts_[colour];
+  return colour;
 }
 
 void ContactColouring::finish() {
@@ -65,8 +66,8 @@ void ContactColouring::finish() {
 }
 
 void ContactColouring::colour(const std::vector<Contact>& contacts, std::size_t slot_count) {
-  begin(contacts.size(), slot_count);
-  for (std::size_t i = 0; i < contacts.size(); ++i) add(i, contacts[i]);
+  begin(slot_count);
+  for (const Contact& contact : contacts) add(contact);
   finish();
 }
 

@@ -26,12 +26,15 @@ class ContactColouring {
   void colour(const std::vector<Contact>& contacts, std::size_t slot_count);
 
   /// The same colouring a contact at a time, for a walk over the list that does other work
-  /// too: `begin` for `contact_count` contacts between `slot_count` body slots, `add` for every
-  /// contact in the list's order (its `PairMass` already resolved), then `finish`.
-  void begin(std::size_t contact_count, std::size_t slot_count);
-  /// Colours contact `index` of the list (see `begin`).
-  void add(std::size_t index, const Contact& contact);
-  /// Sorts the coloured contacts into `order()` (see `begin`).
+  /// too: `begin` for contacts between `slot_count` body slots, `add` for every contact in the
+  /// list's order (its `PairMass` already resolved), then `finish`.
+  void begin(std::size_t slot_count);
+  /// Colours the list's next contact (the first after `begin`, then one after another) and
+  /// returns its colour: 0..max_colours - 1, max_colours for the overflow, -1 when it is not
+  /// solved.
+  int add(const Contact& contact);
+  /// Sorts the coloured contacts into `order()` (see `begin`; not needed by a caller that
+  /// takes each contact's colour from `add`).
   void finish();
 
   /// Number of colours used, 0..max_colours (the overflow not counted).

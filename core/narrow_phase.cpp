@@ -78,7 +78,7 @@ void carry_over_impulses(const Contact& old_contact, Contact& contact) {
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
                     const std::vector<float>& reach, const WorldSettings& settings,
                     const ContactFilter& filter, std::vector<Contact>& contacts,
-                    std::vector<Contact>& spill) {
+                    std::vector<Contact>& spill, ContactVisitor* visitor) {
   // This step's contacts are written over last step's in the same list: `write` never passes
   // `read` while every new contact lands on a slot already read, so a kept contact is updated
   // where it lies (no copy). A new contact with no read slot to land on moves the unread rest
@@ -130,6 +130,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       forget_bounced_impulses(contact);
       mix_materials(a, b, settings, contact);
       point_total += contact.point_count;
+      if (visitor) visitor->visit(write, contact);
       ++write;
       continue;
     }
@@ -170,7 +171,9 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       if (filter) contact.enabled = filter(a, b, manifold);
     }
     point_total += contact.point_count;
-    place(/*replaces_old=*/touched_before) = contact;
+    Contact& placed = place(/*replaces_old=*/touched_before);
+    placed = contact;
+    if (visitor) visitor->visit(write, placed);
     ++write;
   }
   if (!spilled) contacts.resize(write);

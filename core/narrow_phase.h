@@ -6,6 +6,7 @@
 
 #include "core/broad_phase.h"
 #include "core/contact.h"
+#include "core/contact_visitor.h"
 #include "core/world.h"
 
 #include <vector>
@@ -16,10 +17,11 @@ namespace impulse2d {
 /// from `pairs`, each pair collided with the speculative margin `settings.speculative_margin +
 /// reach[a] + reach[b]` (metres; `reach` per slot, see `speculative_reach.h`); kept contacts
 /// are updated in place. `spill` is scratch space (reused: no allocation once warm). `filter`
-/// may be empty. Returns the number of manifold points made.
+/// may be empty. `visitor` (may be null) sees each contact of the new list as soon as it is
+/// written. Returns the number of manifold points made.
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
                     const std::vector<float>& reach, const WorldSettings& settings,
                     const ContactFilter& filter, std::vector<Contact>& contacts,
-                    std::vector<Contact>& spill);
+                    std::vector<Contact>& spill, ContactVisitor* visitor);
 
 }  // namespace impulse2d

@@ -11,12 +11,14 @@ using namespace contact_detail;
 
 void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) const {
   const float h = context.substep;
-  // Once: the sub-steps track each point's separation through its anchors.
-  stages.find_contacts(context.time_step);
-  std::vector<Contact>& contacts = stages.solver_contacts();
   std::vector<Body>& bodies = stages.solver_bodies();
   WideContactSolver& wide = stages.solver_wide_contacts();
-  wide.begin_step(contacts, bodies, context, context.solver_lanes);  // prepares them too
+  // Once: the sub-steps track each point's separation through its anchors. Each contact is
+  // prepared and coloured as the narrow phase finishes it, while it is in the cache.
+  wide.begin_step(bodies, context, context.solver_lanes);
+  stages.find_contacts(context.time_step, &wide);
+  std::vector<Contact>& contacts = stages.solver_contacts();
+  wide.finish_step(contacts);
   const bool may_bounce = context.restitution && wide.has_elastic_contacts();
   // The sub-steps work on the compact body states; the bodies are written once at the end
   // (and around the bounce stages, which work on them).
@@ -49,21 +51,21 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     }
   }
   states.store(bodies);
-  wide.store_impulses(contacts);
-  if (!context.friction) return;
-  for (Contact& contact : contacts) {
-    if (!is_solvable(contact)) continue;
+  // One walk in the list's order writes the impulses back and then, with friction, switches
+  // each contact between sticking and sliding (the switch reads them).
+  wide.store_impulses(contacts, [&](Contact& contact) {
+    if (!context.friction || !is_solvable(contact)) return;
     Body& a = bodies[contact.body_a.index];
     Body& b = bodies[contact.body_b.index];
     update_friction_state(contact, a, b);
-    if (!contact.sliding) continue;
+    if (!contact.sliding) return;
     // A sliding contact sticks, when it does, where it came to rest: its points' drift so far
     // is no longer taken back. (The switch changes velocities only, the drift reads poses, so
     // one walk does both.)
     for (int i = 0; i < contact.point_count; ++i) {
       contact.points[i].stick_offset += friction_drift(a, b, contact, contact.points[i]);
     }
-  }
+  });
 }
 
 }  // namespace impulse2d

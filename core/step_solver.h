@@ -6,6 +6,7 @@
 
 #include "core/body.h"
 #include "core/contact.h"
+#include "core/contact_visitor.h"
 #include "core/settings.h"
 #include "core/shock_propagation.h"
 #include "core/solver_bodies.h"
@@ -22,8 +23,9 @@ namespace impulse2d {
 class SolverStages {
  public:
   /// Broad phase, then narrow phase through the jump table: rebuilds `contacts()` with
-  /// speculative points for the coming `dt` seconds.
-  virtual void find_contacts(float dt) = 0;
+  /// speculative points for the coming `dt` seconds. `visitor` (may be null) sees each contact
+  /// of the new list as the narrow phase finishes it (`contact_visitor.h`).
+  virtual void find_contacts(float dt, ContactVisitor* visitor) = 0;
   /// Adds gravity, forces and damping to every awake dynamic body's velocity over `dt` seconds.
   virtual void integrate_velocities(float dt) = 0;
   /// Moves every awake body by its velocity over `dt` seconds (bullets swept if enabled).

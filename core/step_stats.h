@@ -17,7 +17,9 @@ struct StepStats {
   int sleeping_contact_count = 0;  ///< touching pairs set aside while none of their bodies moves
   int bullets_moved_back = 0;  ///< bullets stopped at their time of impact by the sweep
   double broad_phase_ms = 0.0;   ///< time finding candidate pairs
-  double narrow_phase_ms = 0.0;  ///< time in collide functions and contact matching
+  /// Time in collide functions and contact matching, and in the solver's work on each contact
+  /// as the narrow phase finishes it (the soft step prepares and colours there).
+  double narrow_phase_ms = 0.0;
   double solver_ms = 0.0;        ///< time in velocity iterations
   double integrate_ms = 0.0;     ///< time integrating velocities and positions
   double position_ms = 0.0;      ///< time in position correction

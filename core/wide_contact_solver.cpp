@@ -84,18 +84,30 @@ void clear_lane(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int
   for (int slot = 0; slot < max_manifold_points; ++slot) clear_point(block, solve, slot, lane);
 }
 
+// The flag bits of point slot `slot` that the bounce stages may change: waiting and bouncing.
+std::int32_t bounce_flags(int slot, const ContactPoint& point) {
+  return (point.waiting ? block_point_waiting << slot : 0) |
+         (point.bouncing ? block_point_bouncing << slot : 0);
+}
+
+// What the bounce stages may change in point slot `slot`, but for its flags: its accumulated
+// impulses and speed target.
+template <int Lanes>
+void load_point_values(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot,
+                       int lane, const ContactPoint& point) {
+  block.points[slot].normal_impulse[lane] = point.normal_impulse;
+  block.points[slot].tangent_impulse[lane] = point.tangent_impulse;
+  solve.points[slot].velocity_bias[lane] = point.velocity_bias;
+}
+
 // What the bounce stages may change in point slot `slot`: its accumulated impulses and bounce
 // plan.
 template <int Lanes>
 void load_point_state(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot,
                       int lane, const ContactPoint& point) {
-  block.points[slot].normal_impulse[lane] = point.normal_impulse;
-  block.points[slot].tangent_impulse[lane] = point.tangent_impulse;
-  solve.points[slot].velocity_bias[lane] = point.velocity_bias;
-  const std::int32_t waiting = block_point_waiting << slot;
-  const std::int32_t bouncing = block_point_bouncing << slot;
-  block.flags[lane] = (block.flags[lane] & ~(waiting | bouncing)) | (point.waiting ? waiting : 0) |
-                      (point.bouncing ? bouncing : 0);
+  load_point_values(block, solve, slot, lane, point);
+  const std::int32_t plan = (block_point_waiting | block_point_bouncing) << slot;
+  block.flags[lane] = (block.flags[lane] & ~plan) | bounce_flags(slot, point);
 }
 
 // A's point `on_a` and B's point `on_b` into lane `lane` of four lane arrays (x and y of each).
@@ -119,7 +131,6 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
   if (contact_detail::moves_b(mass)) flags |= block_moves_b;
   if (contact.sliding) flags |= block_sliding;
   if (against_fixed) flags |= block_against_fixed;
-  block.flags[lane] = flags;
   block.normal_x[lane] = contact.normal.x;
   block.normal_y[lane] = contact.normal.y;
   block.inverse_mass_a[lane] = mass.inverse_mass_a;
@@ -143,9 +154,10 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
     set_lane_points(stuck.stick_ax, stuck.stick_ay, stuck.stick_bx, stuck.stick_by, lane,
                     point.recycle_anchor_a, point.recycle_anchor_b);
     stuck.stick_offset[lane] = point.stick_offset;
-    block.flags[lane] |= block_point_present << i;
-    load_point_state(block, solve, i, lane, point);
+    flags |= (block_point_present << i) | bounce_flags(i, point);
+    load_point_values(block, solve, i, lane, point);
   }
+  block.flags[lane] = flags;
   for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block, solve, i, lane);
 }
 
@@ -156,16 +168,6 @@ int WideContactSolver::widest_lanes() {
   if (wide_contact_kernels_8_available()) return 8;
 #endif
   return 4;
-}
-
-template <>
-WideContactSolver::BlockStorage<4>& WideContactSolver::storage<4>() {
-  return storage_4_;
-}
-
-template <>
-WideContactSolver::BlockStorage<8>& WideContactSolver::storage<8>() {
-  return storage_8_;
 }
 
 template <int Lanes>
@@ -184,6 +186,7 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
   packed.solves.resize(block_count);
   packed.sticks.resize(block_count);
   contact_index_.assign(block_count * Lanes, -1);
+  lane_of_contact_.assign(contacts.size(), -1);
   const std::vector<std::uint32_t>& order = colouring_.order();
   std::size_t block = 0;
   for (int colour = 0; colour <= colours; ++colour) {
@@ -192,9 +195,9 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
     for (std::size_t k = colouring_.range_start(colour); k < colouring_.range_start(colour + 1); ++k) {
       if (k + prefetch_distance < order.size()) prefetch_contact(contacts[order[k + prefetch_distance]]);
       const Contact& contact = contacts[order[k]];
-      has_elastic_contacts_ = has_elastic_contacts_ || contact.restitution > 0.0f;
       pack_contact(contact, packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
       contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(order[k]);
+      lane_of_contact_[order[k]] = static_cast<std::int32_t>(block * Lanes + lane);
       if (++lane < per_block) continue;
       for (int unused = lane; unused < Lanes; ++unused) {
         clear_lane(packed.blocks[block], packed.solves[block], unused);
@@ -210,26 +213,33 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
   }
 }
 
-void WideContactSolver::begin_step(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                                   const SolverContext& context, int lanes) {
+void WideContactSolver::begin_step(const std::vector<Body>& bodies, const SolverContext& context,
+                                   int lanes) {
   if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
   lanes_ = lanes;
   has_elastic_contacts_ = false;
-  // One walk prepares and colours: each contact is read from memory once for both.
-  colouring_.begin(contacts.size(), bodies.size());
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    Contact& contact = contacts[i];
-    if (contact.enabled) {
-      prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
-    }
-    colouring_.add(i, contact);
+  bodies_ = &bodies;
+  context_ = &context;
+  colouring_.begin(bodies.size());
+}
+
+void WideContactSolver::visit(std::size_t /*index: the colouring counts them*/, Contact& contact) {
+  if (contact.enabled) {
+    const std::vector<Body>& bodies = *bodies_;
+    prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], *context_);
   }
+  if (colouring_.add(contact) >= 0 && contact.restitution > 0.0f) has_elastic_contacts_ = true;
+}
+
+void WideContactSolver::finish_step(const std::vector<Contact>& contacts) {
   colouring_.finish();
   if (lanes_ == 8) {
     pack<8>(contacts);
   } else {
     pack<4>(contacts);
   }
+  bodies_ = nullptr;
+  context_ = nullptr;
 }
 
 void WideContactSolver::load_points(const std::vector<Contact>& contacts) {

@@ -431,7 +431,7 @@ void World::set_aside_sleeping_contacts() {
   move_contacts(contacts_, sleeping_contacts_, merged_contacts_, resting);
 }
 
-void World::find_contacts(float dt) {
+void World::find_contacts(float dt, ContactVisitor* visitor) {
   Clock::time_point stage = Clock::now();
   set_aside_sleeping_contacts();
   // Bounds are current after a step, `create_body` and `set_transform`; from here to the end
@@ -447,7 +447,8 @@ void World::find_contacts(float dt) {
 
   stage = Clock::now();
   stats_.contact_point_count = update_contacts(bodies_, pairs_, speculative_reach_, settings_,
-                                               contact_filter_, contacts_, spilled_contacts_);
+                                               contact_filter_, contacts_, spilled_contacts_,
+                                               visitor);
   stats_.pairs_tested = static_cast<int>(pairs_.size());
   stats_.contact_count = static_cast<int>(contacts_.size());
   stats_.sleeping_contact_count = static_cast<int>(sleeping_contacts_.size());

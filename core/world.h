@@ -151,7 +151,7 @@ class World : private SolverStages {
   Body& checked_body(BodyId id, const char* caller);
   const Body& checked_body(BodyId id, const char* caller) const;
   // The stages the solver method drives (SolverStages), each timed into stats_.
-  void find_contacts(float dt) override;
+  void find_contacts(float dt, ContactVisitor* visitor) override;
   void integrate_velocities(float dt) override;
   void integrate_positions(float dt) override;
   void begin_solver_bodies() override;
