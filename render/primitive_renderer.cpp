@@ -42,8 +42,10 @@ constexpr float kRunSpriteWaste = 5.5f;
 void set_color(std::uint8_t (&rgba)[4], Color color) {
   for (int i = 0; i < 4; ++i) {
     const float channel = i == 0 ? color.r : i == 1 ? color.g : i == 2 ? color.b : color.a;
-    const float clamped = std::min(std::max(channel, 0.0f), 1.0f);
-    rgba[i] = static_cast<std::uint8_t>(std::lround(clamped * 255.0f));
+    const float scaled = std::min(std::max(channel, 0.0f), 1.0f) * 255.0f;
+    // std::lround without the library call (a tenth of the batch building): x + 0.5 is exact
+    // in double, so truncating it rounds halves away from zero; NaN gives 0, as before.
+    rgba[i] = scaled >= 0.0f ? static_cast<std::uint8_t>(static_cast<double>(scaled) + 0.5) : 0;
   }
 }
 
