@@ -1,7 +1,7 @@
 // bench_render: how fast frames come out of the renderer, for 1000 bodies at 800x600 with
 // the HUD and legend, once with every overlay on and once with shapes only.
 //
-//   bench_render [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba] [--render-only]
+//   bench_render [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE] [--render-only [--flags MASK]]
 //
 // Prints a Markdown table: render ms/frame, wall-clock and CPU time of all threads (llvmpipe
 // rasterises on its own threads); PNG encode ms/frame and size with stb's default deflate
@@ -11,11 +11,14 @@
 // with the CPU time of all threads per frame for the last. On a machine shared with other
 // jobs the CPU times move much less than the wall-clock ones. Ratios are against the
 // baselines measured in the same run. Frames go to DIR (default: a temporary directory
-// that is removed afterwards); --dump-frame saves the last all-overlay frame as raw RGBA.
+// that is removed afterwards); --dump-frame saves the last all-overlay frame (a PNG when FILE
+// ends in .png, else raw RGBA).
 // --render-only renders N every-overlay frames (a step between them) and nothing else, for
 // profilers: e.g. `LP_NUM_THREADS=0 valgrind --tool=callgrind
 // --toggle-collect='impulse2d::render::FrameRenderer::render(*' bench_render --render-only
-// --frames 3` counts three renders (the first compiles the shaders: subtract a 1-frame run).
+// --frames 3` counts three renders (the first compiles the shaders: subtract a 1-frame run);
+// --flags picks the overlays instead (core's DebugDrawFlag bits, e.g. 0x1 for shapes only,
+// 0xFFF for all), and --dump-frame saves the last frame.
 #include "core/world.h"
 #include "render/camera.h"
 #include "render/frame_renderer.h"
@@ -115,6 +118,7 @@ struct Arguments {
   std::string out;
   std::string dump_frame;
   bool render_only = false;
+  std::uint32_t render_only_flags = draw_all;
 };
 
 Arguments parse_arguments(int argc, char** argv) {
@@ -132,8 +136,12 @@ Arguments parse_arguments(int argc, char** argv) {
       args.dump_frame = argv[++i];
     } else if (flag == "--render-only") {
       args.render_only = true;
+    } else if (flag == "--flags" && has_value) {
+      args.render_only_flags = static_cast<std::uint32_t>(std::strtoul(argv[++i], nullptr, 0));
     } else {
-      std::fprintf(stderr, "usage: %s [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE.rgba] [--render-only]\n",
+      std::fprintf(stderr,
+                   "usage: %s [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE] [--render-only "
+                   "[--flags MASK]]\n",
                    argv[0]);
       std::exit(2);
     }
@@ -143,6 +151,16 @@ Arguments parse_arguments(int argc, char** argv) {
     std::exit(2);
   }
   return args;
+}
+
+// Saves `frame` to `path`: a PNG when the name ends in .png, else raw RGBA.
+void dump_frame(const Frame& frame, const std::string& path) {
+  if (fs::path(path).extension() == ".png") {
+    write_png(path, frame);
+    return;
+  }
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(frame.rgba.data()), static_cast<std::streamsize>(frame.rgba.size()));
 }
 
 struct EncodeResult {
@@ -228,7 +246,7 @@ int main(int argc, char** argv) {
   FrameRenderer renderer(kWidth, kHeight);
   const Camera camera = Camera::fit(world_bounds(world), kWidth, kHeight, 10.0f);
   if (args.render_only) {
-    const FrameOptions options = overlay_options(draw_all);
+    const FrameOptions options = overlay_options(args.render_only_flags);
     Frame frame;
     const double cpu_start = process_cpu_milliseconds();
     const Clock::time_point render_start = Clock::now();
@@ -236,9 +254,10 @@ int main(int argc, char** argv) {
       world.step();
       renderer.render(world, camera, options, hud_for(i), frame);
     }
-    std::printf("bench_render --render-only: %d every-overlay frames, %.2f ms/frame, CPU %.2f ms/frame\n",
-                args.frames, milliseconds_since(render_start) / args.frames,
+    std::printf("bench_render --render-only: %d frames (overlay flags 0x%X), %.2f ms/frame, CPU %.2f ms/frame\n",
+                args.frames, args.render_only_flags, milliseconds_since(render_start) / args.frames,
                 (process_cpu_milliseconds() - cpu_start) / args.frames);
+    if (!args.dump_frame.empty()) dump_frame(frame, args.dump_frame);
     if (temporary_output) fs::remove_all(out);
     return 0;
   }
@@ -271,11 +290,7 @@ int main(int argc, char** argv) {
     }
     m.render_ms /= args.frames;
     m.render_cpu_ms /= args.frames;
-    if (!args.dump_frame.empty() && flags == draw_all) {
-      std::ofstream(args.dump_frame, std::ios::binary)
-          .write(reinterpret_cast<const char*>(frames.back().rgba.data()),
-                 static_cast<std::streamsize>(frames.back().rgba.size()));
-    }
+    if (!args.dump_frame.empty() && flags == draw_all) dump_frame(frames.back(), args.dump_frame);
     m.stb = measure_encode(frames, PngEncoding::StbDefault);
     m.fast = measure_encode(frames, PngEncoding::Fast);
     m.baseline_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, PngEncoding::StbDefault);

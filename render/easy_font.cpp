@@ -63,6 +63,7 @@ const GlyphBitmap& glyph_bitmap(char character) {
                 glyph.ink_top = row;
               }
               glyph.bits |= std::uint64_t{1} << (row * font_glyph_columns + column);
+              glyph.columns[column] = static_cast<std::uint16_t>(glyph.columns[column] | (1u << row));
               glyph.ink_left = std::min(glyph.ink_left, column);
               glyph.ink_right = std::max(glyph.ink_right, column + 1);
               glyph.ink_bottom = row + 1;

@@ -34,6 +34,9 @@ constexpr int font_glyph_rows = 9;
 /// covered. Pen advance is the x distance to the next character, font pixels.
 struct GlyphBitmap {
   std::uint64_t bits = 0;  ///< font_glyph_columns x font_glyph_rows cells, row-major
+  /// The same cells by column: bit `row` of `columns[column]` is bit (row * font_glyph_columns
+  /// + column) of `bits`.
+  std::uint16_t columns[font_glyph_columns] = {};
   int advance = 0;         ///< font pixels from this character's left edge to the next one's
   int ink_left = 0;        ///< first column with a set bit
   int ink_top = 0;         ///< first row with a set bit

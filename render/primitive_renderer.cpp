@@ -42,8 +42,10 @@ constexpr float kRunSpriteWaste = 5.5f;
 void set_color(std::uint8_t (&rgba)[4], Color color) {
   for (int i = 0; i < 4; ++i) {
     const float channel = i == 0 ? color.r : i == 1 ? color.g : i == 2 ? color.b : color.a;
-    const float clamped = std::min(std::max(channel, 0.0f), 1.0f);
-    rgba[i] = static_cast<std::uint8_t>(std::lround(clamped * 255.0f));
+    const float scaled = std::min(std::max(channel, 0.0f), 1.0f) * 255.0f;
+    // std::lround without the library call (a tenth of the batch building): x + 0.5 is exact
+    // in double, so truncating it rounds halves away from zero; NaN gives 0, as before.
+    rgba[i] = scaled >= 0.0f ? static_cast<std::uint8_t>(static_cast<double>(scaled) + 0.5) : 0;
   }
 }
 
@@ -68,8 +70,8 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
   glGetFloatv(GL_POINT_SIZE_RANGE, point_sizes);
   max_point_size_ = std::min(point_sizes[1], style_.max_point_sprite);
 
-  glGenVertexArrays(2, vertex_arrays_);
-  glGenBuffers(2, vertex_buffers_);
+  glGenVertexArrays(3, vertex_arrays_);
+  glGenBuffers(3, vertex_buffers_);
   glGenBuffers(1, &index_buffer_);
   const auto attribute = [](GLuint location, GLint size, GLenum type, GLsizei stride, std::size_t offset) {
     glEnableVertexAttribArray(location);
@@ -103,14 +105,23 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
   attribute(4, 3, GL_FLOAT, stride, offsetof(Vertex, disc));
   attribute(5, 4, GL_UNSIGNED_BYTE, stride, offsetof(Vertex, fill));
   attribute(6, 4, GL_UNSIGNED_BYTE, stride, offsetof(Vertex, line));
-  attribute(7, 2, GL_UNSIGNED_INT, stride, offsetof(Vertex, glyph));
+  glBindVertexArray(vertex_arrays_[2]);
+  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[2]);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
+  const GLsizei text_stride = sizeof(TextVertex);
+  attribute(0, 3, GL_FLOAT, text_stride, offsetof(TextVertex, sprite));
+  attribute(1, 4, GL_FLOAT, text_stride, offsetof(TextVertex, run));
+  attribute(2, 1, GL_FLOAT, text_stride, offsetof(TextVertex, font_scale));
+  attribute(3, 4, GL_UNSIGNED_BYTE, text_stride, offsetof(TextVertex, fill));
+  attribute(4, 4, GL_UNSIGNED_INT, text_stride, offsetof(TextVertex, bits));
+  attribute(5, 4, GL_UNSIGNED_INT, text_stride, offsetof(TextVertex, bits) + 4 * sizeof(std::uint32_t));
   glBindVertexArray(0);
 }
 
 PrimitiveRenderer::~PrimitiveRenderer() {
   glDeleteBuffers(1, &index_buffer_);
-  glDeleteBuffers(2, vertex_buffers_);
-  glDeleteVertexArrays(2, vertex_arrays_);
+  glDeleteBuffers(3, vertex_buffers_);
+  glDeleteVertexArrays(3, vertex_arrays_);
 }
 
 void PrimitiveRenderer::begin(const Camera& camera) {
@@ -129,6 +140,8 @@ void PrimitiveRenderer::begin(const Camera& camera) {
     kind_batch.vertices.clear();
     kind_batch.open_runs.clear();
   }
+  texts_.vertices.clear();
+  texts_.open_runs.clear();
   runs_.clear();
   primitive_count_ = 0;
 }
@@ -140,6 +153,8 @@ void PrimitiveRenderer::next_layer() {
     runs_.insert(runs_.end(), kind_batch.open_runs.begin(), kind_batch.open_runs.end());
     kind_batch.open_runs.clear();
   }
+  runs_.insert(runs_.end(), texts_.open_runs.begin(), texts_.open_runs.end());
+  texts_.open_runs.clear();
 }
 
 vec2 PrimitiveRenderer::to_window(vec2 world) const {
@@ -174,11 +189,11 @@ void PrimitiveRenderer::finish(Color background) {
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   if (!runs_.empty()) {
-    // The polygons' vertices go to their own buffer; each other kind's to its own stretch
-    // of the second.
+    // The polygons' and the text's vertices go to buffers of their own; each other kind's to
+    // its own stretch of the second.
     std::size_t first_of_kind[primitive_kind_count] = {};
     std::size_t shape_vertices = 0;
-    for (int kind = 1; kind < primitive_kind_count; ++kind) {
+    for (int kind = 1; kind < primitive_kind_count - 1; ++kind) {
       first_of_kind[kind] = shape_vertices;
       shape_vertices += batches_[kind - 1].vertices.size();
     }
@@ -191,7 +206,10 @@ void PrimitiveRenderer::finish(Color background) {
     upload(polygons_.vertices, 0);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[1]);
     reserve_vertices(shape_vertices, sizeof(Vertex), capacity_vertices_[1]);
-    for (int kind = 1; kind < primitive_kind_count; ++kind) upload(batches_[kind - 1].vertices, first_of_kind[kind]);
+    for (int kind = 1; kind < primitive_kind_count - 1; ++kind) upload(batches_[kind - 1].vertices, first_of_kind[kind]);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[2]);
+    reserve_vertices(texts_.vertices.size(), sizeof(TextVertex), capacity_vertices_[2]);
+    upload(texts_.vertices, 0);
     if (most_quads > capacity_quads_) {
       // Two triangles (0, 1, 2) and (0, 2, 3) per quad; a run starts at its base vertex.
       capacity_quads_ = std::max(most_quads, 2 * capacity_quads_);
@@ -217,7 +235,7 @@ void PrimitiveRenderer::finish(Color background) {
         programs_[kind]->use();
         glUniform2f(viewport_locations_[kind], static_cast<float>(camera_.width()),
                     static_cast<float>(camera_.height()));
-        glBindVertexArray(vertex_arrays_[run.kind == PrimitiveKind::polygon ? 0 : 1]);
+        glBindVertexArray(vertex_arrays_[run.kind == PrimitiveKind::polygon ? 0 : run.kind == PrimitiveKind::text ? 2 : 1]);
         current_kind = kind;
       }
       const auto first = static_cast<GLint>(first_of_kind[kind] + run.first_vertex);
@@ -252,6 +270,19 @@ void PrimitiveRenderer::push_vertex(Batch<V>& kind_batch, PrimitiveKind kind, co
 
 void PrimitiveRenderer::push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]) {
   for (const vec2 corner : corners) push_vertex(batch(kind), kind, shape, corner, 1.0f, false);
+}
+
+template <typename V>
+void PrimitiveRenderer::push_bounded(Batch<V>& kind_batch, PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper,
+                                     float area) {
+  ++primitive_count_;
+  const bool after_point = !kind_batch.open_runs.empty() && kind_batch.open_runs.back().points;
+  if (fits_point_sprite(lower, upper, area, after_point)) {
+    push_vertex(kind_batch, kind, shape, 0.5f * (lower + upper), std::max(upper.x - lower.x, upper.y - lower.y), true);
+  } else {
+    const vec2 quad[4] = {lower, vec2(upper.x, lower.y), upper, vec2(lower.x, upper.y)};
+    for (const vec2 corner : quad) push_vertex(kind_batch, kind, shape, corner, 1.0f, false);
+  }
 }
 
 bool PrimitiveRenderer::fits_point_sprite(vec2 lower, vec2 upper, float area, bool after_point) const {
@@ -361,35 +392,66 @@ void PrimitiveRenderer::push_rect(vec2 lower_left, vec2 upper_right, Color color
 }
 
 void PrimitiveRenderer::push_text(vec2 window_top_left, const std::string& text, Color color, float scale) {
-  // One primitive per character: its glyph cell, with the glyph's bitmap.
-  const vec2 half(0.5f * static_cast<float>(font_glyph_columns) * scale,
-                  0.5f * static_cast<float>(font_glyph_rows) * scale);
-  Vertex shape;
-  shape.box[0] = half.x;
-  shape.box[1] = half.y;
-  shape.box[2] = 1.0f / scale;
-  set_color(shape.fill, color);
+  // Runs of characters, each one primitive with the run's font pixels as a bitmap: a run
+  // starts at an inked character and takes the next ones of its line while their ink fits
+  // in `text_run_columns` font pixels. Characters never overlap (ink ends before the
+  // advance), so a run's pixels are those of its characters drawn one by one.
+  TextVertex run;
+  set_color(run.fill, color);
+  run.font_scale = 1.0f / scale;
+  run.run[3] = static_cast<float>(font_glyph_rows) * scale;
+  bool open = false;
+  int column = 0;  // font pixels from the open run's left edge to the pen
+  int ink_left = 0;
+  int ink_top = 0;
+  int ink_right = 0;
+  int ink_bottom = 0;
+  const auto close_run = [&] {
+    if (!open) return;
+    open = false;
+    run.run[2] = static_cast<float>(ink_right) * scale;
+    const vec2 lower(run.run[0] + static_cast<float>(ink_left) * scale - kMargin,
+                     run.run[1] - static_cast<float>(ink_bottom) * scale - kMargin);
+    const vec2 upper(run.run[0] + static_cast<float>(ink_right) * scale + kMargin,
+                     run.run[1] - static_cast<float>(ink_top) * scale + kMargin);
+    // Only a small run is a point sprite: a long one's square would be mostly empty (as an
+    // area of 0 says).
+    push_bounded(texts_, PrimitiveKind::text, run, lower, upper, 0.0f);
+  };
   vec2 pen = window_top_left;
   for (const char character : text) {
     if (character == '\n') {
+      close_run();
       pen = vec2(window_top_left.x, pen.y - font_line_height * scale);  // window y grows upwards
       continue;
     }
     const GlyphBitmap& glyph = glyph_bitmap(character);
     if (glyph.bits != 0) {
-      shape.frame[0] = pen.x + half.x;
-      shape.frame[1] = pen.y - half.y;
-      shape.glyph[0] = static_cast<std::uint32_t>(glyph.bits);
-      shape.glyph[1] = static_cast<std::uint32_t>(glyph.bits >> 32);
-      // The sprite or quad covers the glyph's ink only: the cell's other pixels stay clear.
-      const vec2 ink_lower(static_cast<float>(glyph.ink_left) * scale - half.x,
-                           half.y - static_cast<float>(glyph.ink_bottom) * scale);
-      const vec2 ink_upper(static_cast<float>(glyph.ink_right) * scale - half.x,
-                           half.y - static_cast<float>(glyph.ink_top) * scale);
-      push_shape(PrimitiveKind::glyph, shape, ink_lower, ink_upper);
+      if (open && column + glyph.ink_right > text_run_columns) close_run();
+      if (!open) {
+        open = true;
+        column = 0;
+        run.run[0] = pen.x;
+        run.run[1] = pen.y;
+        std::fill(std::begin(run.bits), std::end(run.bits), 0u);
+        ink_left = glyph.ink_left;
+        ink_top = glyph.ink_top;
+        ink_bottom = glyph.ink_bottom;
+      }
+      for (int c = glyph.ink_left; c < glyph.ink_right; ++c) {
+        const int bit = (column + c) * font_glyph_rows;
+        const std::uint32_t rows = glyph.columns[c];
+        run.bits[bit / 32] |= rows << (bit % 32);
+        if (bit % 32 + font_glyph_rows > 32) run.bits[bit / 32 + 1] |= rows >> (32 - bit % 32);
+      }
+      ink_top = std::min(ink_top, glyph.ink_top);
+      ink_bottom = std::max(ink_bottom, glyph.ink_bottom);
+      ink_right = column + glyph.ink_right;
     }
+    column += glyph.advance;
     pen.x += static_cast<float>(glyph.advance) * scale;
   }
+  close_run();
 }
 
 void PrimitiveRenderer::draw_solid_polygon(const vec2* vertices, int count, Color fill, Color outline) {
@@ -440,15 +502,7 @@ void PrimitiveRenderer::draw_solid_polygon(const vec2* vertices, int count, Colo
     lower = glm::min(lower, far);
     upper = glm::max(upper, far);
   }
-  ++primitive_count_;
-  const bool after_point = !polygons_.open_runs.empty() && polygons_.open_runs.back().points;
-  if (fits_point_sprite(lower, upper, std::abs(0.5f * twice_area), after_point)) {
-    push_vertex(polygons_, PrimitiveKind::polygon, shape, 0.5f * (lower + upper),
-                std::max(upper.x - lower.x, upper.y - lower.y), true);
-  } else {
-    const vec2 quad[4] = {lower, vec2(upper.x, lower.y), upper, vec2(lower.x, upper.y)};
-    for (const vec2 corner : quad) push_vertex(polygons_, PrimitiveKind::polygon, shape, corner, 1.0f, false);
-  }
+  push_bounded(polygons_, PrimitiveKind::polygon, shape, lower, upper, std::abs(0.5f * twice_area));
 }
 
 void PrimitiveRenderer::draw_solid_circle(vec2 center, float radius, vec2 axis, Color fill, Color outline) {

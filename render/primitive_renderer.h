@@ -31,14 +31,14 @@ struct PrimitiveStyle {
 };
 
 /// Draws world primitives (segments, bands, rectangle outlines, arrows, discs with their rim,
-/// convex polygons of up to `polygon_primitive_edges` edges with their outline, characters:
-/// each one primitive with analytic anti-aliased coverage; fills of larger polygons as
-/// triangles) and screen-space rectangles and text, batched between `begin` and `finish`.
+/// convex polygons of up to `polygon_primitive_edges` edges with their outline, runs of up to
+/// `text_run_columns` font pixels of text: each one primitive with analytic anti-aliased
+/// coverage; fills of larger polygons as triangles) and screen-space rectangles and text, batched between `begin` and `finish`.
 /// llvmpipe's cost grows with the primitives it rasterises, the 4x4 pixel blocks each one
 /// touches and the work of the fragment program on each block, so a small primitive is a
 /// single point sprite rather than two triangles, and each kind of primitive has a program
 /// of its own. Draw order: layers (`next_layer`) in the order begun; within a layer, the
-/// kinds in `PrimitiveKind` order (polygons, fill triangles, discs, boxes, arrows, glyphs);
+/// kinds in `PrimitiveKind` order (polygons, fill triangles, discs, boxes, arrows, text);
 /// within a kind, the order emitted. Needs the GL context it was created under to be current
 /// for construction, `finish` and destruction.
 class PrimitiveRenderer final : public DebugDraw {
@@ -88,7 +88,7 @@ class PrimitiveRenderer final : public DebugDraw {
   void draw_screen_text(vec2 top_left, const std::string& text, Color color, int scale);
 
  private:
-  // One vertex of the disc, box, arrow, glyph and polygon-fill-triangle kinds, as their
+  // One vertex of the disc, box, arrow and polygon-fill-triangle kinds, as their
   // shaders read it (see primitive_shaders.h). The defaults switch every shape off.
   struct Vertex {
     float sprite[3] = {0.0f, 0.0f, 1.0f};
@@ -98,7 +98,6 @@ class PrimitiveRenderer final : public DebugDraw {
     float disc[3] = {-1.0e6f, -1.0e6f, -1.0e6f};
     std::uint8_t fill[4] = {0, 0, 0, 0};
     std::uint8_t line[4] = {0, 0, 0, 0};
-    std::uint32_t glyph[2] = {0, 0};
   };
   // One vertex of the polygon kind. Unused edges never bound the polygon.
   struct PolygonVertex {
@@ -107,6 +106,14 @@ class PrimitiveRenderer final : public DebugDraw {
     float edges[polygon_primitive_edges][3] = {};  // outward unit normal, offset from the origin
     std::uint8_t fill[4] = {0, 0, 0, 0};
     std::uint8_t line[4] = {0, 0, 0, 0};
+  };
+  // One vertex of the text kind: a run of characters of one line.
+  struct TextVertex {
+    float sprite[3] = {0.0f, 0.0f, 1.0f};
+    float run[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // top-left corner, width and height (window pixels)
+    float font_scale = 1.0f;                  // font pixels per window pixel
+    std::uint8_t fill[4] = {0, 0, 0, 0};
+    std::uint32_t bits[8] = {};  // font pixel (column, row) is bit column * font_glyph_rows + row
   };
   // Consecutive vertices of one kind's buffer drawn by one call, as points or as quads
   // (four vertices each).
@@ -127,9 +134,14 @@ class PrimitiveRenderer final : public DebugDraw {
   // its kind is of point sprites.
   bool fits_point_sprite(vec2 lower, vec2 upper, float area, bool after_point) const;
   vec2 to_window(vec2 world) const;
+  // The batch of a kind drawn with `Vertex` (solid, disc, box, arrow).
   Batch<Vertex>& batch(PrimitiveKind kind) { return batches_[static_cast<int>(kind) - 1]; }
   template <typename V>
   void push_vertex(Batch<V>& batch, PrimitiveKind kind, const V& shape, vec2 position, float point_size, bool point);
+  // One primitive covering the axis-aligned window rectangle [lower, upper] of `area` square
+  // pixels: a point sprite or a quad (`fits_point_sprite`).
+  template <typename V>
+  void push_bounded(Batch<V>& batch, PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper, float area);
   void push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]);
   void push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper);
   void push_filled_triangles(const vec2* window_vertices, int count, Color fill);
@@ -146,14 +158,15 @@ class PrimitiveRenderer final : public DebugDraw {
   float max_point_size_ = 1.0f;                           // the driver's largest point sprite
   std::unique_ptr<ShaderProgram> programs_[primitive_kind_count];
   int viewport_locations_[primitive_kind_count] = {};
-  unsigned int vertex_arrays_[2] = {};   // polygon vertices, other vertices
-  unsigned int vertex_buffers_[2] = {};  // the same
+  unsigned int vertex_arrays_[3] = {};   // polygon vertices, `Vertex`es, text vertices
+  unsigned int vertex_buffers_[3] = {};  // the same
   unsigned int index_buffer_ = 0;
-  std::size_t capacity_vertices_[2] = {};  // vertices each vertex buffer holds
+  std::size_t capacity_vertices_[3] = {};  // vertices each vertex buffer holds
   std::size_t capacity_quads_ = 0;         // quads the index buffer indexes
   std::size_t primitive_count_ = 0;
   Batch<PolygonVertex> polygons_;
-  Batch<Vertex> batches_[primitive_kind_count - 1];  // the other kinds, in order
+  Batch<Vertex> batches_[primitive_kind_count - 2];  // solid, disc, box, arrow
+  Batch<TextVertex> texts_;
   std::vector<Run> runs_;  // of the closed layers, in drawing order
 };
 

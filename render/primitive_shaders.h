@@ -8,16 +8,18 @@
 /// pixels whichever way it is rasterised. Attributes (see `PrimitiveRenderer::Vertex`):
 ///   sprite: window position of the point or quad corner, point size;
 ///   frame:  origin (window pixels) and unit x axis of the primitive's frame;
-///   box:    half extents (x, y) of a rectangle centred on the origin; font pixels per
-///           window pixel of a glyph (z); width of a rectangle's outline (w; 0: filled);
+///   box:    half extents (x, y) of a rectangle centred on the origin; width of a
+///           rectangle's outline (w; 0: filled);
 ///   head:   an arrow head along +x: base x, tip x (it ends there), outward normal of its
 ///           upper side;
 ///   disc:   a disc's radius and a ring's outer and inner radii, centred on the origin;
-///   fill:   colour of the rectangle, head, disc and glyph; line: colour of the ring;
-///   glyph:  font_glyph_columns x font_glyph_rows bitmap, low word first.
+///   fill:   colour of the rectangle, head and disc; line: colour of the ring.
 /// A polygon's vertex has sprite, fill and line as above, its origin (window pixels) with half
 /// its outline's width, and up to 8 edges as outward unit normal and offset from the origin;
 /// its distance to a pixel centre is the largest of the edges' (a mitred outline).
+/// A text run's vertex has sprite and fill as above, the run's top-left corner and size
+/// (window pixels), font pixels per window pixel, and the run's font pixels as 256 bits
+/// (bit column * font_glyph_rows + row, low word first).
 /// A disc's or polygon's fill is composited under its ring or outline in the shader, and the premultiplied result
 /// blended over the framebuffer once.
 
@@ -34,13 +36,15 @@ enum class PrimitiveKind {
   disc,   ///< disc with an optional ring (circles, dots)
   box,    ///< rectangle or rectangle outline in its own frame (segments, bars, panels)
   arrow,  ///< shaft rectangle and triangular head
-  glyph,  ///< one character of the bitmap font in its cell
+  text,   ///< a run of characters of the bitmap font, up to `text_run_columns` font pixels wide
 };
 
 /// Number of `PrimitiveKind`s.
 constexpr int primitive_kind_count = 6;
 /// Most edges of one `PrimitiveKind::polygon` (core's `max_polygon_vertices`).
 constexpr int polygon_primitive_edges = 8;
+/// Most font pixel columns of one `PrimitiveKind::text` run: 256 bits of 9-pixel columns.
+constexpr int text_run_columns = 28;
 
 /// Vertex stage of `kind`: window pixels to clip space and point size; passes the parameters
 /// on flat.
