@@ -9,7 +9,6 @@ namespace impulse2d {
 namespace {
 
 constexpr std::uint8_t overflow_colour = ContactColouring::max_colours;
-constexpr std::uint8_t not_solved = 0xFF;
 
 // Index of the lowest clear bit of `used` (which has one).
 int lowest_free_colour(std::uint64_t used) {

@@ -37,6 +37,13 @@ class ContactColouring {
   /// takes each contact's colour from `add`).
   void finish();
 
+  /// Colour of the list's contact `index` as `add` returned it (valid from that call on).
+  int colour_of(std::size_t index) const {
+    const std::uint8_t colour = colour_of_[index];
+    return colour == not_solved ? -1 : colour;
+  }
+  /// Contacts of colour `colour` added so far (`max_colours`: the overflow).
+  std::size_t count(int colour) const { return counts_[static_cast<std::size_t>(colour)]; }
   /// Number of colours used, 0..max_colours (the overflow not counted).
   int colour_count() const { return colour_count_; }
   /// Indices into the contact list, colour by colour, then the overflow; each range in the
@@ -47,6 +54,7 @@ class ContactColouring {
   std::size_t range_start(int colour) const { return starts_[static_cast<std::size_t>(colour)]; }
 
  private:
+  static constexpr std::uint8_t not_solved = 0xFF;  // colour_of_ of a contact not solved
   std::vector<std::uint64_t> used_colours_;  // per body slot: colours its contacts took
   std::vector<std::uint8_t> colour_of_;      // per contact; overflow_colour when none
   std::vector<std::uint32_t> order_;

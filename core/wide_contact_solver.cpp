@@ -172,14 +172,20 @@ int WideContactSolver::widest_lanes() {
 
 template <int Lanes>
 void WideContactSolver::pack(const std::vector<Contact>& contacts) {
-  // Each colour fills blocks of Lanes contacts (its last one partly); the overflow goes one
-  // contact per block, as its contacts may share bodies.
+  // Each colour fills blocks of Lanes contacts in the list's order (its last block partly);
+  // the overflow goes one contact per block, as its contacts may share bodies. The contacts
+  // are read in the list's order, each written to its colour's open block: the list streams
+  // in, and the open blocks (one per colour) stay in the cache.
   const int colours = colouring_.colour_count();
-  std::size_t block_count = colouring_.range_start(colours + 1) - colouring_.range_start(colours);
+  const int overflow = ContactColouring::max_colours;
+  std::size_t first_block[ContactColouring::max_colours + 1];
+  std::size_t block_count = 0;
   for (int colour = 0; colour < colours; ++colour) {
-    const std::size_t size = colouring_.range_start(colour + 1) - colouring_.range_start(colour);
-    block_count += (size + Lanes - 1) / Lanes;
+    first_block[colour] = block_count;
+    block_count += (colouring_.count(colour) + Lanes - 1) / Lanes;
   }
+  first_block[overflow] = block_count;
+  block_count += colouring_.count(overflow);
   BlockStorage<Lanes>& packed = storage<Lanes>();
   // Every lane is written below: packed or cleared.
   packed.blocks.resize(block_count);
@@ -187,29 +193,30 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
   packed.sticks.resize(block_count);
   contact_index_.assign(block_count * Lanes, -1);
   lane_of_contact_.assign(contacts.size(), -1);
-  const std::vector<std::uint32_t>& order = colouring_.order();
-  std::size_t block = 0;
-  for (int colour = 0; colour <= colours; ++colour) {
-    const int per_block = colour == colours ? 1 : Lanes;
-    int lane = 0;
-    for (std::size_t k = colouring_.range_start(colour); k < colouring_.range_start(colour + 1); ++k) {
-      if (k + prefetch_distance < order.size()) prefetch_contact(contacts[order[k + prefetch_distance]]);
-      const Contact& contact = contacts[order[k]];
-      pack_contact(contact, packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
-      contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(order[k]);
-      lane_of_contact_[order[k]] = static_cast<std::int32_t>(block * Lanes + lane);
-      if (++lane < per_block) continue;
-      for (int unused = lane; unused < Lanes; ++unused) {
-        clear_lane(packed.blocks[block], packed.solves[block], unused);
-      }
-      lane = 0;
-      ++block;
+  std::size_t packed_count[ContactColouring::max_colours + 1] = {};
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const int colour = colouring_.colour_of(i);
+    if (colour < 0) continue;
+    const std::size_t rank = packed_count[colour]++;
+    const std::size_t per_block = colour == overflow ? 1 : Lanes;
+    const std::size_t block = first_block[colour] + rank / per_block;
+    const int lane = static_cast<int>(rank % per_block);
+    pack_contact(contacts[i], packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
+    contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(i);
+    lane_of_contact_[i] = static_cast<std::int32_t>(block * Lanes + lane);
+  }
+  // The lanes no contact took: each colour's last block after its last contact, and every
+  // overflow block's but the first.
+  for (int colour = 0; colour < colours; ++colour) {
+    const int used = static_cast<int>(colouring_.count(colour) % Lanes);
+    if (used == 0) continue;
+    const std::size_t last = first_block[colour] + colouring_.count(colour) / Lanes;
+    for (int lane = used; lane < Lanes; ++lane) {
+      clear_lane(packed.blocks[last], packed.solves[last], lane);
     }
-    if (lane == 0) continue;
-    for (int unused = lane; unused < Lanes; ++unused) {
-      clear_lane(packed.blocks[block], packed.solves[block], unused);
-    }
-    ++block;
+  }
+  for (std::size_t block = first_block[overflow]; block < block_count; ++block) {
+    for (int lane = 1; lane < Lanes; ++lane) clear_lane(packed.blocks[block], packed.solves[block], lane);
   }
 }
 
@@ -232,7 +239,6 @@ void WideContactSolver::visit(std::size_t /*index: the colouring counts them*/, 
 }
 
 void WideContactSolver::finish_step(const std::vector<Contact>& contacts) {
-  colouring_.finish();
   if (lanes_ == 8) {
     pack<8>(contacts);
   } else {
