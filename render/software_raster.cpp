@@ -1,0 +1,235 @@
+/// @file software_raster.cpp
+#include "render/software_raster.h"
+
+#include "render/easy_font.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace impulse2d::render {
+
+namespace {
+
+// Window rows per band: each band is one task of the pool, its pixels written by it alone.
+constexpr int kBandRows = 16;
+
+// A premultiplied colour, as a fragment program outputs it.
+struct Premultiplied {
+  float r = 0.0f;
+  float g = 0.0f;
+  float b = 0.0f;
+  float a = 0.0f;
+};
+
+// A colour byte as GL normalises it (c / 255), and the reverse conversion of the blended
+// value: clamped, then rounded half up without a libm call (as the batches' colour bytes are).
+struct ByteScale {
+  float value[256];
+  ByteScale() {
+    for (int i = 0; i < 256; ++i) value[i] = static_cast<float>(i) / 255.0f;
+  }
+};
+const ByteScale byte_scale;
+
+std::uint8_t to_byte(float value) {
+  const float clamped = std::min(std::max(value, 0.0f), 1.0f);
+  return static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
+}
+
+struct Rgba {
+  float r, g, b, a;
+};
+
+Rgba normalised(const std::uint8_t (&color)[4]) {
+  return Rgba{byte_scale.value[color[0]], byte_scale.value[color[1]], byte_scale.value[color[2]],
+              byte_scale.value[color[3]]};
+}
+
+float saturate(float value) { return std::min(std::max(value, 0.0f), 1.0f); }
+
+// Coverage of the rectangle with half extents (hx, hy) centred on the origin at p.
+float rectangle(float px, float py, float hx, float hy) {
+  return saturate(hx + 0.5f - std::abs(px)) * saturate(hy + 0.5f - std::abs(py));
+}
+
+// The pixel centre in a shape vertex's frame (origin and unit x axis).
+vec2 in_frame(const ShapeVertex& shape, float x, float y) {
+  const float dx = x - shape.frame[0];
+  const float dy = y - shape.frame[1];
+  return vec2(dx * shape.frame[2] + dy * shape.frame[3], shape.frame[2] * dy - shape.frame[3] * dx);
+}
+
+// The fill under the line (a ring or outline), premultiplied: both alphas already include coverage.
+Premultiplied fill_under_line(const Rgba& fill, float fill_alpha, const Rgba& line, float line_alpha) {
+  const float under = fill_alpha * (1.0f - line_alpha);
+  return Premultiplied{line.r * line_alpha + fill.r * under, line.g * line_alpha + fill.g * under,
+                       line.b * line_alpha + fill.b * under, line_alpha + under};
+}
+
+Premultiplied solid(const Rgba& color, float coverage) {
+  const float alpha = color.a * coverage;
+  return Premultiplied{color.r * alpha, color.g * alpha, color.b * alpha, alpha};
+}
+
+// Whether the pixel centre p lies in triangle (a, b, c): inside all three edges, or on an
+// edge that the triangle owns (one pointing up, or left when flat, once counter-clockwise),
+// so that two triangles sharing an edge never both cover a pixel centre on it.
+bool inside_triangle(vec2 a, vec2 b, vec2 c, vec2 p) {
+  const float area = cross(b - a, c - a);
+  if (!(area != 0.0f)) return false;
+  const float orientation = area > 0.0f ? 1.0f : -1.0f;
+  const vec2 corners[3] = {a, b, c};
+  for (int i = 0; i < 3; ++i) {
+    const vec2 edge = orientation * (corners[(i + 1) % 3] - corners[i]);
+    const float side = orientation * cross(corners[(i + 1) % 3] - corners[i], p - corners[i]);
+    if (side < 0.0f) return false;
+    if (side == 0.0f && !(edge.y > 0.0f || (edge.y == 0.0f && edge.x < 0.0f))) return false;
+  }
+  return true;
+}
+
+// Blends `shade(x, y)` (a premultiplied colour at the window pixel centre) over the pixels
+// of `primitive` in window rows [first_row, last_row].
+template <typename Shade>
+void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame, const Shade& shade) {
+  const std::size_t stride = frame.stride();
+  for (int row = std::max(primitive.bottom, first_row); row <= std::min(primitive.top, last_row); ++row) {
+    // GL's rows count from the bottom; the frame's from the top.
+    std::uint8_t* pixel = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride +
+                          static_cast<std::size_t>(primitive.left) * 4;
+    const float y = static_cast<float>(row) + 0.5f;
+    for (int column = primitive.left; column <= primitive.right; ++column, pixel += 4) {
+      const Premultiplied source = shade(static_cast<float>(column) + 0.5f, y);
+      if (!(source.a > 0.0f)) continue;  // nothing over this pixel: it keeps its bytes
+      const float keep = 1.0f - source.a;
+      pixel[0] = to_byte(source.r + byte_scale.value[pixel[0]] * keep);
+      pixel[1] = to_byte(source.g + byte_scale.value[pixel[1]] * keep);
+      pixel[2] = to_byte(source.b + byte_scale.value[pixel[2]] * keep);
+      pixel[3] = to_byte(source.a + byte_scale.value[pixel[3]] * keep);
+    }
+  }
+}
+
+// The coverage formulas of primitive_shaders.cpp, kind by kind.
+void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primitive, int first_row, int last_row,
+                    Frame& frame) {
+  switch (primitive.kind) {
+    case PrimitiveKind::polygon: {
+      const PolygonVertex& shape = batch.polygons[primitive.index];
+      const Rgba fill = normalised(shape.fill);
+      const Rgba line = normalised(shape.line);
+      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+        const float px = x - shape.origin[0];
+        const float py = y - shape.origin[1];
+        float distance = shape.edges[0][0] * px + shape.edges[0][1] * py - shape.edges[0][2];
+        for (int i = 1; i < polygon_primitive_edges; ++i) {
+          distance = std::max(distance, shape.edges[i][0] * px + shape.edges[i][1] * py - shape.edges[i][2]);
+        }
+        const float fill_alpha = fill.a * saturate(0.5f - distance);
+        const float line_alpha = line.a * saturate(shape.origin[2] + 0.5f - std::abs(distance));
+        return fill_under_line(fill, fill_alpha, line, line_alpha);
+      });
+      return;
+    }
+    case PrimitiveKind::solid: {
+      const FillQuad& quad = batch.fill_quads[primitive.index];
+      const Rgba fill = normalised(quad.fill);
+      const Premultiplied color = solid(fill, 1.0f);
+      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+        const vec2 p(x, y);
+        const bool inside = inside_triangle(quad.corners[0], quad.corners[1], quad.corners[2], p) ||
+                            inside_triangle(quad.corners[0], quad.corners[2], quad.corners[3], p);
+        return inside ? color : Premultiplied{};
+      });
+      return;
+    }
+    case PrimitiveKind::disc: {
+      const ShapeVertex& shape = batch.shapes[primitive.index];
+      const Rgba fill = normalised(shape.fill);
+      const Rgba line = normalised(shape.line);
+      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+        const vec2 p = in_frame(shape, x, y);
+        const float r = std::sqrt(p.x * p.x + p.y * p.y);
+        const float disc = saturate(shape.disc[0] + 0.5f - r);
+        const float ring = saturate(shape.disc[1] + 0.5f - r) * saturate(r - shape.disc[2] + 0.5f);
+        return fill_under_line(fill, fill.a * disc, line, line.a * ring);
+      });
+      return;
+    }
+    case PrimitiveKind::box: {
+      const ShapeVertex& shape = batch.shapes[primitive.index];
+      const Rgba fill = normalised(shape.fill);
+      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+        const vec2 p = in_frame(shape, x, y);
+        float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
+        if (shape.box[3] > 0.0f) coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
+        return solid(fill, coverage);
+      });
+      return;
+    }
+    case PrimitiveKind::arrow: {
+      const ShapeVertex& shape = batch.shapes[primitive.index];
+      const Rgba fill = normalised(shape.fill);
+      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+        const vec2 p = in_frame(shape, x, y);
+        const float side = (p.x - shape.head[1]) * shape.head[2] + std::abs(p.y) * shape.head[3];
+        const float head = saturate(0.5f - std::max(std::max(shape.head[0] - p.x, p.x - shape.head[1]), side));
+        return solid(fill, std::max(rectangle(p.x, p.y, shape.box[0], shape.box[1]), head));
+      });
+      return;
+    }
+    case PrimitiveKind::text: {
+      const TextVertex& run = batch.texts[primitive.index];
+      const Rgba fill = normalised(run.fill);
+      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+        // The pixel centre from the run's top-left corner (y down), and the font pixel under it.
+        const float qx = x - run.run[0];
+        const float qy = run.run[1] - y;
+        const float inside = saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
+        if (!(inside > 0.0f)) return Premultiplied{};
+        const int column = std::min(static_cast<int>(qx * run.font_scale), 31);
+        const int row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
+        const int bit = std::min(std::max(column * font_glyph_rows + row, 0), 255);
+        const bool inked = ((run.bits[bit >> 5] >> (bit & 31)) & 1u) != 0;
+        return inked ? solid(fill, inside) : Premultiplied{};
+      });
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+void SoftwareBatch::clear() {
+  primitives.clear();
+  shapes.clear();
+  polygons.clear();
+  texts.clear();
+  fill_quads.clear();
+}
+
+SoftwareRaster::SoftwareRaster(int thread_count) : pool_(thread_count) {}
+
+void SoftwareRaster::draw(const SoftwareBatch& batch, Frame& frame) {
+  if (batch.primitives.empty() || frame.height <= 0) return;
+  // Each band's primitives, in drawing order.
+  const int band_count = (frame.height + kBandRows - 1) / kBandRows;
+  band_primitives_.resize(static_cast<std::size_t>(band_count));
+  for (std::vector<std::uint32_t>& band : band_primitives_) band.clear();
+  for (std::size_t i = 0; i < batch.primitives.size(); ++i) {
+    const SoftwarePrimitive& primitive = batch.primitives[i];
+    for (int band = primitive.bottom / kBandRows; band <= primitive.top / kBandRows; ++band) {
+      band_primitives_[static_cast<std::size_t>(band)].push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  pool_.run(band_count, [&](int band) {
+    const int first_row = band * kBandRows;
+    const int last_row = std::min(first_row + kBandRows, frame.height) - 1;
+    for (const std::uint32_t i : band_primitives_[static_cast<std::size_t>(band)]) {
+      draw_primitive(batch, batch.primitives[i], first_row, last_row, frame);
+    }
+  });
+}
+
+}  // namespace impulse2d::render
