@@ -199,7 +199,7 @@ std::uint32_t PrimitiveRenderer::add_software_parameters(const FillQuad& shape) 
 }
 
 template <typename V>
-void PrimitiveRenderer::push_software(PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper) {
+SoftwarePrimitive* PrimitiveRenderer::push_software(PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper) {
   // The pixels whose centres (column + 0.5, row + 0.5) lie in [lower, upper], inside the frame;
   // the comparisons also reject NaN bounds.
   const float width = static_cast<float>(camera_.width());
@@ -208,7 +208,9 @@ void PrimitiveRenderer::push_software(PrimitiveKind kind, const V& shape, vec2 l
   const float bottom = std::ceil(lower.y - 0.5f);
   const float right = std::floor(upper.x - 0.5f);
   const float top = std::floor(upper.y - 0.5f);
-  if (!(left <= right && bottom <= top && right >= 0.0f && top >= 0.0f && left < width && bottom < height)) return;
+  if (!(left <= right && bottom <= top && right >= 0.0f && top >= 0.0f && left < width && bottom < height)) {
+    return nullptr;
+  }
   SoftwarePrimitive primitive;
   primitive.kind = kind;
   primitive.left = static_cast<int>(std::max(left, 0.0f));
@@ -216,7 +218,7 @@ void PrimitiveRenderer::push_software(PrimitiveKind kind, const V& shape, vec2 l
   primitive.right = static_cast<int>(std::min(right, width - 1.0f));
   primitive.top = static_cast<int>(std::min(top, height - 1.0f));
   primitive.index = add_software_parameters(shape);
-  software_open_[static_cast<int>(kind)].push_back(primitive);
+  return &software_open_[static_cast<int>(kind)].emplace_back(primitive);
 }
 
 vec2 PrimitiveRenderer::to_window(vec2 world) const {
@@ -380,7 +382,10 @@ void PrimitiveRenderer::push_shape(PrimitiveKind kind, const ShapeVertex& shape,
   }
   ++primitive_count_;
   if (software_layers_) {
-    push_software(kind, shape, box_lower, box_upper);
+    if (SoftwarePrimitive* primitive = push_software(kind, shape, box_lower, box_upper)) {
+      primitive->frame_lower = low;
+      primitive->frame_upper = high;
+    }
     return;
   }
   const std::vector<Run>& runs = batch(kind).open_runs;

@@ -138,8 +138,9 @@ class PrimitiveRenderer final : public DebugDraw {
   void push_text(vec2 window_top_left, const std::string& text, Color color, float scale);
   // Adds a CPU-layer primitive of `kind` with parameters `shape` covering the window rectangle
   // [lower, upper] to the open layer (nothing when no pixel centre of the frame lies in it).
+  // Returns the primitive added, or nullptr.
   template <typename V>
-  void push_software(PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper);
+  SoftwarePrimitive* push_software(PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper);
   // Appends `shape` to the CPU batch's parameters of its kind; returns its index there.
   std::uint32_t add_software_parameters(const ShapeVertex& shape);
   std::uint32_t add_software_parameters(const PolygonVertex& shape);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace impulse2d::render {
 
@@ -89,24 +90,115 @@ bool inside_triangle(vec2 a, vec2 b, vec2 c, vec2 p) {
   return true;
 }
 
+// How far beyond a primitive's frame rectangle, in pixels, rows are still scanned: the
+// spans below are computed differently from the coverage, so they are widened (and a box
+// outline's hole narrowed) a little rather than trusted to the last bit.
+constexpr float kSpanSlack = 0.05f;
+
+// Up to two runs of columns of one row: [first[i], last[i]] for i < count.
+struct RowSpans {
+  int first[2] = {0, 0};
+  int last[2] = {-1, -1};
+  int count = 0;
+};
+
+// The pixel columns whose centres lie in [from, to], within [left, right].
+RowSpans columns_between(float from, float to, int left, int right) {
+  RowSpans spans;
+  if (!(from <= to)) return spans;
+  const float first = std::max(std::ceil(from - 0.5f), static_cast<float>(left));
+  const float last = std::min(std::floor(to - 0.5f), static_cast<float>(right));
+  if (first <= last) {
+    spans.first[0] = static_cast<int>(first);
+    spans.last[0] = static_cast<int>(last);
+    spans.count = 1;
+  }
+  return spans;
+}
+
+// Narrows [from, to] to the x where low <= slope * x + offset <= high.
+void clip_linear(float slope, float offset, float low, float high, float& from, float& to) {
+  if (slope > 1.0e-6f) {
+    from = std::max(from, (low - offset) / slope);
+    to = std::min(to, (high - offset) / slope);
+  } else if (slope < -1.0e-6f) {
+    from = std::max(from, (high - offset) / slope);
+    to = std::min(to, (low - offset) / slope);
+  } else if (offset < low - kSpanSlack || offset > high + kSpanSlack) {
+    to = from - 1.0f;  // (nearly) constant along the row, and outside
+  }
+}
+
+// The x of row centre `y` whose point lies in the rectangle [lower, upper] of the shape's
+// frame: p.x = ax x + (ay dy - ax ox), p.y = -ay x + (ax dy + ay ox), dy = y - oy.
+void frame_interval(const ShapeVertex& shape, float y, vec2 lower, vec2 upper, float& from, float& to) {
+  const float ax = shape.frame[2];
+  const float ay = shape.frame[3];
+  const float dy = y - shape.frame[1];
+  clip_linear(ax, ay * dy - ax * shape.frame[0], lower.x, upper.x, from, to);
+  clip_linear(-ay, ax * dy + ay * shape.frame[0], lower.y, upper.y, from, to);
+}
+
+// The columns of row centre `y` that the primitive's frame rectangle may cover; a box
+// outline's hole (where its coverage is exactly 1 - 1 = 0) is left out.
+RowSpans frame_columns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, float y, bool outline) {
+  float from = std::numeric_limits<float>::lowest();
+  float to = std::numeric_limits<float>::max();
+  frame_interval(shape, y, primitive.frame_lower, primitive.frame_upper, from, to);
+  RowSpans spans = columns_between(from - kSpanSlack, to + kSpanSlack, primitive.left, primitive.right);
+  if (!outline || spans.count == 0) return spans;
+  const vec2 hole(shape.box[0] - shape.box[3] - 0.5f - kSpanSlack, shape.box[1] - shape.box[3] - 0.5f - kSpanSlack);
+  if (!(hole.x > 0.0f && hole.y > 0.0f)) return spans;
+  float hole_from = std::numeric_limits<float>::lowest();
+  float hole_to = std::numeric_limits<float>::max();
+  frame_interval(shape, y, -hole, hole, hole_from, hole_to);
+  const RowSpans inside = columns_between(hole_from, hole_to, spans.first[0], spans.last[0]);
+  if (inside.count == 0) return spans;
+  // The columns left and right of the hole.
+  RowSpans sides;
+  if (inside.first[0] > spans.first[0]) {
+    sides.first[sides.count] = spans.first[0];
+    sides.last[sides.count++] = inside.first[0] - 1;
+  }
+  if (inside.last[0] < spans.last[0]) {
+    sides.first[sides.count] = inside.last[0] + 1;
+    sides.last[sides.count++] = spans.last[0];
+  }
+  return sides;
+}
+
+// The columns of row centre `y` within the disc's reach (`frame_upper.x`) of its centre.
+RowSpans disc_columns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, float y) {
+  const float reach = primitive.frame_upper.x + kSpanSlack;
+  const float dy = y - shape.frame[1];
+  const float squared = reach * reach - dy * dy;
+  if (!(squared > 0.0f)) return RowSpans{};
+  const float half_width = std::sqrt(squared);
+  return columns_between(shape.frame[0] - half_width, shape.frame[0] + half_width, primitive.left, primitive.right);
+}
+
 // Blends `shade(x, y)` (a premultiplied colour at the window pixel centre) over the pixels
-// of `primitive` in window rows [first_row, last_row].
-template <typename Shade>
-void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame, const Shade& shade) {
+// of `primitive` in window rows [first_row, last_row], in each row those `columns(y)` gives.
+template <typename Columns, typename Shade>
+void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame, const Columns& columns,
+           const Shade& shade) {
   const std::size_t stride = frame.stride();
   for (int row = std::max(primitive.bottom, first_row); row <= std::min(primitive.top, last_row); ++row) {
-    // GL's rows count from the bottom; the frame's from the top.
-    std::uint8_t* pixel = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride +
-                          static_cast<std::size_t>(primitive.left) * 4;
     const float y = static_cast<float>(row) + 0.5f;
-    for (int column = primitive.left; column <= primitive.right; ++column, pixel += 4) {
-      const Premultiplied source = shade(static_cast<float>(column) + 0.5f, y);
-      if (!(source.a > 0.0f)) continue;  // nothing over this pixel: it keeps its bytes
-      const float keep = 1.0f - source.a;
-      pixel[0] = to_byte(source.r + byte_scale.value[pixel[0]] * keep);
-      pixel[1] = to_byte(source.g + byte_scale.value[pixel[1]] * keep);
-      pixel[2] = to_byte(source.b + byte_scale.value[pixel[2]] * keep);
-      pixel[3] = to_byte(source.a + byte_scale.value[pixel[3]] * keep);
+    const RowSpans spans = columns(y);
+    // GL's rows count from the bottom; the frame's from the top.
+    std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
+    for (int span = 0; span < spans.count; ++span) {
+      std::uint8_t* pixel = row_pixels + static_cast<std::size_t>(spans.first[span]) * 4;
+      for (int column = spans.first[span]; column <= spans.last[span]; ++column, pixel += 4) {
+        const Premultiplied source = shade(static_cast<float>(column) + 0.5f, y);
+        if (!(source.a > 0.0f)) continue;  // nothing over this pixel: it keeps its bytes
+        const float keep = 1.0f - source.a;
+        pixel[0] = to_byte(source.r + byte_scale.value[pixel[0]] * keep);
+        pixel[1] = to_byte(source.g + byte_scale.value[pixel[1]] * keep);
+        pixel[2] = to_byte(source.b + byte_scale.value[pixel[2]] * keep);
+        pixel[3] = to_byte(source.a + byte_scale.value[pixel[3]] * keep);
+      }
     }
   }
 }
@@ -114,12 +206,13 @@ void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Fram
 // The coverage formulas of primitive_shaders.cpp, kind by kind.
 void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primitive, int first_row, int last_row,
                     Frame& frame) {
+  const auto whole_rows = [&](float) { return columns_between(-1.0e30f, 1.0e30f, primitive.left, primitive.right); };
   switch (primitive.kind) {
     case PrimitiveKind::polygon: {
       const PolygonVertex& shape = batch.polygons[primitive.index];
       const Rgba fill = normalised(shape.fill);
       const Rgba line = normalised(shape.line);
-      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, whole_rows, [&](float x, float y) {
         const float px = x - shape.origin[0];
         const float py = y - shape.origin[1];
         float distance = shape.edges[0][0] * px + shape.edges[0][1] * py - shape.edges[0][2];
@@ -136,7 +229,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       const FillQuad& quad = batch.fill_quads[primitive.index];
       const Rgba fill = normalised(quad.fill);
       const Premultiplied color = solid(fill, 1.0f);
-      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, whole_rows, [&](float x, float y) {
         const vec2 p(x, y);
         const bool inside = inside_triangle(quad.corners[0], quad.corners[1], quad.corners[2], p) ||
                             inside_triangle(quad.corners[0], quad.corners[2], quad.corners[3], p);
@@ -148,7 +241,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       const ShapeVertex& shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
       const Rgba line = normalised(shape.line);
-      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, [&](float y) { return disc_columns(primitive, shape, y); }, [&](float x, float y) {
         const vec2 p = in_frame(shape, x, y);
         const float r = std::sqrt(p.x * p.x + p.y * p.y);
         const float disc = saturate(shape.disc[0] + 0.5f - r);
@@ -160,7 +253,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::box: {
       const ShapeVertex& shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, [&](float y) { return frame_columns(primitive, shape, y, shape.box[3] > 0.0f); }, [&](float x, float y) {
         const vec2 p = in_frame(shape, x, y);
         float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
         if (shape.box[3] > 0.0f) coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
@@ -171,7 +264,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::arrow: {
       const ShapeVertex& shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, [&](float y) { return frame_columns(primitive, shape, y, false); }, [&](float x, float y) {
         const vec2 p = in_frame(shape, x, y);
         const float side = (p.x - shape.head[1]) * shape.head[2] + std::abs(p.y) * shape.head[3];
         const float head = saturate(0.5f - std::max(std::max(shape.head[0] - p.x, p.x - shape.head[1]), side));
@@ -182,7 +275,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::text: {
       const TextVertex& run = batch.texts[primitive.index];
       const Rgba fill = normalised(run.fill);
-      blend(primitive, first_row, last_row, frame, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, whole_rows, [&](float x, float y) {
         // The pixel centre from the run's top-left corner (y down), and the font pixel under it.
         const float qx = x - run.run[0];
         const float qy = run.run[1] - y;

@@ -26,6 +26,10 @@ struct SoftwarePrimitive {
   int bottom = 0;                           ///< first row from the bottom
   int right = -1;                           ///< last column
   int top = -1;                             ///< last row from the bottom
+  /// Disc, box and arrow kinds: the rectangle of the primitive's own frame (`ShapeVertex::frame`)
+  /// outside which its coverage is 0, so rows are scanned only where it lies.
+  vec2 frame_lower = vec2(-1.0e30f);
+  vec2 frame_upper = vec2(1.0e30f);  ///< see `frame_lower`
 };
 
 /// Two triangles (0, 1, 2) and (0, 2, 3) of a polygon's fill, window pixels, coverage 1
