@@ -193,11 +193,11 @@ void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Fram
       for (int column = spans.first[span]; column <= spans.last[span]; ++column, pixel += 4) {
         const Premultiplied source = shade(static_cast<float>(column) + 0.5f, y);
         if (!(source.a > 0.0f)) continue;  // nothing over this pixel: it keeps its bytes
+        // Alpha blends as source.a + 1 (1 - source.a) = 1 over an opaque frame: it stays 255.
         const float keep = 1.0f - source.a;
         pixel[0] = to_byte(source.r + byte_scale.value[pixel[0]] * keep);
         pixel[1] = to_byte(source.g + byte_scale.value[pixel[1]] * keep);
         pixel[2] = to_byte(source.b + byte_scale.value[pixel[2]] * keep);
-        pixel[3] = to_byte(source.a + byte_scale.value[pixel[3]] * keep);
       }
     }
   }
@@ -209,10 +209,10 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
   const auto whole_rows = [&](float) { return columns_between(-1.0e30f, 1.0e30f, primitive.left, primitive.right); };
   switch (primitive.kind) {
     case PrimitiveKind::polygon: {
-      const PolygonVertex& shape = batch.polygons[primitive.index];
+      const PolygonVertex shape = batch.polygons[primitive.index];
       const Rgba fill = normalised(shape.fill);
       const Rgba line = normalised(shape.line);
-      blend(primitive, first_row, last_row, frame, whole_rows, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
         const float px = x - shape.origin[0];
         const float py = y - shape.origin[1];
         float distance = shape.edges[0][0] * px + shape.edges[0][1] * py - shape.edges[0][2];
@@ -226,10 +226,10 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       return;
     }
     case PrimitiveKind::solid: {
-      const FillQuad& quad = batch.fill_quads[primitive.index];
+      const FillQuad quad = batch.fill_quads[primitive.index];
       const Rgba fill = normalised(quad.fill);
       const Premultiplied color = solid(fill, 1.0f);
-      blend(primitive, first_row, last_row, frame, whole_rows, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
         const vec2 p(x, y);
         const bool inside = inside_triangle(quad.corners[0], quad.corners[1], quad.corners[2], p) ||
                             inside_triangle(quad.corners[0], quad.corners[2], quad.corners[3], p);
@@ -238,10 +238,10 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       return;
     }
     case PrimitiveKind::disc: {
-      const ShapeVertex& shape = batch.shapes[primitive.index];
+      const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
       const Rgba line = normalised(shape.line);
-      blend(primitive, first_row, last_row, frame, [&](float y) { return disc_columns(primitive, shape, y); }, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, [&](float y) { return disc_columns(primitive, shape, y); }, [=](float x, float y) {
         const vec2 p = in_frame(shape, x, y);
         const float r = std::sqrt(p.x * p.x + p.y * p.y);
         const float disc = saturate(shape.disc[0] + 0.5f - r);
@@ -251,9 +251,9 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       return;
     }
     case PrimitiveKind::box: {
-      const ShapeVertex& shape = batch.shapes[primitive.index];
+      const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend(primitive, first_row, last_row, frame, [&](float y) { return frame_columns(primitive, shape, y, shape.box[3] > 0.0f); }, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, [&](float y) { return frame_columns(primitive, shape, y, shape.box[3] > 0.0f); }, [=](float x, float y) {
         const vec2 p = in_frame(shape, x, y);
         float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
         if (shape.box[3] > 0.0f) coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
@@ -262,9 +262,9 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       return;
     }
     case PrimitiveKind::arrow: {
-      const ShapeVertex& shape = batch.shapes[primitive.index];
+      const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend(primitive, first_row, last_row, frame, [&](float y) { return frame_columns(primitive, shape, y, false); }, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, [&](float y) { return frame_columns(primitive, shape, y, false); }, [=](float x, float y) {
         const vec2 p = in_frame(shape, x, y);
         const float side = (p.x - shape.head[1]) * shape.head[2] + std::abs(p.y) * shape.head[3];
         const float head = saturate(0.5f - std::max(std::max(shape.head[0] - p.x, p.x - shape.head[1]), side));
@@ -273,9 +273,9 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       return;
     }
     case PrimitiveKind::text: {
-      const TextVertex& run = batch.texts[primitive.index];
+      const TextVertex run = batch.texts[primitive.index];
       const Rgba fill = normalised(run.fill);
-      blend(primitive, first_row, last_row, frame, whole_rows, [&](float x, float y) {
+      blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
         // The pixel centre from the run's top-left corner (y down), and the font pixel under it.
         const float qx = x - run.run[0];
         const float qy = run.run[1] - y;

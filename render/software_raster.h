@@ -60,8 +60,9 @@ class SoftwareRaster {
 
   /// Threads that rasterise (the caller included).
   int thread_count() const { return pool_.thread_count(); }
-  /// Blends every primitive of `batch`, in order, over `frame` (rows top first, as read
-  /// back; a primitive's rows count from the bottom). Primitives must lie inside the frame.
+  /// Blends every primitive of `batch`, in order, over `frame` (opaque, rows top first, as
+  /// read back; a primitive's rows count from the bottom). Primitives must lie inside the
+  /// frame. Alpha stays 255.
   void draw(const SoftwareBatch& batch, Frame& frame);
 
  private:
