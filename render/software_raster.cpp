@@ -24,7 +24,7 @@ struct Premultiplied {
 };
 
 // A colour byte as GL normalises it (c / 255), and the reverse conversion of the blended
-// value: clamped, then rounded half up without a libm call (as the batches' colour bytes are).
+// value: clamped to 1, then rounded half up without a libm call (as the batches' colour bytes are).
 struct ByteScale {
   float value[256];
   ByteScale() {
@@ -34,8 +34,9 @@ struct ByteScale {
 const ByteScale byte_scale;
 
 std::uint8_t to_byte(float value) {
-  const float clamped = std::min(std::max(value, 0.0f), 1.0f);
-  return static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
+  // Blended values are sums of products of non-negative numbers: only rounding takes them
+  // past 1.
+  return static_cast<std::uint8_t>(std::min(value, 1.0f) * 255.0f + 0.5f);
 }
 
 struct Rgba {
@@ -102,70 +103,127 @@ struct RowSpans {
   int count = 0;
 };
 
-// The pixel columns whose centres lie in [from, to], within [left, right].
+// The pixel columns whose centres lie in [from, to], within [left, right]. Rounds with
+// integer conversions (the bounds are first brought within a column of [left, right]).
 RowSpans columns_between(float from, float to, int left, int right) {
   RowSpans spans;
   if (!(from <= to)) return spans;
-  const float first = std::max(std::ceil(from - 0.5f), static_cast<float>(left));
-  const float last = std::min(std::floor(to - 0.5f), static_cast<float>(right));
+  // Column c's centre c + 0.5 lies in [from, to] when from - 0.5 <= c <= to - 0.5.
+  const float low = std::min(std::max(from - 0.5f, static_cast<float>(left) - 1.0f), static_cast<float>(right) + 1.0f);
+  const float high = std::min(std::max(to - 0.5f, static_cast<float>(left) - 1.0f), static_cast<float>(right) + 1.0f);
+  int first = static_cast<int>(low);  // truncation: the ceiling for negative values, else below it
+  if (static_cast<float>(first) < low) ++first;
+  int last = static_cast<int>(high);  // the floor for non-negative values, else above it
+  if (static_cast<float>(last) > high) --last;
+  first = std::max(first, left);
+  last = std::min(last, right);
   if (first <= last) {
-    spans.first[0] = static_cast<int>(first);
-    spans.last[0] = static_cast<int>(last);
+    spans.first[0] = first;
+    spans.last[0] = last;
     spans.count = 1;
   }
   return spans;
 }
 
-// Narrows [from, to] to the x where low <= slope * x + offset <= high.
-void clip_linear(float slope, float offset, float low, float high, float& from, float& to) {
-  if (slope > 1.0e-6f) {
-    from = std::max(from, (low - offset) / slope);
-    to = std::min(to, (high - offset) / slope);
-  } else if (slope < -1.0e-6f) {
-    from = std::max(from, (high - offset) / slope);
-    to = std::min(to, (low - offset) / slope);
-  } else if (offset < low - kSpanSlack || offset > high + kSpanSlack) {
-    to = from - 1.0f;  // (nearly) constant along the row, and outside
+// Where slope_x x + slope_y y + offset, a linear function of the pixel centre, lies in
+// [low, high] along the row at y: an x range whose ends are linear in y, or, when it
+// (nearly) does not depend on x, a test of the row alone.
+struct RowLimit {
+  bool along_row = false;  // the ends below apply; else the row test
+  float from_base = 0.0f;  // x from = from_base + from_slope y
+  float from_slope = 0.0f;
+  float to_base = 0.0f;    // x to = to_base + to_slope y
+  float to_slope = 0.0f;
+  float slope_y = 0.0f;    // the row test: low <= slope_y y + offset <= high
+  float offset = 0.0f;
+  float low = 0.0f;
+  float high = 0.0f;
+};
+
+RowLimit row_limit(float slope_x, float slope_y, float offset, float low, float high) {
+  RowLimit limit;
+  limit.slope_y = slope_y;
+  limit.offset = offset;
+  limit.low = low - kSpanSlack;
+  limit.high = high + kSpanSlack;
+  if (std::abs(slope_x) > 1.0e-6f) {
+    limit.along_row = true;
+    const float entry = slope_x > 0.0f ? low : high;
+    const float exit = slope_x > 0.0f ? high : low;
+    limit.from_base = (entry - offset) / slope_x;
+    limit.from_slope = -slope_y / slope_x;
+    limit.to_base = (exit - offset) / slope_x;
+    limit.to_slope = -slope_y / slope_x;
+  }
+  return limit;
+}
+
+// Narrows [from, to] to the x that `limit` allows on the row at y.
+void apply(const RowLimit& limit, float y, float& from, float& to) {
+  if (limit.along_row) {
+    from = std::max(from, limit.from_base + limit.from_slope * y);
+    to = std::min(to, limit.to_base + limit.to_slope * y);
+  } else {
+    const float value = limit.slope_y * y + limit.offset;
+    if (value < limit.low || value > limit.high) to = from - 1.0f;
   }
 }
 
-// The x of row centre `y` whose point lies in the rectangle [lower, upper] of the shape's
-// frame: p.x = ax x + (ay dy - ax ox), p.y = -ay x + (ax dy + ay ox), dy = y - oy.
-void frame_interval(const ShapeVertex& shape, float y, vec2 lower, vec2 upper, float& from, float& to) {
-  const float ax = shape.frame[2];
-  const float ay = shape.frame[3];
-  const float dy = y - shape.frame[1];
-  clip_linear(ax, ay * dy - ax * shape.frame[0], lower.x, upper.x, from, to);
-  clip_linear(-ay, ax * dy + ay * shape.frame[0], lower.y, upper.y, from, to);
-}
+// The columns of each row that a disc, box or arrow may cover: its frame rectangle
+// [lower, upper] (p.x = ax x + ay y - (ax ox + ay oy), p.y = -ay x + ax y + (ay ox - ax oy)),
+// without a box outline's hole (where its coverage is exactly 1 - 1 = 0).
+class FrameColumns {
+ public:
+  FrameColumns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, bool outline)
+      : left_(primitive.left), right_(primitive.right) {
+    limits(shape, primitive.frame_lower, primitive.frame_upper, outer_);
+    const vec2 hole(shape.box[0] - shape.box[3] - 0.5f - 2.0f * kSpanSlack,
+                    shape.box[1] - shape.box[3] - 0.5f - 2.0f * kSpanSlack);
+    has_hole_ = outline && hole.x > 0.0f && hole.y > 0.0f;
+    if (has_hole_) limits(shape, -hole, hole, hole_);
+  }
 
-// The columns of row centre `y` that the primitive's frame rectangle may cover; a box
-// outline's hole (where its coverage is exactly 1 - 1 = 0) is left out.
-RowSpans frame_columns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, float y, bool outline) {
-  float from = std::numeric_limits<float>::lowest();
-  float to = std::numeric_limits<float>::max();
-  frame_interval(shape, y, primitive.frame_lower, primitive.frame_upper, from, to);
-  RowSpans spans = columns_between(from - kSpanSlack, to + kSpanSlack, primitive.left, primitive.right);
-  if (!outline || spans.count == 0) return spans;
-  const vec2 hole(shape.box[0] - shape.box[3] - 0.5f - kSpanSlack, shape.box[1] - shape.box[3] - 0.5f - kSpanSlack);
-  if (!(hole.x > 0.0f && hole.y > 0.0f)) return spans;
-  float hole_from = std::numeric_limits<float>::lowest();
-  float hole_to = std::numeric_limits<float>::max();
-  frame_interval(shape, y, -hole, hole, hole_from, hole_to);
-  const RowSpans inside = columns_between(hole_from, hole_to, spans.first[0], spans.last[0]);
-  if (inside.count == 0) return spans;
-  // The columns left and right of the hole.
-  RowSpans sides;
-  if (inside.first[0] > spans.first[0]) {
-    sides.first[sides.count] = spans.first[0];
-    sides.last[sides.count++] = inside.first[0] - 1;
+  RowSpans operator()(float y) const {
+    float from = std::numeric_limits<float>::lowest();
+    float to = std::numeric_limits<float>::max();
+    apply(outer_[0], y, from, to);
+    apply(outer_[1], y, from, to);
+    const RowSpans spans = columns_between(from - kSpanSlack, to + kSpanSlack, left_, right_);
+    if (!has_hole_ || spans.count == 0) return spans;
+    float hole_from = std::numeric_limits<float>::lowest();
+    float hole_to = std::numeric_limits<float>::max();
+    apply(hole_[0], y, hole_from, hole_to);
+    apply(hole_[1], y, hole_from, hole_to);
+    const RowSpans inside = columns_between(hole_from, hole_to, spans.first[0], spans.last[0]);
+    if (inside.count == 0) return spans;
+    RowSpans sides;  // the columns left and right of the hole
+    if (inside.first[0] > spans.first[0]) {
+      sides.first[sides.count] = spans.first[0];
+      sides.last[sides.count++] = inside.first[0] - 1;
+    }
+    if (inside.last[0] < spans.last[0]) {
+      sides.first[sides.count] = inside.last[0] + 1;
+      sides.last[sides.count++] = spans.last[0];
+    }
+    return sides;
   }
-  if (inside.last[0] < spans.last[0]) {
-    sides.first[sides.count] = inside.last[0] + 1;
-    sides.last[sides.count++] = spans.last[0];
+
+ private:
+  static void limits(const ShapeVertex& shape, vec2 lower, vec2 upper, RowLimit (&out)[2]) {
+    const float ax = shape.frame[2];
+    const float ay = shape.frame[3];
+    const float ox = shape.frame[0];
+    const float oy = shape.frame[1];
+    out[0] = row_limit(ax, ay, -(ax * ox + ay * oy), lower.x, upper.x);
+    out[1] = row_limit(-ay, ax, ay * ox - ax * oy, lower.y, upper.y);
   }
-  return sides;
-}
+
+  int left_;
+  int right_;
+  RowLimit outer_[2];
+  RowLimit hole_[2];
+  bool has_hole_ = false;
+};
 
 // The columns of row centre `y` within the disc's reach (`frame_upper.x`) of its centre.
 RowSpans disc_columns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, float y) {
@@ -253,7 +311,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::box: {
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend(primitive, first_row, last_row, frame, [&](float y) { return frame_columns(primitive, shape, y, shape.box[3] > 0.0f); }, [=](float x, float y) {
+      blend(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, shape.box[3] > 0.0f), [=](float x, float y) {
         const vec2 p = in_frame(shape, x, y);
         float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
         if (shape.box[3] > 0.0f) coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
@@ -264,7 +322,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::arrow: {
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend(primitive, first_row, last_row, frame, [&](float y) { return frame_columns(primitive, shape, y, false); }, [=](float x, float y) {
+      blend(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, false), [=](float x, float y) {
         const vec2 p = in_frame(shape, x, y);
         const float side = (p.x - shape.head[1]) * shape.head[2] + std::abs(p.y) * shape.head[3];
         const float head = saturate(0.5f - std::max(std::max(shape.head[0] - p.x, p.x - shape.head[1]), side));
