@@ -13,8 +13,8 @@
 
 namespace impulse2d::render {
 
-/// Runs `task(0) .. task(count - 1)` on `thread_count` threads (the caller and
-/// `thread_count - 1` workers started once), each task exactly once, in no fixed order or
+/// Runs numbered tasks, 0 to the task count less one, on a fixed number of threads (the
+/// caller and the workers started once), each task exactly once, in no fixed order or
 /// thread; `run` returns when all are done. Tasks must not throw.
 class ThreadPool {
  public:
