@@ -337,13 +337,14 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
         // The pixel centre from the run's top-left corner (y down), and the font pixel under it.
         const float qx = x - run.run[0];
         const float qy = run.run[1] - y;
-        const float inside = saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
-        if (!(inside > 0.0f)) return Premultiplied{};
+        // The ink test first: most of a run's pixels have none. (The pixel lies within a pixel
+        // of the run, so the conversions are in range.)
         const int column = std::min(static_cast<int>(qx * run.font_scale), 31);
         const int row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
         const int bit = std::min(std::max(column * font_glyph_rows + row, 0), 255);
-        const bool inked = ((run.bits[bit >> 5] >> (bit & 31)) & 1u) != 0;
-        return inked ? solid(fill, inside) : Premultiplied{};
+        if (((run.bits[bit >> 5] >> (bit & 31)) & 1u) == 0) return Premultiplied{};
+        const float inside = saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
+        return solid(fill, inside);
       });
       return;
     }
