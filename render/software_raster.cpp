@@ -39,6 +39,7 @@ std::uint8_t to_byte(float value) {
   return static_cast<std::uint8_t>(std::min(value, 1.0f) * 255.0f + 0.5f);
 }
 
+// A straight (not premultiplied) colour, channels 0..1.
 struct Rgba {
   float r, g, b, a;
 };
@@ -69,7 +70,8 @@ Premultiplied fill_under_line(const Rgba& fill, float fill_alpha, const Rgba& li
                        line.b * line_alpha + fill.b * under, line_alpha + under};
 }
 
-Premultiplied solid(const Rgba& color, float coverage) {
+// `color` over `coverage` of the pixel, premultiplied.
+Premultiplied premultiplied(const Rgba& color, float coverage) {
   const float alpha = color.a * coverage;
   return Premultiplied{color.r * alpha, color.g * alpha, color.b * alpha, alpha};
 }
@@ -140,6 +142,7 @@ struct RowLimit {
   float high = 0.0f;
 };
 
+// The `RowLimit` of low <= slope_x x + slope_y y + offset <= high.
 RowLimit row_limit(float slope_x, float slope_y, float offset, float low, float high) {
   RowLimit limit;
   limit.slope_y = slope_y;
@@ -165,7 +168,10 @@ void apply(const RowLimit& limit, float y, float& from, float& to) {
     to = std::min(to, limit.to_base + limit.to_slope * y);
   } else {
     const float value = limit.slope_y * y + limit.offset;
-    if (value < limit.low || value > limit.high) to = from - 1.0f;
+    if (value < limit.low || value > limit.high) {  // empty, and stays so
+      from = std::numeric_limits<float>::max();
+      to = std::numeric_limits<float>::lowest();
+    }
   }
 }
 
@@ -286,7 +292,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::solid: {
       const FillQuad quad = batch.fill_quads[primitive.index];
       const Rgba fill = normalised(quad.fill);
-      const Premultiplied color = solid(fill, 1.0f);
+      const Premultiplied color = premultiplied(fill, 1.0f);
       blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
         const vec2 p(x, y);
         const bool inside = inside_triangle(quad.corners[0], quad.corners[1], quad.corners[2], p) ||
@@ -315,7 +321,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
         const vec2 p = in_frame(shape, x, y);
         float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
         if (shape.box[3] > 0.0f) coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
-        return solid(fill, coverage);
+        return premultiplied(fill, coverage);
       });
       return;
     }
@@ -326,7 +332,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
         const vec2 p = in_frame(shape, x, y);
         const float side = (p.x - shape.head[1]) * shape.head[2] + std::abs(p.y) * shape.head[3];
         const float head = saturate(0.5f - std::max(std::max(shape.head[0] - p.x, p.x - shape.head[1]), side));
-        return solid(fill, std::max(rectangle(p.x, p.y, shape.box[0], shape.box[1]), head));
+        return premultiplied(fill, std::max(rectangle(p.x, p.y, shape.box[0], shape.box[1]), head));
       });
       return;
     }
@@ -344,7 +350,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
         const int bit = std::min(std::max(column * font_glyph_rows + row, 0), 255);
         if (((run.bits[bit >> 5] >> (bit & 31)) & 1u) == 0) return Premultiplied{};
         const float inside = saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
-        return solid(fill, inside);
+        return premultiplied(fill, inside);
       });
       return;
     }

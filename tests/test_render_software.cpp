@@ -232,6 +232,13 @@ Camera test_camera() { return Camera::centered(vec2(0.0f, 0.0f), 10.0f, 200, 100
 void draw_marks(PrimitiveRenderer& draw) {
   const vec2 triangle[3] = {{5.0f, -4.0f}, {8.3f, -3.1f}, {6.2f, -0.4f}};
   draw.draw_solid_polygon(triangle, 3, kMark, Color{0.0f, 0.0f, 0.0f, 1.0f});
+  // More edges than a polygon primitive has: fill triangles (the solid kind) and edge segments.
+  vec2 decagon[10];
+  for (int i = 0; i < 10; ++i) {
+    const float turn = 0.6283185f * static_cast<float>(i) + 0.1f;
+    decagon[i] = vec2(-6.3f + 2.7f * std::cos(turn), -1.1f + 2.7f * std::sin(turn));
+  }
+  draw.draw_solid_polygon(decagon, 10, Color{0.3f, 0.3f, 0.8f, 0.6f}, kMark);
   draw.draw_solid_circle({-5.0f, 2.0f}, 1.5f, {1.0f, 0.0f}, Color{0.2f, 0.6f, 0.4f, 0.7f}, kMark);
   draw.draw_segment({-9.5f, -4.5f}, {9.5f, 4.5f}, kMark);
   draw.draw_arrow({1.0f, 0.0f}, {4.0f, 2.0f}, kMark);
