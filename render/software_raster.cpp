@@ -267,6 +267,22 @@ void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Fram
   }
 }
 
+// Blends `shade(p)` of the pixel centre p in the shape's frame (`in_frame`); for the
+// axis-aligned frame (axis (1, 0): discs, bounding boxes, panels) p is exactly
+// (x - ox, y - oy), computed without the rotation.
+template <typename Columns, typename Shade>
+void blend_in_frame(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame,
+                    const Columns& columns, const ShapeVertex& shape, const Shade& shade) {
+  if (shape.frame[2] == 1.0f && shape.frame[3] == 0.0f) {
+    const float origin_x = shape.frame[0];
+    const float origin_y = shape.frame[1];
+    blend(primitive, first_row, last_row, frame, columns,
+          [=](float x, float y) { return shade(vec2(x - origin_x, y - origin_y)); });
+    return;
+  }
+  blend(primitive, first_row, last_row, frame, columns, [=](float x, float y) { return shade(in_frame(shape, x, y)); });
+}
+
 // The coverage formulas of primitive_shaders.cpp, kind by kind.
 void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primitive, int first_row, int last_row,
                     Frame& frame) {
@@ -305,8 +321,8 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
       const Rgba line = normalised(shape.line);
-      blend(primitive, first_row, last_row, frame, [&](float y) { return disc_columns(primitive, shape, y); }, [=](float x, float y) {
-        const vec2 p = in_frame(shape, x, y);
+      const auto columns = [&](float y) { return disc_columns(primitive, shape, y); };
+      blend_in_frame(primitive, first_row, last_row, frame, columns, shape, [=](vec2 p) {
         const float r = std::sqrt(p.x * p.x + p.y * p.y);
         const float disc = saturate(shape.disc[0] + 0.5f - r);
         const float ring = saturate(shape.disc[1] + 0.5f - r) * saturate(r - shape.disc[2] + 0.5f);
@@ -317,19 +333,20 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::box: {
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, shape.box[3] > 0.0f), [=](float x, float y) {
-        const vec2 p = in_frame(shape, x, y);
-        float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
-        if (shape.box[3] > 0.0f) coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
-        return premultiplied(fill, coverage);
-      });
+      blend_in_frame(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, shape.box[3] > 0.0f), shape,
+                     [=](vec2 p) {
+                       float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
+                       if (shape.box[3] > 0.0f) {
+                         coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
+                       }
+                       return premultiplied(fill, coverage);
+                     });
       return;
     }
     case PrimitiveKind::arrow: {
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, false), [=](float x, float y) {
-        const vec2 p = in_frame(shape, x, y);
+      blend_in_frame(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, false), shape, [=](vec2 p) {
         const float side = (p.x - shape.head[1]) * shape.head[2] + std::abs(p.y) * shape.head[3];
         const float head = saturate(0.5f - std::max(std::max(shape.head[0] - p.x, p.x - shape.head[1]), side));
         return premultiplied(fill, std::max(rectangle(p.x, p.y, shape.box[0], shape.box[1]), head));
