@@ -80,6 +80,10 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
     primitives_->next_layer();
   };
   draw_world(draw_shapes | draw_sleeping);
+  // llvmpipe pays thousands of instructions per primitive, and most of a frame's primitives
+  // are overlay marks a few pixels across: every layer after the shapes is rasterised on the
+  // CPU, over the frame read back (docs/rendering.md, fifth pass).
+  primitives_->start_software_layers();
   if (draw_options.flags & draw_aabbs) draw_bounding_boxes(*primitives_, world, palette.debug.aabb);
   primitives_->next_layer();
   draw_world(draw_broad_phase);
@@ -120,6 +124,7 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   }
   primitives_->finish(palette.background);
   context_->read_pixels(frame);
+  primitives_->draw_software_layers(frame);
 }
 
 Frame FrameRenderer::render(const World& world, const Camera& camera, const FrameOptions& options,
@@ -137,6 +142,7 @@ void FrameRenderer::render_primitives(const Camera& camera, Color background,
   emit(*primitives_);
   primitives_->finish(background);
   context_->read_pixels(frame);
+  primitives_->draw_software_layers(frame);
 }
 
 }  // namespace impulse2d::render

@@ -67,8 +67,8 @@ struct FrameOptions {
 
 /// Owns an offscreen GL context and the primitive batch, and renders frames of a fixed size.
 /// Use it from the thread that created it. Frames depend only on their inputs: the same
-/// world, camera and options give bit-identical pixels on every run and any llvmpipe thread
-/// count.
+/// world, camera and options give bit-identical pixels on every run and any llvmpipe and
+/// CPU rasteriser thread count (both follow `LP_NUM_THREADS`).
 class FrameRenderer {
  public:
   /// A renderer with its own OSMesa context of width x height pixels. Line widths and arrow
@@ -94,16 +94,19 @@ class FrameRenderer {
   /// Draws `world` (shapes, broad-phase pairs and body overlays via `World::draw`; bounding
   /// boxes with `draw_bounding_boxes`; islands with `draw_islands`; contacts with
   /// `draw_contacts`; body labels with `draw_body_labels`), then `extra_overlays`, the highlight,
-  /// trails, HUD and legend, into `frame`, each group a layer over the ones before. The camera
-  /// must have this renderer's size (else `RenderError`).
+  /// trails, HUD and legend, into `frame`, each group a layer over the ones before. Shapes are
+  /// drawn by GL, every later layer on the CPU over the read-back frame
+  /// (`PrimitiveRenderer::start_software_layers`). The camera must have this renderer's size
+  /// (else `RenderError`).
   void render(const World& world, const Camera& camera, const FrameOptions& options,
               const HudInfo& hud, Frame& frame);
   /// As above, returning a new frame.
   Frame render(const World& world, const Camera& camera, const FrameOptions& options, const HudInfo& hud);
 
   /// Draws whatever `emit` sends to the batch (world primitives through its `DebugDraw`
-  /// methods, or screen rectangles and text) on `background`, into `frame`. For tests and
-  /// tools that have no world.
+  /// methods, or screen rectangles and text) on `background`, into `frame`, GL layers first and
+  /// then any layers `emit` sends after `start_software_layers`. For tests and tools that have
+  /// no world.
   void render_primitives(const Camera& camera, Color background,
                          const std::function<void(PrimitiveRenderer&)>& emit, Frame& frame);
 

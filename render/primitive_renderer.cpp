@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -58,7 +59,9 @@ std::string hex(unsigned value) {
 }  // namespace
 
 PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
-    : style_(style), camera_(Camera::centered(vec2(0.0f, 0.0f), 1.0f, 1, 1)) {
+    : style_(style),
+      camera_(Camera::centered(vec2(0.0f, 0.0f), 1.0f, 1, 1)),
+      software_raster_(raster_thread_count()) {
   for (int kind = 0; kind < primitive_kind_count; ++kind) {
     const std::string fragment_shader = primitive_fragment_shader(static_cast<PrimitiveKind>(kind));
     programs_[kind] = std::make_unique<ShaderProgram>(
@@ -97,14 +100,14 @@ PrimitiveRenderer::PrimitiveRenderer(const PrimitiveStyle& style)
   glBindVertexArray(vertex_arrays_[1]);
   glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[1]);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
-  const GLsizei stride = sizeof(Vertex);
-  attribute(0, 3, GL_FLOAT, stride, offsetof(Vertex, sprite));
-  attribute(1, 4, GL_FLOAT, stride, offsetof(Vertex, frame));
-  attribute(2, 4, GL_FLOAT, stride, offsetof(Vertex, box));
-  attribute(3, 4, GL_FLOAT, stride, offsetof(Vertex, head));
-  attribute(4, 3, GL_FLOAT, stride, offsetof(Vertex, disc));
-  attribute(5, 4, GL_UNSIGNED_BYTE, stride, offsetof(Vertex, fill));
-  attribute(6, 4, GL_UNSIGNED_BYTE, stride, offsetof(Vertex, line));
+  const GLsizei stride = sizeof(ShapeVertex);
+  attribute(0, 3, GL_FLOAT, stride, offsetof(ShapeVertex, sprite));
+  attribute(1, 4, GL_FLOAT, stride, offsetof(ShapeVertex, frame));
+  attribute(2, 4, GL_FLOAT, stride, offsetof(ShapeVertex, box));
+  attribute(3, 4, GL_FLOAT, stride, offsetof(ShapeVertex, head));
+  attribute(4, 3, GL_FLOAT, stride, offsetof(ShapeVertex, disc));
+  attribute(5, 4, GL_UNSIGNED_BYTE, stride, offsetof(ShapeVertex, fill));
+  attribute(6, 4, GL_UNSIGNED_BYTE, stride, offsetof(ShapeVertex, line));
   glBindVertexArray(vertex_arrays_[2]);
   glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[2]);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);
@@ -136,25 +139,86 @@ void PrimitiveRenderer::begin(const Camera& camera) {
   world_to_window_[3] = (clip[3][1] + 1.0f) * half_height;
   polygons_.vertices.clear();
   polygons_.open_runs.clear();
-  for (Batch<Vertex>& kind_batch : batches_) {
+  for (Batch<ShapeVertex>& kind_batch : batches_) {
     kind_batch.vertices.clear();
     kind_batch.open_runs.clear();
   }
   texts_.vertices.clear();
   texts_.open_runs.clear();
   runs_.clear();
+  software_layers_ = false;
+  software_.clear();
+  for (std::vector<SoftwarePrimitive>& open : software_open_) open.clear();
   primitive_count_ = 0;
 }
+
+void PrimitiveRenderer::start_software_layers() { software_layers_ = true; }
 
 void PrimitiveRenderer::next_layer() {
   runs_.insert(runs_.end(), polygons_.open_runs.begin(), polygons_.open_runs.end());
   polygons_.open_runs.clear();
-  for (Batch<Vertex>& kind_batch : batches_) {
+  for (Batch<ShapeVertex>& kind_batch : batches_) {
     runs_.insert(runs_.end(), kind_batch.open_runs.begin(), kind_batch.open_runs.end());
     kind_batch.open_runs.clear();
   }
   runs_.insert(runs_.end(), texts_.open_runs.begin(), texts_.open_runs.end());
   texts_.open_runs.clear();
+  for (std::vector<SoftwarePrimitive>& open : software_open_) {
+    software_.primitives.insert(software_.primitives.end(), open.begin(), open.end());
+    open.clear();
+  }
+}
+
+void PrimitiveRenderer::draw_software_layers(Frame& frame) {
+  if (frame.width != camera_.width() || frame.height != camera_.height()) {
+    throw RenderError("PrimitiveRenderer::draw_software_layers: the frame is " + std::to_string(frame.width) + "x" +
+                      std::to_string(frame.height) + " but the camera's " + std::to_string(camera_.width()) + "x" +
+                      std::to_string(camera_.height()));
+  }
+  software_raster_.draw(software_, frame);
+}
+
+std::uint32_t PrimitiveRenderer::add_software_parameters(const ShapeVertex& shape) {
+  software_.shapes.push_back(shape);
+  return static_cast<std::uint32_t>(software_.shapes.size() - 1);
+}
+
+std::uint32_t PrimitiveRenderer::add_software_parameters(const PolygonVertex& shape) {
+  software_.polygons.push_back(shape);
+  return static_cast<std::uint32_t>(software_.polygons.size() - 1);
+}
+
+std::uint32_t PrimitiveRenderer::add_software_parameters(const TextVertex& shape) {
+  software_.texts.push_back(shape);
+  return static_cast<std::uint32_t>(software_.texts.size() - 1);
+}
+
+std::uint32_t PrimitiveRenderer::add_software_parameters(const FillQuad& shape) {
+  software_.fill_quads.push_back(shape);
+  return static_cast<std::uint32_t>(software_.fill_quads.size() - 1);
+}
+
+template <typename V>
+SoftwarePrimitive* PrimitiveRenderer::push_software(PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper) {
+  // The pixels whose centres (column + 0.5, row + 0.5) lie in [lower, upper], inside the frame;
+  // the comparisons also reject NaN bounds.
+  const float width = static_cast<float>(camera_.width());
+  const float height = static_cast<float>(camera_.height());
+  const float left = std::ceil(lower.x - 0.5f);
+  const float bottom = std::ceil(lower.y - 0.5f);
+  const float right = std::floor(upper.x - 0.5f);
+  const float top = std::floor(upper.y - 0.5f);
+  if (!(left <= right && bottom <= top && right >= 0.0f && top >= 0.0f && left < width && bottom < height)) {
+    return nullptr;
+  }
+  SoftwarePrimitive primitive;
+  primitive.kind = kind;
+  primitive.left = static_cast<int>(std::max(left, 0.0f));
+  primitive.bottom = static_cast<int>(std::max(bottom, 0.0f));
+  primitive.right = static_cast<int>(std::min(right, width - 1.0f));
+  primitive.top = static_cast<int>(std::min(top, height - 1.0f));
+  primitive.index = add_software_parameters(shape);
+  return &software_open_[static_cast<int>(kind)].emplace_back(primitive);
 }
 
 vec2 PrimitiveRenderer::to_window(vec2 world) const {
@@ -205,7 +269,7 @@ void PrimitiveRenderer::finish(Color background) {
     reserve_vertices(polygons_.vertices.size(), sizeof(PolygonVertex), capacity_vertices_[0]);
     upload(polygons_.vertices, 0);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[1]);
-    reserve_vertices(shape_vertices, sizeof(Vertex), capacity_vertices_[1]);
+    reserve_vertices(shape_vertices, sizeof(ShapeVertex), capacity_vertices_[1]);
     for (int kind = 1; kind < primitive_kind_count - 1; ++kind) upload(batches_[kind - 1].vertices, first_of_kind[kind]);
     glBindBuffer(GL_ARRAY_BUFFER, vertex_buffers_[2]);
     reserve_vertices(texts_.vertices.size(), sizeof(TextVertex), capacity_vertices_[2]);
@@ -268,7 +332,7 @@ void PrimitiveRenderer::push_vertex(Batch<V>& kind_batch, PrimitiveKind kind, co
   vertex.sprite[2] = point_size;
 }
 
-void PrimitiveRenderer::push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]) {
+void PrimitiveRenderer::push_quad(PrimitiveKind kind, const ShapeVertex& shape, const vec2 (&corners)[4]) {
   for (const vec2 corner : corners) push_vertex(batch(kind), kind, shape, corner, 1.0f, false);
 }
 
@@ -276,6 +340,10 @@ template <typename V>
 void PrimitiveRenderer::push_bounded(Batch<V>& kind_batch, PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper,
                                      float area) {
   ++primitive_count_;
+  if (software_layers_) {
+    push_software(kind, shape, lower, upper);
+    return;
+  }
   const bool after_point = !kind_batch.open_runs.empty() && kind_batch.open_runs.back().points;
   if (fits_point_sprite(lower, upper, area, after_point)) {
     push_vertex(kind_batch, kind, shape, 0.5f * (lower + upper), std::max(upper.x - lower.x, upper.y - lower.y), true);
@@ -297,7 +365,7 @@ bool PrimitiveRenderer::fits_point_sprite(vec2 lower, vec2 upper, float area, bo
   return centre_visible && side <= max_point_size_ && (side <= kSmallSprite || side * side <= waste * area);
 }
 
-void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper) {
+void PrimitiveRenderer::push_shape(PrimitiveKind kind, const ShapeVertex& shape, vec2 lower, vec2 upper) {
   // The rectangle [lower, upper] of the primitive's frame, grown by the margin, in window pixels.
   const vec2 origin(shape.frame[0], shape.frame[1]);
   const vec2 axis(shape.frame[2], shape.frame[3]);
@@ -313,6 +381,13 @@ void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2
     box_upper = glm::max(box_upper, corner);
   }
   ++primitive_count_;
+  if (software_layers_) {
+    if (SoftwarePrimitive* primitive = push_software(kind, shape, box_lower, box_upper)) {
+      primitive->frame_lower = low;
+      primitive->frame_upper = high;
+    }
+    return;
+  }
   const std::vector<Run>& runs = batch(kind).open_runs;
   if (fits_point_sprite(box_lower, box_upper, (high.x - low.x) * (high.y - low.y), !runs.empty() && runs.back().points)) {
     push_vertex(batch(kind), kind, shape, 0.5f * (box_lower + box_upper),
@@ -324,12 +399,19 @@ void PrimitiveRenderer::push_shape(PrimitiveKind kind, const Vertex& shape, vec2
 
 void PrimitiveRenderer::push_filled_triangles(const vec2* window_vertices, int count, Color fill) {
   // Fan quads (first, i, i+1, i+2), the last one a triangle when the count runs out.
-  Vertex solid;
+  ShapeVertex solid;
   set_color(solid.fill, fill);
   const vec2 first = window_vertices[0];
   for (int i = 1; i + 1 < count; i += 2) {
     const vec2 d = i + 2 < count ? window_vertices[i + 2] : window_vertices[i + 1];  // else an empty triangle
     ++primitive_count_;
+    if (software_layers_) {
+      FillQuad quad{{first, window_vertices[i], window_vertices[i + 1], d}};
+      std::copy(std::begin(solid.fill), std::end(solid.fill), quad.fill);
+      push_software(PrimitiveKind::solid, quad, glm::min(glm::min(first, window_vertices[i]), glm::min(window_vertices[i + 1], d)),
+                    glm::max(glm::max(first, window_vertices[i]), glm::max(window_vertices[i + 1], d)));
+      continue;
+    }
     push_quad(PrimitiveKind::solid, solid, {first, window_vertices[i], window_vertices[i + 1], d});
   }
 }
@@ -342,7 +424,7 @@ void PrimitiveRenderer::push_segment(vec2 from, vec2 to, float extension_pixels,
   const vec2 direction = length > 1e-6f ? (b - a) / length : vec2(1.0f, 0.0f);
   const vec2 middle = 0.5f * (a + b);
   const vec2 half(0.5f * length + extension_pixels, 0.5f * width_pixels);
-  Vertex shape;
+  ShapeVertex shape;
   shape.frame[0] = middle.x;
   shape.frame[1] = middle.y;
   shape.frame[2] = direction.x;
@@ -359,7 +441,7 @@ void PrimitiveRenderer::push_disc(vec2 center, float radius_pixels, Color fill, 
   const bool has_ring = ring_radius_pixels > 0.0f;
   if (!has_fill && !has_ring) return;  // also rejects NaN
   const vec2 c = to_window(center);
-  Vertex shape;
+  ShapeVertex shape;
   shape.frame[0] = c.x;
   shape.frame[1] = c.y;
   if (has_fill) {
@@ -377,7 +459,7 @@ void PrimitiveRenderer::push_disc(vec2 center, float radius_pixels, Color fill, 
 }
 
 void PrimitiveRenderer::push_box(vec2 middle, vec2 half, float outline_width, Color color) {
-  Vertex shape;
+  ShapeVertex shape;
   shape.frame[0] = middle.x;
   shape.frame[1] = middle.y;
   shape.box[0] = half.x;
@@ -542,7 +624,7 @@ void PrimitiveRenderer::draw_arrow(vec2 from, vec2 to, Color color) {
   const float under_head = head_half_width > half_line ? head_length * half_line / head_half_width : head_length;
   const float shaft_half = 0.5f * (length - std::min(head_length, under_head));
   // The frame's origin is the shaft's centre; the head's base and tip lie along +x.
-  Vertex shape;
+  ShapeVertex shape;
   const vec2 middle = tail + direction * shaft_half;
   shape.frame[0] = middle.x;
   shape.frame[1] = middle.y;

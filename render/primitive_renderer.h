@@ -8,6 +8,8 @@
 #include "core/debug_draw.h"
 #include "render/camera.h"
 #include "render/primitive_shaders.h"
+#include "render/primitive_vertices.h"
+#include "render/software_raster.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -39,7 +41,8 @@ struct PrimitiveStyle {
 /// single point sprite rather than two triangles, and each kind of primitive has a program
 /// of its own. Draw order: layers (`next_layer`) in the order begun; within a layer, the
 /// kinds in `PrimitiveKind` order (polygons, fill triangles, discs, boxes, arrows, text);
-/// within a kind, the order emitted. Needs the GL context it was created under to be current
+/// within a kind, the order emitted. Layers from `start_software_layers` on are rasterised
+/// on the CPU (software_raster.h) into the frame read back from GL. Needs the GL context it was created under to be current
 /// for construction, `finish` and destruction.
 class PrimitiveRenderer final : public DebugDraw {
  public:
@@ -53,9 +56,18 @@ class PrimitiveRenderer final : public DebugDraw {
   void begin(const Camera& camera);
   /// Starts a new layer: primitives emitted from now on are drawn over those emitted before.
   void next_layer();
-  /// Clears the framebuffer to `background` (drawn opaque) and draws the batch, in order.
-  /// Throws `RenderError` when GL reports an error.
+  /// Primitives emitted from now on (the layer begun by the last `next_layer` and every
+  /// later one) are rasterised on the CPU by `draw_software_layers`, over what `finish`
+  /// draws with GL; until `begin`.
+  void start_software_layers();
+  /// Clears the framebuffer to `background` (drawn opaque) and draws the GL layers of the
+  /// batch, in order. Throws `RenderError` when GL reports an error.
   void finish(Color background);
+  /// Blends the CPU layers, in order, over `frame`: the GL layers as read back after
+  /// `finish` (same size as the camera's). Pixels match GL's to a few levels (rounding).
+  void draw_software_layers(Frame& frame);
+  /// Threads that rasterise the CPU layers (the caller included).
+  int software_thread_count() const { return software_raster_.thread_count(); }
   /// Primitives (point sprites, quads and polygon-fill quads) batched since `begin`.
   std::size_t primitive_count() const { return primitive_count_; }
   /// Width of the frame being batched, pixels.
@@ -88,33 +100,6 @@ class PrimitiveRenderer final : public DebugDraw {
   void draw_screen_text(vec2 top_left, const std::string& text, Color color, int scale);
 
  private:
-  // One vertex of the disc, box, arrow and polygon-fill-triangle kinds, as their
-  // shaders read it (see primitive_shaders.h). The defaults switch every shape off.
-  struct Vertex {
-    float sprite[3] = {0.0f, 0.0f, 1.0f};
-    float frame[4] = {0.0f, 0.0f, 1.0f, 0.0f};
-    float box[4] = {-1.0e6f, -1.0e6f, 0.0f, 0.0f};
-    float head[4] = {1.0e6f, 0.0f, 0.0f, 0.0f};
-    float disc[3] = {-1.0e6f, -1.0e6f, -1.0e6f};
-    std::uint8_t fill[4] = {0, 0, 0, 0};
-    std::uint8_t line[4] = {0, 0, 0, 0};
-  };
-  // One vertex of the polygon kind. Unused edges never bound the polygon.
-  struct PolygonVertex {
-    float sprite[3] = {0.0f, 0.0f, 1.0f};
-    float origin[3] = {0.0f, 0.0f, 0.0f};  // window pixels; half the outline's width
-    float edges[polygon_primitive_edges][3] = {};  // outward unit normal, offset from the origin
-    std::uint8_t fill[4] = {0, 0, 0, 0};
-    std::uint8_t line[4] = {0, 0, 0, 0};
-  };
-  // One vertex of the text kind: a run of characters of one line.
-  struct TextVertex {
-    float sprite[3] = {0.0f, 0.0f, 1.0f};
-    float run[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // top-left corner, width and height (window pixels)
-    float font_scale = 1.0f;                  // font pixels per window pixel
-    std::uint8_t fill[4] = {0, 0, 0, 0};
-    std::uint32_t bits[8] = {};  // font pixel (column, row) is bit column * font_glyph_rows + row
-  };
   // Consecutive vertices of one kind's buffer drawn by one call, as points or as quads
   // (four vertices each).
   struct Run {
@@ -134,16 +119,16 @@ class PrimitiveRenderer final : public DebugDraw {
   // its kind is of point sprites.
   bool fits_point_sprite(vec2 lower, vec2 upper, float area, bool after_point) const;
   vec2 to_window(vec2 world) const;
-  // The batch of a kind drawn with `Vertex` (solid, disc, box, arrow).
-  Batch<Vertex>& batch(PrimitiveKind kind) { return batches_[static_cast<int>(kind) - 1]; }
+  // The batch of a kind drawn with `ShapeVertex` (solid, disc, box, arrow).
+  Batch<ShapeVertex>& batch(PrimitiveKind kind) { return batches_[static_cast<int>(kind) - 1]; }
   template <typename V>
   void push_vertex(Batch<V>& batch, PrimitiveKind kind, const V& shape, vec2 position, float point_size, bool point);
   // One primitive covering the axis-aligned window rectangle [lower, upper] of `area` square
   // pixels: a point sprite or a quad (`fits_point_sprite`).
   template <typename V>
   void push_bounded(Batch<V>& batch, PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper, float area);
-  void push_quad(PrimitiveKind kind, const Vertex& shape, const vec2 (&corners)[4]);
-  void push_shape(PrimitiveKind kind, const Vertex& shape, vec2 lower, vec2 upper);
+  void push_quad(PrimitiveKind kind, const ShapeVertex& shape, const vec2 (&corners)[4]);
+  void push_shape(PrimitiveKind kind, const ShapeVertex& shape, vec2 lower, vec2 upper);
   void push_filled_triangles(const vec2* window_vertices, int count, Color fill);
   void push_segment(vec2 from, vec2 to, float extension_pixels, float width_pixels, Color color);
   void push_disc(vec2 center, float radius_pixels, Color fill, float ring_radius_pixels, Color ring);
@@ -151,6 +136,16 @@ class PrimitiveRenderer final : public DebugDraw {
   void push_box(vec2 middle, vec2 half, float outline_width, Color color);
   void push_rect(vec2 lower_left, vec2 upper_right, Color color);
   void push_text(vec2 window_top_left, const std::string& text, Color color, float scale);
+  // Adds a CPU-layer primitive of `kind` with parameters `shape` covering the window rectangle
+  // [lower, upper] to the open layer (nothing when no pixel centre of the frame lies in it).
+  // Returns the primitive added, or nullptr.
+  template <typename V>
+  SoftwarePrimitive* push_software(PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper);
+  // Appends `shape` to the CPU batch's parameters of its kind; returns its index there.
+  std::uint32_t add_software_parameters(const ShapeVertex& shape);
+  std::uint32_t add_software_parameters(const PolygonVertex& shape);
+  std::uint32_t add_software_parameters(const TextVertex& shape);
+  std::uint32_t add_software_parameters(const FillQuad& shape);
 
   PrimitiveStyle style_;
   Camera camera_;
@@ -158,16 +153,20 @@ class PrimitiveRenderer final : public DebugDraw {
   float max_point_size_ = 1.0f;                           // the driver's largest point sprite
   std::unique_ptr<ShaderProgram> programs_[primitive_kind_count];
   int viewport_locations_[primitive_kind_count] = {};
-  unsigned int vertex_arrays_[3] = {};   // polygon vertices, `Vertex`es, text vertices
+  unsigned int vertex_arrays_[3] = {};   // polygon vertices, `ShapeVertex`es, text vertices
   unsigned int vertex_buffers_[3] = {};  // the same
   unsigned int index_buffer_ = 0;
   std::size_t capacity_vertices_[3] = {};  // vertices each vertex buffer holds
   std::size_t capacity_quads_ = 0;         // quads the index buffer indexes
   std::size_t primitive_count_ = 0;
   Batch<PolygonVertex> polygons_;
-  Batch<Vertex> batches_[primitive_kind_count - 2];  // solid, disc, box, arrow
+  Batch<ShapeVertex> batches_[primitive_kind_count - 2];  // solid, disc, box, arrow
   Batch<TextVertex> texts_;
   std::vector<Run> runs_;  // of the closed layers, in drawing order
+  bool software_layers_ = false;  // primitives go to the CPU batch (start_software_layers)
+  SoftwareBatch software_;        // the CPU layers' primitives of the closed layers, in order
+  std::vector<SoftwarePrimitive> software_open_[primitive_kind_count];  // the open layer's, by kind
+  SoftwareRaster software_raster_;
 };
 
 }  // namespace impulse2d::render

@@ -14,3 +14,8 @@ target_include_directories(test_render SYSTEM PRIVATE ${STB_INCLUDE_DIR})
 # stb_image is third-party code: its warnings are silenced on its one file only.
 set_source_files_properties(${CMAKE_CURRENT_SOURCE_DIR}/test_render_stb_image.cpp
                             PROPERTIES COMPILE_OPTIONS "-w")
+# The CPU rasteriser of the overlay layers: thread-count independence, exact coverage,
+# clipping and agreement with llvmpipe.
+impulse2d_add_test(test_render_software
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_render_software.cpp
+  LIBS impulse2d_render)

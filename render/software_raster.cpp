@@ -1,0 +1,410 @@
+/// @file software_raster.cpp
+#include "render/software_raster.h"
+
+#include "render/easy_font.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace impulse2d::render {
+
+namespace {
+
+// Window rows per band: each band is one task of the pool, its pixels written by it alone.
+constexpr int kBandRows = 16;
+
+// A premultiplied colour, as a fragment program outputs it.
+struct Premultiplied {
+  float r = 0.0f;
+  float g = 0.0f;
+  float b = 0.0f;
+  float a = 0.0f;
+};
+
+// A colour byte as GL normalises it (c / 255), and the reverse conversion of the blended
+// value: clamped to 1, then rounded half up without a libm call (as the batches' colour bytes are).
+struct ByteScale {
+  float value[256];
+  ByteScale() {
+    for (int i = 0; i < 256; ++i) value[i] = static_cast<float>(i) / 255.0f;
+  }
+};
+const ByteScale byte_scale;
+
+std::uint8_t to_byte(float value) {
+  // Blended values are sums of products of non-negative numbers: only rounding takes them
+  // past 1.
+  return static_cast<std::uint8_t>(std::min(value, 1.0f) * 255.0f + 0.5f);
+}
+
+// A straight (not premultiplied) colour, channels 0..1.
+struct Rgba {
+  float r, g, b, a;
+};
+
+Rgba normalised(const std::uint8_t (&color)[4]) {
+  return Rgba{byte_scale.value[color[0]], byte_scale.value[color[1]], byte_scale.value[color[2]],
+              byte_scale.value[color[3]]};
+}
+
+float saturate(float value) { return std::min(std::max(value, 0.0f), 1.0f); }
+
+// Coverage of the rectangle with half extents (hx, hy) centred on the origin at p.
+float rectangle(float px, float py, float hx, float hy) {
+  return saturate(hx + 0.5f - std::abs(px)) * saturate(hy + 0.5f - std::abs(py));
+}
+
+// The pixel centre in a shape vertex's frame (origin and unit x axis).
+vec2 in_frame(const ShapeVertex& shape, float x, float y) {
+  const float dx = x - shape.frame[0];
+  const float dy = y - shape.frame[1];
+  return vec2(dx * shape.frame[2] + dy * shape.frame[3], shape.frame[2] * dy - shape.frame[3] * dx);
+}
+
+// The fill under the line (a ring or outline), premultiplied: both alphas already include coverage.
+Premultiplied fill_under_line(const Rgba& fill, float fill_alpha, const Rgba& line, float line_alpha) {
+  const float under = fill_alpha * (1.0f - line_alpha);
+  return Premultiplied{line.r * line_alpha + fill.r * under, line.g * line_alpha + fill.g * under,
+                       line.b * line_alpha + fill.b * under, line_alpha + under};
+}
+
+// `color` over `coverage` of the pixel, premultiplied.
+Premultiplied premultiplied(const Rgba& color, float coverage) {
+  const float alpha = color.a * coverage;
+  return Premultiplied{color.r * alpha, color.g * alpha, color.b * alpha, alpha};
+}
+
+// Whether the pixel centre p lies in triangle (a, b, c): inside all three edges, or on an
+// edge that the triangle owns (one pointing up, or left when flat, once counter-clockwise),
+// so that two triangles sharing an edge never both cover a pixel centre on it.
+bool inside_triangle(vec2 a, vec2 b, vec2 c, vec2 p) {
+  const float area = cross(b - a, c - a);
+  if (!(area != 0.0f)) return false;
+  const float orientation = area > 0.0f ? 1.0f : -1.0f;
+  const vec2 corners[3] = {a, b, c};
+  for (int i = 0; i < 3; ++i) {
+    const vec2 edge = orientation * (corners[(i + 1) % 3] - corners[i]);
+    const float side = orientation * cross(corners[(i + 1) % 3] - corners[i], p - corners[i]);
+    if (side < 0.0f) return false;
+    if (side == 0.0f && !(edge.y > 0.0f || (edge.y == 0.0f && edge.x < 0.0f))) return false;
+  }
+  return true;
+}
+
+// How far beyond a primitive's frame rectangle, in pixels, rows are still scanned: the
+// spans below are computed differently from the coverage, so they are widened (and a box
+// outline's hole narrowed) a little rather than trusted to the last bit.
+constexpr float kSpanSlack = 0.05f;
+
+// Up to two runs of columns of one row: [first[i], last[i]] for i < count.
+struct RowSpans {
+  int first[2] = {0, 0};
+  int last[2] = {-1, -1};
+  int count = 0;
+};
+
+// The pixel columns whose centres lie in [from, to], within [left, right]. Rounds with
+// integer conversions (the bounds are first brought within a column of [left, right]).
+RowSpans columns_between(float from, float to, int left, int right) {
+  RowSpans spans;
+  if (!(from <= to)) return spans;
+  // Column c's centre c + 0.5 lies in [from, to] when from - 0.5 <= c <= to - 0.5.
+  const float low = std::min(std::max(from - 0.5f, static_cast<float>(left) - 1.0f), static_cast<float>(right) + 1.0f);
+  const float high = std::min(std::max(to - 0.5f, static_cast<float>(left) - 1.0f), static_cast<float>(right) + 1.0f);
+  int first = static_cast<int>(low);  // truncation: the ceiling for negative values, else below it
+  if (static_cast<float>(first) < low) ++first;
+  int last = static_cast<int>(high);  // the floor for non-negative values, else above it
+  if (static_cast<float>(last) > high) --last;
+  first = std::max(first, left);
+  last = std::min(last, right);
+  if (first <= last) {
+    spans.first[0] = first;
+    spans.last[0] = last;
+    spans.count = 1;
+  }
+  return spans;
+}
+
+// Where slope_x x + slope_y y + offset, a linear function of the pixel centre, lies in
+// [low, high] along the row at y: an x range whose ends are linear in y, or, when it
+// (nearly) does not depend on x, a test of the row alone.
+struct RowLimit {
+  bool along_row = false;  // the ends below apply; else the row test
+  float from_base = 0.0f;  // x from = from_base + from_slope y
+  float from_slope = 0.0f;
+  float to_base = 0.0f;    // x to = to_base + to_slope y
+  float to_slope = 0.0f;
+  float slope_y = 0.0f;    // the row test: low <= slope_y y + offset <= high
+  float offset = 0.0f;
+  float low = 0.0f;
+  float high = 0.0f;
+};
+
+// The `RowLimit` of low <= slope_x x + slope_y y + offset <= high.
+RowLimit row_limit(float slope_x, float slope_y, float offset, float low, float high) {
+  RowLimit limit;
+  limit.slope_y = slope_y;
+  limit.offset = offset;
+  limit.low = low - kSpanSlack;
+  limit.high = high + kSpanSlack;
+  if (std::abs(slope_x) > 1.0e-6f) {
+    limit.along_row = true;
+    const float entry = slope_x > 0.0f ? low : high;
+    const float exit = slope_x > 0.0f ? high : low;
+    limit.from_base = (entry - offset) / slope_x;
+    limit.from_slope = -slope_y / slope_x;
+    limit.to_base = (exit - offset) / slope_x;
+    limit.to_slope = -slope_y / slope_x;
+  }
+  return limit;
+}
+
+// Narrows [from, to] to the x that `limit` allows on the row at y.
+void apply(const RowLimit& limit, float y, float& from, float& to) {
+  if (limit.along_row) {
+    from = std::max(from, limit.from_base + limit.from_slope * y);
+    to = std::min(to, limit.to_base + limit.to_slope * y);
+  } else {
+    const float value = limit.slope_y * y + limit.offset;
+    if (value < limit.low || value > limit.high) {  // empty, and stays so
+      from = std::numeric_limits<float>::max();
+      to = std::numeric_limits<float>::lowest();
+    }
+  }
+}
+
+// The columns of each row that a disc, box or arrow may cover: its frame rectangle
+// [lower, upper] (p.x = ax x + ay y - (ax ox + ay oy), p.y = -ay x + ax y + (ay ox - ax oy)),
+// without a box outline's hole (where its coverage is exactly 1 - 1 = 0).
+class FrameColumns {
+ public:
+  FrameColumns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, bool outline)
+      : left_(primitive.left), right_(primitive.right) {
+    limits(shape, primitive.frame_lower, primitive.frame_upper, outer_);
+    const vec2 hole(shape.box[0] - shape.box[3] - 0.5f - 2.0f * kSpanSlack,
+                    shape.box[1] - shape.box[3] - 0.5f - 2.0f * kSpanSlack);
+    has_hole_ = outline && hole.x > 0.0f && hole.y > 0.0f;
+    if (has_hole_) limits(shape, -hole, hole, hole_);
+  }
+
+  RowSpans operator()(float y) const {
+    float from = std::numeric_limits<float>::lowest();
+    float to = std::numeric_limits<float>::max();
+    apply(outer_[0], y, from, to);
+    apply(outer_[1], y, from, to);
+    const RowSpans spans = columns_between(from - kSpanSlack, to + kSpanSlack, left_, right_);
+    if (!has_hole_ || spans.count == 0) return spans;
+    float hole_from = std::numeric_limits<float>::lowest();
+    float hole_to = std::numeric_limits<float>::max();
+    apply(hole_[0], y, hole_from, hole_to);
+    apply(hole_[1], y, hole_from, hole_to);
+    const RowSpans inside = columns_between(hole_from, hole_to, spans.first[0], spans.last[0]);
+    if (inside.count == 0) return spans;
+    RowSpans sides;  // the columns left and right of the hole
+    if (inside.first[0] > spans.first[0]) {
+      sides.first[sides.count] = spans.first[0];
+      sides.last[sides.count++] = inside.first[0] - 1;
+    }
+    if (inside.last[0] < spans.last[0]) {
+      sides.first[sides.count] = inside.last[0] + 1;
+      sides.last[sides.count++] = spans.last[0];
+    }
+    return sides;
+  }
+
+ private:
+  static void limits(const ShapeVertex& shape, vec2 lower, vec2 upper, RowLimit (&out)[2]) {
+    const float ax = shape.frame[2];
+    const float ay = shape.frame[3];
+    const float ox = shape.frame[0];
+    const float oy = shape.frame[1];
+    out[0] = row_limit(ax, ay, -(ax * ox + ay * oy), lower.x, upper.x);
+    out[1] = row_limit(-ay, ax, ay * ox - ax * oy, lower.y, upper.y);
+  }
+
+  int left_;
+  int right_;
+  RowLimit outer_[2];
+  RowLimit hole_[2];
+  bool has_hole_ = false;
+};
+
+// The columns of row centre `y` within the disc's reach (`frame_upper.x`) of its centre.
+RowSpans disc_columns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, float y) {
+  const float reach = primitive.frame_upper.x + kSpanSlack;
+  const float dy = y - shape.frame[1];
+  const float squared = reach * reach - dy * dy;
+  if (!(squared > 0.0f)) return RowSpans{};
+  const float half_width = std::sqrt(squared);
+  return columns_between(shape.frame[0] - half_width, shape.frame[0] + half_width, primitive.left, primitive.right);
+}
+
+// Blends `shade(x, y)` (a premultiplied colour at the window pixel centre) over the pixels
+// of `primitive` in window rows [first_row, last_row], in each row those `columns(y)` gives.
+template <typename Columns, typename Shade>
+void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame, const Columns& columns,
+           const Shade& shade) {
+  const std::size_t stride = frame.stride();
+  for (int row = std::max(primitive.bottom, first_row); row <= std::min(primitive.top, last_row); ++row) {
+    const float y = static_cast<float>(row) + 0.5f;
+    const RowSpans spans = columns(y);
+    // GL's rows count from the bottom; the frame's from the top.
+    std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
+    for (int span = 0; span < spans.count; ++span) {
+      std::uint8_t* pixel = row_pixels + static_cast<std::size_t>(spans.first[span]) * 4;
+      for (int column = spans.first[span]; column <= spans.last[span]; ++column, pixel += 4) {
+        const Premultiplied source = shade(static_cast<float>(column) + 0.5f, y);
+        if (!(source.a > 0.0f)) continue;  // nothing over this pixel: it keeps its bytes
+        // Alpha blends as source.a + 1 (1 - source.a) = 1 over an opaque frame: it stays 255.
+        const float keep = 1.0f - source.a;
+        pixel[0] = to_byte(source.r + byte_scale.value[pixel[0]] * keep);
+        pixel[1] = to_byte(source.g + byte_scale.value[pixel[1]] * keep);
+        pixel[2] = to_byte(source.b + byte_scale.value[pixel[2]] * keep);
+      }
+    }
+  }
+}
+
+// Blends `shade(p)` of the pixel centre p in the shape's frame (`in_frame`); for the
+// axis-aligned frame (axis (1, 0): discs, bounding boxes, panels) p is exactly
+// (x - ox, y - oy), computed without the rotation.
+template <typename Columns, typename Shade>
+void blend_in_frame(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame,
+                    const Columns& columns, const ShapeVertex& shape, const Shade& shade) {
+  if (shape.frame[2] == 1.0f && shape.frame[3] == 0.0f) {
+    const float origin_x = shape.frame[0];
+    const float origin_y = shape.frame[1];
+    blend(primitive, first_row, last_row, frame, columns,
+          [=](float x, float y) { return shade(vec2(x - origin_x, y - origin_y)); });
+    return;
+  }
+  blend(primitive, first_row, last_row, frame, columns, [=](float x, float y) { return shade(in_frame(shape, x, y)); });
+}
+
+// The coverage formulas of primitive_shaders.cpp, kind by kind.
+void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primitive, int first_row, int last_row,
+                    Frame& frame) {
+  const auto whole_rows = [&](float) { return columns_between(-1.0e30f, 1.0e30f, primitive.left, primitive.right); };
+  switch (primitive.kind) {
+    case PrimitiveKind::polygon: {
+      const PolygonVertex shape = batch.polygons[primitive.index];
+      const Rgba fill = normalised(shape.fill);
+      const Rgba line = normalised(shape.line);
+      blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
+        const float px = x - shape.origin[0];
+        const float py = y - shape.origin[1];
+        float distance = shape.edges[0][0] * px + shape.edges[0][1] * py - shape.edges[0][2];
+        for (int i = 1; i < polygon_primitive_edges; ++i) {
+          distance = std::max(distance, shape.edges[i][0] * px + shape.edges[i][1] * py - shape.edges[i][2]);
+        }
+        const float fill_alpha = fill.a * saturate(0.5f - distance);
+        const float line_alpha = line.a * saturate(shape.origin[2] + 0.5f - std::abs(distance));
+        return fill_under_line(fill, fill_alpha, line, line_alpha);
+      });
+      return;
+    }
+    case PrimitiveKind::solid: {
+      const FillQuad quad = batch.fill_quads[primitive.index];
+      const Rgba fill = normalised(quad.fill);
+      const Premultiplied color = premultiplied(fill, 1.0f);
+      blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
+        const vec2 p(x, y);
+        const bool inside = inside_triangle(quad.corners[0], quad.corners[1], quad.corners[2], p) ||
+                            inside_triangle(quad.corners[0], quad.corners[2], quad.corners[3], p);
+        return inside ? color : Premultiplied{};
+      });
+      return;
+    }
+    case PrimitiveKind::disc: {
+      const ShapeVertex shape = batch.shapes[primitive.index];
+      const Rgba fill = normalised(shape.fill);
+      const Rgba line = normalised(shape.line);
+      const auto columns = [&](float y) { return disc_columns(primitive, shape, y); };
+      blend_in_frame(primitive, first_row, last_row, frame, columns, shape, [=](vec2 p) {
+        const float r = std::sqrt(p.x * p.x + p.y * p.y);
+        const float disc = saturate(shape.disc[0] + 0.5f - r);
+        const float ring = saturate(shape.disc[1] + 0.5f - r) * saturate(r - shape.disc[2] + 0.5f);
+        return fill_under_line(fill, fill.a * disc, line, line.a * ring);
+      });
+      return;
+    }
+    case PrimitiveKind::box: {
+      const ShapeVertex shape = batch.shapes[primitive.index];
+      const Rgba fill = normalised(shape.fill);
+      blend_in_frame(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, shape.box[3] > 0.0f), shape,
+                     [=](vec2 p) {
+                       float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
+                       if (shape.box[3] > 0.0f) {
+                         coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
+                       }
+                       return premultiplied(fill, coverage);
+                     });
+      return;
+    }
+    case PrimitiveKind::arrow: {
+      const ShapeVertex shape = batch.shapes[primitive.index];
+      const Rgba fill = normalised(shape.fill);
+      blend_in_frame(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, false), shape, [=](vec2 p) {
+        const float side = (p.x - shape.head[1]) * shape.head[2] + std::abs(p.y) * shape.head[3];
+        const float head = saturate(0.5f - std::max(std::max(shape.head[0] - p.x, p.x - shape.head[1]), side));
+        return premultiplied(fill, std::max(rectangle(p.x, p.y, shape.box[0], shape.box[1]), head));
+      });
+      return;
+    }
+    case PrimitiveKind::text: {
+      const TextVertex run = batch.texts[primitive.index];
+      const Rgba fill = normalised(run.fill);
+      blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
+        // The pixel centre from the run's top-left corner (y down), and the font pixel under it.
+        const float qx = x - run.run[0];
+        const float qy = run.run[1] - y;
+        // The ink test first: most of a run's pixels have none. (The pixel lies within a pixel
+        // of the run, so the conversions are in range.)
+        const int column = std::min(static_cast<int>(qx * run.font_scale), 31);
+        const int row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
+        const int bit = std::min(std::max(column * font_glyph_rows + row, 0), 255);
+        if (((run.bits[bit >> 5] >> (bit & 31)) & 1u) == 0) return Premultiplied{};
+        const float inside = saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
+        return premultiplied(fill, inside);
+      });
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+void SoftwareBatch::clear() {
+  primitives.clear();
+  shapes.clear();
+  polygons.clear();
+  texts.clear();
+  fill_quads.clear();
+}
+
+SoftwareRaster::SoftwareRaster(int thread_count) : pool_(thread_count) {}
+
+void SoftwareRaster::draw(const SoftwareBatch& batch, Frame& frame) {
+  if (batch.primitives.empty() || frame.height <= 0) return;
+  // Each band's primitives, in drawing order.
+  const int band_count = (frame.height + kBandRows - 1) / kBandRows;
+  band_primitives_.resize(static_cast<std::size_t>(band_count));
+  for (std::vector<std::uint32_t>& band : band_primitives_) band.clear();
+  for (std::size_t i = 0; i < batch.primitives.size(); ++i) {
+    const SoftwarePrimitive& primitive = batch.primitives[i];
+    for (int band = primitive.bottom / kBandRows; band <= primitive.top / kBandRows; ++band) {
+      band_primitives_[static_cast<std::size_t>(band)].push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  pool_.run(band_count, [&](int band) {
+    const int first_row = band * kBandRows;
+    const int last_row = std::min(first_row + kBandRows, frame.height) - 1;
+    for (const std::uint32_t i : band_primitives_[static_cast<std::size_t>(band)]) {
+      draw_primitive(batch, batch.primitives[i], first_row, last_row, frame);
+    }
+  });
+}
+
+}  // namespace impulse2d::render

@@ -1,0 +1,304 @@
+// The CPU rasteriser of the overlay layers: frames independent of the thread count and of
+// the run, exact coverage where the formulas give it, clipping at the frame's edges, rows
+// flipped like GL's read-back, and pixels within a few levels of llvmpipe's.
+#include "render/camera.h"
+#include "render/frame_renderer.h"
+#include "render/primitive_renderer.h"
+#include "render/software_raster.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <iterator>
+#include <string>
+#include <vector>
+
+using namespace impulse2d;
+using namespace impulse2d::render;
+
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+
+// A frame of one opaque colour.
+Frame filled_frame(int width, int height, std::uint8_t grey) {
+  Frame frame;
+  frame.resize(width, height);
+  for (std::size_t i = 0; i < frame.rgba.size(); i += 4) {
+    frame.rgba[i] = grey;
+    frame.rgba[i + 1] = static_cast<std::uint8_t>(255 - grey);
+    frame.rgba[i + 2] = grey;
+    frame.rgba[i + 3] = 255;
+  }
+  return frame;
+}
+
+// A small deterministic generator (no library distribution, so the batch is the same everywhere).
+struct Lcg {
+  std::uint32_t state = 12345u;
+  float next() {  // in [0, 1)
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / 16777216.0f;
+  }
+};
+
+void set_rgba(std::uint8_t (&rgba)[4], Lcg& random) {
+  for (std::uint8_t& channel : rgba) channel = static_cast<std::uint8_t>(random.next() * 256.0f);
+}
+
+// Adds a primitive covering the window pixels [left, right] x [bottom, top], clipped to the frame.
+void add(SoftwareBatch& batch, PrimitiveKind kind, std::uint32_t index, float cx, float cy, float reach) {
+  SoftwarePrimitive primitive;
+  primitive.kind = kind;
+  primitive.index = index;
+  primitive.left = std::max(0, static_cast<int>(cx - reach));
+  primitive.right = std::min(kWidth - 1, static_cast<int>(cx + reach));
+  primitive.bottom = std::max(0, static_cast<int>(cy - reach));
+  primitive.top = std::min(kHeight - 1, static_cast<int>(cy + reach));
+  if (primitive.left <= primitive.right && primitive.bottom <= primitive.top) batch.primitives.push_back(primitive);
+}
+
+// Hundreds of overlapping translucent primitives of every kind, many across band edges.
+SoftwareBatch mixed_batch() {
+  SoftwareBatch batch;
+  Lcg random;
+  for (int i = 0; i < 400; ++i) {
+    const float cx = random.next() * kWidth;
+    const float cy = random.next() * kHeight;
+    const float size = 1.0f + random.next() * 20.0f;
+    const float angle_x = random.next() * 2.0f - 1.0f;
+    const float angle_y = std::max(0.05f, 1.0f - angle_x * angle_x);
+    const float norm = std::sqrt(angle_x * angle_x + angle_y * angle_y);
+    switch (i % 5) {
+      case 0:
+      case 1:
+      case 2: {
+        ShapeVertex shape;
+        shape.frame[0] = cx;
+        shape.frame[1] = cy;
+        shape.frame[2] = angle_x / norm;
+        shape.frame[3] = angle_y / norm;
+        set_rgba(shape.fill, random);
+        set_rgba(shape.line, random);
+        PrimitiveKind kind = PrimitiveKind::box;
+        if (i % 5 == 0) {
+          kind = PrimitiveKind::disc;
+          shape.disc[0] = size;
+          shape.disc[1] = size + 0.75f;
+          shape.disc[2] = size - 0.75f;
+        } else {
+          shape.box[0] = size;
+          shape.box[1] = 0.75f + 0.1f * size;
+          shape.box[3] = i % 3 == 0 ? 1.5f : 0.0f;
+          if (i % 5 == 2) {
+            kind = PrimitiveKind::arrow;
+            shape.head[0] = size - 3.0f;
+            shape.head[1] = size + 4.0f;
+            shape.head[2] = 0.6f;
+            shape.head[3] = 0.8f;
+          }
+        }
+        batch.shapes.push_back(shape);
+        add(batch, kind, static_cast<std::uint32_t>(batch.shapes.size() - 1), cx, cy, size + 8.0f);
+        break;
+      }
+      case 3: {
+        TextVertex run;
+        run.run[0] = std::floor(cx);
+        run.run[1] = std::floor(cy);
+        run.run[2] = 20.0f;
+        run.run[3] = 9.0f;
+        set_rgba(run.fill, random);
+        for (std::uint32_t& word : run.bits) word = static_cast<std::uint32_t>(random.next() * 4294967040.0f);
+        batch.texts.push_back(run);
+        add(batch, PrimitiveKind::text, static_cast<std::uint32_t>(batch.texts.size() - 1), cx + 10.0f, cy - 4.5f, 12.0f);
+        break;
+      }
+      default: {
+        PolygonVertex polygon;
+        polygon.origin[0] = cx;
+        polygon.origin[1] = cy;
+        polygon.origin[2] = 0.75f;
+        for (int edge = 0; edge < polygon_primitive_edges; ++edge) {
+          const float turn = 0.785398f * static_cast<float>(edge);
+          polygon.edges[edge][0] = std::cos(turn);
+          polygon.edges[edge][1] = std::sin(turn);
+          polygon.edges[edge][2] = size;
+        }
+        set_rgba(polygon.fill, random);
+        set_rgba(polygon.line, random);
+        batch.polygons.push_back(polygon);
+        add(batch, PrimitiveKind::polygon, static_cast<std::uint32_t>(batch.polygons.size() - 1), cx, cy, size + 3.0f);
+        break;
+      }
+    }
+  }
+  FillQuad quad{{vec2(10.0f, 10.0f), vec2(70.0f, 15.0f), vec2(60.5f, 80.5f), vec2(12.0f, 70.0f)}};
+  quad.fill[0] = 200;
+  quad.fill[3] = 128;
+  batch.fill_quads.push_back(quad);
+  add(batch, PrimitiveKind::solid, 0, 40.0f, 45.0f, 36.0f);
+  return batch;
+}
+
+Frame draw_with_threads(const SoftwareBatch& batch, int threads) {
+  Frame frame = filled_frame(kWidth, kHeight, 40);
+  SoftwareRaster raster(threads);
+  EXPECT_EQ(raster.thread_count(), std::max(threads, 1));
+  raster.draw(batch, frame);
+  return frame;
+}
+
+// One opaque white box (not an outline) with half extents `half` at window (x, y).
+SoftwareBatch one_box(float x, float y, float half_x, float half_y) {
+  SoftwareBatch batch;
+  ShapeVertex shape;
+  shape.frame[0] = x;
+  shape.frame[1] = y;
+  shape.box[0] = half_x;
+  shape.box[1] = half_y;
+  std::fill(std::begin(shape.fill), std::end(shape.fill), std::uint8_t{255});
+  batch.shapes.push_back(shape);
+  SoftwarePrimitive primitive;
+  primitive.kind = PrimitiveKind::box;
+  primitive.left = static_cast<int>(x - half_x - 1.0f);
+  primitive.right = static_cast<int>(x + half_x + 1.0f);
+  primitive.bottom = static_cast<int>(y - half_y - 1.0f);
+  primitive.top = static_cast<int>(y + half_y + 1.0f);
+  batch.primitives.push_back(primitive);
+  return batch;
+}
+
+}  // namespace
+
+TEST(RenderSoftware, FramesDoNotDependOnThreadCountOrRun) {
+  const SoftwareBatch batch = mixed_batch();
+  ASSERT_GT(batch.primitives.size(), 350u);
+  const Frame one = draw_with_threads(batch, 1);
+  EXPECT_NE(one.hash(), filled_frame(kWidth, kHeight, 40).hash());
+  for (const int threads : {1, 2, 4}) {
+    for (int run = 0; run < 2; ++run) {
+      EXPECT_TRUE(draw_with_threads(batch, threads).rgba == one.rgba) << threads << " threads, run " << run;
+    }
+  }
+}
+
+TEST(RenderSoftware, BoxCoverageIsExact) {
+  // A white box over black, centred on pixel (20, 10)'s centre with half extents 3 x 2: pixels
+  // whose centres lie 2.5 or more inside an edge are white; the ones whose centres lie on the
+  // edge get half coverage (128); from half a pixel beyond it, nothing.
+  Frame frame = filled_frame(40, 20, 0);
+  for (std::size_t i = 0; i < frame.rgba.size(); i += 4) frame.rgba[i + 1] = 0;  // black
+  SoftwareRaster raster(2);
+  raster.draw(one_box(20.5f, 10.5f, 3.0f, 2.0f), frame);
+  const auto at = [&](int column, int window_row) { return frame.pixel(column, frame.height - 1 - window_row); };
+  EXPECT_EQ(at(20, 10), (Pixel{255, 255, 255, 255}));
+  EXPECT_EQ(at(22, 11), (Pixel{255, 255, 255, 255}));
+  EXPECT_EQ(at(23, 10), (Pixel{128, 128, 128, 255}));  // centre on the right edge
+  EXPECT_EQ(at(20, 12), (Pixel{128, 128, 128, 255}));  // centre on the top edge
+  EXPECT_EQ(at(23, 12), (Pixel{64, 64, 64, 255}));     // both: a quarter
+  EXPECT_EQ(at(24, 10), (Pixel{0, 0, 0, 255}));
+  EXPECT_EQ(at(20, 13), (Pixel{0, 0, 0, 255}));
+  EXPECT_EQ(at(16, 10), (Pixel{0, 0, 0, 255}));
+}
+
+TEST(RenderSoftware, TranslucentBlendIsPremultipliedOver) {
+  // Half-transparent red over opaque grey 100: red 0.5 * 255 + 100 * 0.5 rounds to 178, the
+  // others to 50, alpha stays 255.
+  Frame frame = filled_frame(10, 10, 100);
+  for (std::size_t i = 0; i < frame.rgba.size(); i += 4) frame.rgba[i + 1] = 100;
+  SoftwareBatch batch = one_box(5.0f, 5.0f, 3.0f, 3.0f);
+  batch.shapes[0].fill[1] = 0;
+  batch.shapes[0].fill[2] = 0;
+  batch.shapes[0].fill[3] = 128;
+  SoftwareRaster raster(1);
+  raster.draw(batch, frame);
+  EXPECT_EQ(frame.pixel(5, 5), (Pixel{178, 50, 50, 255}));
+}
+
+namespace {
+
+constexpr Color kBackground{0.1f, 0.1f, 0.1f, 1.0f};
+constexpr Color kMark{0.9f, 0.5f, 0.2f, 1.0f};
+
+// 200x100 pixels, 10 pixels per metre, world origin at the centre.
+Camera test_camera() { return Camera::centered(vec2(0.0f, 0.0f), 10.0f, 200, 100); }
+
+// Marks of every kind a CPU layer draws, some of them across the frame's edges.
+void draw_marks(PrimitiveRenderer& draw) {
+  const vec2 triangle[3] = {{5.0f, -4.0f}, {8.3f, -3.1f}, {6.2f, -0.4f}};
+  draw.draw_solid_polygon(triangle, 3, kMark, Color{0.0f, 0.0f, 0.0f, 1.0f});
+  // More edges than a polygon primitive has: fill triangles (the solid kind) and edge segments.
+  vec2 decagon[10];
+  for (int i = 0; i < 10; ++i) {
+    const float turn = 0.6283185f * static_cast<float>(i) + 0.1f;
+    decagon[i] = vec2(-6.3f + 2.7f * std::cos(turn), -1.1f + 2.7f * std::sin(turn));
+  }
+  draw.draw_solid_polygon(decagon, 10, Color{0.3f, 0.3f, 0.8f, 0.6f}, kMark);
+  draw.draw_solid_circle({-5.0f, 2.0f}, 1.5f, {1.0f, 0.0f}, Color{0.2f, 0.6f, 0.4f, 0.7f}, kMark);
+  draw.draw_segment({-9.5f, -4.5f}, {9.5f, 4.5f}, kMark);
+  draw.draw_arrow({1.0f, 0.0f}, {4.0f, 2.0f}, kMark);
+  draw.draw_box_outline({-8.0f, -4.0f}, {-2.0f, -1.0f}, kMark);
+  draw.draw_band({-3.0f, 3.0f}, {-1.0f, 4.0f}, 3.0f, kMark);
+  draw.draw_point({2.0f, -3.0f}, 6.0f, kMark);
+  draw.draw_text({-1.0f, -2.0f}, "012 CPU", kMark);
+  draw.draw_screen_text({4.0f, 4.0f}, "HUD", kMark, 1);
+  // Across the edges: the right edge, the bottom-left corner, the top.
+  draw.draw_solid_circle({10.0f, 0.0f}, 1.0f, {0.0f, 1.0f}, kMark, kMark);
+  draw.draw_solid_circle({-10.0f, -5.0f}, 1.2f, {0.0f, 1.0f}, kMark, kMark);
+  draw.draw_segment({-3.0f, 4.5f}, {3.0f, 6.0f}, kMark);
+}
+
+Frame render_marks(bool on_cpu) {
+  FrameRenderer renderer(200, 100);
+  Frame frame;
+  renderer.render_primitives(test_camera(), kBackground,
+                             [&](PrimitiveRenderer& draw) {
+                               draw.next_layer();
+                               if (on_cpu) draw.start_software_layers();
+                               draw_marks(draw);
+                             },
+                             frame);
+  return frame;
+}
+
+}  // namespace
+
+TEST(RenderSoftware, MatchesLlvmpipeWithinRounding) {
+  const Frame gl = render_marks(false);
+  const Frame cpu = render_marks(true);
+  ASSERT_EQ(gl.rgba.size(), cpu.rgba.size());
+  int largest_delta = 0;
+  int differing = 0;
+  for (std::size_t i = 0; i < gl.rgba.size(); ++i) {
+    const int delta = std::abs(static_cast<int>(gl.rgba[i]) - static_cast<int>(cpu.rgba[i]));
+    largest_delta = std::max(largest_delta, delta);
+    differing += delta != 0 ? 1 : 0;
+  }
+  EXPECT_LE(largest_delta, 2) << differing << " channels differ";
+  EXPECT_EQ(render_marks(true).hash(), cpu.hash());  // the CPU frame repeats
+}
+
+TEST(RenderSoftware, ClippedMarksStayInsideTheFrameAndRowsAreNotFlipped) {
+  // Only marks across the edges: a disc on the right edge must not wrap into the left
+  // column of its rows, one on the bottom-left corner lands in the bottom rows of the frame
+  // (row 0 is the top), and nothing reaches the rows far from either.
+  FrameRenderer renderer(200, 100);
+  Frame frame;
+  renderer.render_primitives(test_camera(), kBackground,
+                             [&](PrimitiveRenderer& draw) {
+                               draw.start_software_layers();
+                               draw.draw_solid_circle({10.0f, 0.0f}, 1.0f, {0.0f, 1.0f}, kMark, kMark);
+                               draw.draw_solid_circle({-10.0f, -5.0f}, 1.2f, {0.0f, 1.0f}, kMark, kMark);
+                             },
+                             frame);
+  const Pixel background = frame.pixel(100, 50);
+  EXPECT_NE(frame.pixel(199, 50), background);  // right-edge disc, drawn
+  for (int row = 35; row < 65; ++row) EXPECT_EQ(frame.pixel(0, row), background) << "row " << row;
+  EXPECT_NE(frame.pixel(0, 99), background);  // bottom-left disc, in the bottom row
+  for (int column = 0; column < 200; ++column) EXPECT_EQ(frame.pixel(column, 0), background) << column;
+}
