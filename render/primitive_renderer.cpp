@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <iterator>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace impulse2d::render {
@@ -178,24 +179,21 @@ void PrimitiveRenderer::draw_software_layers(Frame& frame) {
   software_raster_.draw(software_, frame);
 }
 
-std::uint32_t PrimitiveRenderer::add_software_parameters(const ShapeVertex& shape) {
-  software_.shapes.push_back(shape);
-  return static_cast<std::uint32_t>(software_.shapes.size() - 1);
-}
-
-std::uint32_t PrimitiveRenderer::add_software_parameters(const PolygonVertex& shape) {
-  software_.polygons.push_back(shape);
-  return static_cast<std::uint32_t>(software_.polygons.size() - 1);
-}
-
-std::uint32_t PrimitiveRenderer::add_software_parameters(const TextVertex& shape) {
-  software_.texts.push_back(shape);
-  return static_cast<std::uint32_t>(software_.texts.size() - 1);
-}
-
-std::uint32_t PrimitiveRenderer::add_software_parameters(const FillQuad& shape) {
-  software_.fill_quads.push_back(shape);
-  return static_cast<std::uint32_t>(software_.fill_quads.size() - 1);
+template <typename V>
+std::uint32_t PrimitiveRenderer::add_software_parameters(const V& shape) {
+  std::vector<V>* list = nullptr;
+  if constexpr (std::is_same_v<V, ShapeVertex>) {
+    list = &software_.shapes;
+  } else if constexpr (std::is_same_v<V, PolygonVertex>) {
+    list = &software_.polygons;
+  } else if constexpr (std::is_same_v<V, TextVertex>) {
+    list = &software_.texts;
+  } else {
+    static_assert(std::is_same_v<V, FillQuad>, "a kind of CPU primitive parameters");
+    list = &software_.fill_quads;
+  }
+  list->push_back(shape);
+  return static_cast<std::uint32_t>(list->size() - 1);
 }
 
 template <typename V>

@@ -142,10 +142,8 @@ class PrimitiveRenderer final : public DebugDraw {
   template <typename V>
   SoftwarePrimitive* push_software(PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper);
   // Appends `shape` to the CPU batch's parameters of its kind; returns its index there.
-  std::uint32_t add_software_parameters(const ShapeVertex& shape);
-  std::uint32_t add_software_parameters(const PolygonVertex& shape);
-  std::uint32_t add_software_parameters(const TextVertex& shape);
-  std::uint32_t add_software_parameters(const FillQuad& shape);
+  template <typename V>
+  std::uint32_t add_software_parameters(const V& shape);
 
   PrimitiveStyle style_;
   Camera camera_;
