@@ -13,7 +13,7 @@ namespace impulse2d::render {
 namespace {
 
 // Window rows per band: each band is one task of the pool, its pixels written by it alone.
-constexpr int kBandRows = 16;
+constexpr int band_rows = 16;
 
 // A premultiplied colour, as a fragment program outputs it.
 struct Premultiplied {
@@ -96,7 +96,7 @@ bool inside_triangle(vec2 a, vec2 b, vec2 c, vec2 p) {
 // How far beyond a primitive's frame rectangle, in pixels, rows are still scanned: the
 // spans below are computed differently from the coverage, so they are widened (and a box
 // outline's hole narrowed) a little rather than trusted to the last bit.
-constexpr float kSpanSlack = 0.05f;
+constexpr float span_slack = 0.05f;
 
 // Up to two runs of columns of one row: [first[i], last[i]] for i < count.
 struct RowSpans {
@@ -147,8 +147,8 @@ RowLimit row_limit(float slope_x, float slope_y, float offset, float low, float 
   RowLimit limit;
   limit.slope_y = slope_y;
   limit.offset = offset;
-  limit.low = low - kSpanSlack;
-  limit.high = high + kSpanSlack;
+  limit.low = low - span_slack;
+  limit.high = high + span_slack;
   if (std::abs(slope_x) > 1.0e-6f) {
     limit.along_row = true;
     const float entry = slope_x > 0.0f ? low : high;
@@ -183,8 +183,8 @@ class FrameColumns {
   FrameColumns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, bool outline)
       : left_(primitive.left), right_(primitive.right) {
     limits(shape, primitive.frame_lower, primitive.frame_upper, outer_);
-    const vec2 hole(shape.box[0] - shape.box[3] - 0.5f - 2.0f * kSpanSlack,
-                    shape.box[1] - shape.box[3] - 0.5f - 2.0f * kSpanSlack);
+    const vec2 hole(shape.box[0] - shape.box[3] - 0.5f - 2.0f * span_slack,
+                    shape.box[1] - shape.box[3] - 0.5f - 2.0f * span_slack);
     has_hole_ = outline && hole.x > 0.0f && hole.y > 0.0f;
     if (has_hole_) limits(shape, -hole, hole, hole_);
   }
@@ -194,7 +194,7 @@ class FrameColumns {
     float to = std::numeric_limits<float>::max();
     apply(outer_[0], y, from, to);
     apply(outer_[1], y, from, to);
-    const RowSpans spans = columns_between(from - kSpanSlack, to + kSpanSlack, left_, right_);
+    const RowSpans spans = columns_between(from - span_slack, to + span_slack, left_, right_);
     if (!has_hole_ || spans.count == 0) return spans;
     float hole_from = std::numeric_limits<float>::lowest();
     float hole_to = std::numeric_limits<float>::max();
@@ -233,7 +233,7 @@ class FrameColumns {
 
 // The columns of row centre `y` within the disc's reach (`frame_upper.x`) of its centre.
 RowSpans disc_columns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, float y) {
-  const float reach = primitive.frame_upper.x + kSpanSlack;
+  const float reach = primitive.frame_upper.x + span_slack;
   const float dy = y - shape.frame[1];
   const float squared = reach * reach - dy * dy;
   if (!(squared > 0.0f)) return RowSpans{};
@@ -389,18 +389,18 @@ SoftwareRaster::SoftwareRaster(int thread_count) : pool_(thread_count) {}
 void SoftwareRaster::draw(const SoftwareBatch& batch, Frame& frame) {
   if (batch.primitives.empty() || frame.height <= 0) return;
   // Each band's primitives, in drawing order.
-  const int band_count = (frame.height + kBandRows - 1) / kBandRows;
+  const int band_count = (frame.height + band_rows - 1) / band_rows;
   band_primitives_.resize(static_cast<std::size_t>(band_count));
   for (std::vector<std::uint32_t>& band : band_primitives_) band.clear();
   for (std::size_t i = 0; i < batch.primitives.size(); ++i) {
     const SoftwarePrimitive& primitive = batch.primitives[i];
-    for (int band = primitive.bottom / kBandRows; band <= primitive.top / kBandRows; ++band) {
+    for (int band = primitive.bottom / band_rows; band <= primitive.top / band_rows; ++band) {
       band_primitives_[static_cast<std::size_t>(band)].push_back(static_cast<std::uint32_t>(i));
     }
   }
   pool_.run(band_count, [&](int band) {
-    const int first_row = band * kBandRows;
-    const int last_row = std::min(first_row + kBandRows, frame.height) - 1;
+    const int first_row = band * band_rows;
+    const int last_row = std::min(first_row + band_rows, frame.height) - 1;
     for (const std::uint32_t i : band_primitives_[static_cast<std::size_t>(band)]) {
       draw_primitive(batch, batch.primitives[i], first_row, last_row, frame);
     }
