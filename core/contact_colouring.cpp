@@ -49,25 +49,4 @@ int ContactColouring::add(const Contact& contact) {
   return colour;
 }
 
-void ContactColouring::finish() {
-  // Counting sort by colour, stable: each colour keeps the contact list's order.
-  starts_.assign(static_cast<std::size_t>(colour_count_) + 2, 0);
-  for (int c = 0; c < colour_count_; ++c) starts_[c + 1] = starts_[c] + counts_[c];
-  starts_[colour_count_ + 1] = starts_[colour_count_] + counts_[overflow_colour];
-  order_.resize(starts_[colour_count_ + 1]);
-  std::size_t next[max_colours + 1] = {};
-  for (int c = 0; c < colour_count_; ++c) next[c] = starts_[c];
-  next[overflow_colour] = starts_[colour_count_];
-  for (std::size_t i = 0; i < colour_of_.size(); ++i) {
-    if (colour_of_[i] == not_solved) continue;
-    order_[next[colour_of_[i]]++] = static_cast<std::uint32_t>(i);
-  }
-}
-
-void ContactColouring::colour(const std::vector<Contact>& contacts, std::size_t slot_count) {
-  begin(slot_count);
-  for (const Contact& contact : contacts) add(contact);
-  finish();
-}
-
 }  // namespace impulse2d

@@ -20,22 +20,16 @@ class ContactColouring {
   /// Colours beyond which a contact goes to the overflow (solved one at a time, last).
   static constexpr int max_colours = 64;
 
-  /// Colours every solvable contact of `contacts` (enabled, one body with a finite mass);
-  /// `slot_count` is the number of body slots. A body moves under a contact when its inverse
-  /// mass or inverse inertia in the contact's `PairMass` is nonzero.
-  void colour(const std::vector<Contact>& contacts, std::size_t slot_count);
-
-  /// The same colouring a contact at a time, for a walk over the list that does other work
-  /// too: `begin` for contacts between `slot_count` body slots, `add` for every contact in the
-  /// list's order (its `PairMass` already resolved), then `finish`.
+  /// Starts a step's colouring for contacts between `slot_count` body slots; then `add` is
+  /// called for every contact in the list's order (its `PairMass` already resolved), in the
+  /// walk over the list that prepares them. A contact is solvable when it is enabled and one
+  /// of its bodies has a finite mass; a body moves under a contact when its inverse mass or
+  /// inverse inertia in the contact's `PairMass` is nonzero.
   void begin(std::size_t slot_count);
   /// Colours the list's next contact (the first after `begin`, then one after another) and
   /// returns its colour: 0..max_colours - 1, max_colours for the overflow, -1 when it is not
   /// solved.
   int add(const Contact& contact);
-  /// Sorts the coloured contacts into `order()` (see `begin`; not needed by a caller that
-  /// takes each contact's colour from `add`).
-  void finish();
 
   /// Colour of the list's contact `index` as `add` returned it (valid from that call on).
   int colour_of(std::size_t index) const {
@@ -46,19 +40,11 @@ class ContactColouring {
   std::size_t count(int colour) const { return counts_[static_cast<std::size_t>(colour)]; }
   /// Number of colours used, 0..max_colours (the overflow not counted).
   int colour_count() const { return colour_count_; }
-  /// Indices into the contact list, colour by colour, then the overflow; each range in the
-  /// list's order.
-  const std::vector<std::uint32_t>& order() const { return order_; }
-  /// order()[range_start(c) .. range_start(c + 1)) holds colour c; c = colour_count() is the
-  /// overflow.
-  std::size_t range_start(int colour) const { return starts_[static_cast<std::size_t>(colour)]; }
 
  private:
   static constexpr std::uint8_t not_solved = 0xFF;  // colour_of_ of a contact not solved
   std::vector<std::uint64_t> used_colours_;  // per body slot: colours its contacts took
-  std::vector<std::uint8_t> colour_of_;      // per contact; overflow_colour when none
-  std::vector<std::uint32_t> order_;
-  std::vector<std::size_t> starts_;          // colour_count_ + 2 entries
+  std::vector<std::uint8_t> colour_of_;      // per contact; not_solved when not solved
   std::size_t counts_[max_colours + 1] = {};  // contacts per colour, the overflow last
   int colour_count_ = 0;
 };
