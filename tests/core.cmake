@@ -16,6 +16,11 @@ impulse2d_add_test(test_physics
           ${CMAKE_CURRENT_SOURCE_DIR}/test_contacts_hold.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_contact_recycle.cpp
   LIBS impulse2d_core)
+# Issue 26, contacts between bodies: near misses, head-on bullets, cradles, elastic gas, flat
+# drops, mirror symmetry (acceptance tests; own binary so each case is named on its own).
+impulse2d_add_test(test_contact_pairs
+  SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_contact_pairs.cpp
+  LIBS impulse2d_core)
 # Own binary: it replaces the global operator new to count allocations.
 impulse2d_add_test(test_step_allocations
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_step_allocations.cpp
