@@ -136,13 +136,13 @@ TEST_P(NearMiss, PassingBodiesKeepTheirVelocitiesAndEnergy) {
 
   const Body& A = world.body(a);
   const Body& B = world.body(b);
-  ASSERT_GT(A.transform.position.x, B.transform.position.x + 1.0f) << "not past each other";
   const double energy = kinetic_energy(world, ids);
   std::printf("[measured] NearMiss %s v=%g gap=%g e=%g: A v=(%.9g, %.9g) w=%.9g; "
               "B v=(%.9g, %.9g) w=%.9g; energy %+.3g relative\n",
               kind_name(kind), speed, gap, restitution, A.linear_velocity.x,
               A.linear_velocity.y, A.angular_velocity, B.linear_velocity.x,
               B.linear_velocity.y, B.angular_velocity, (energy - energy0) / energy0);
+  EXPECT_GT(A.transform.position.x, B.transform.position.x + 1.0f) << "not past each other";
 
   const double tolerance = 1e-6 * speed;
   const double angular_tolerance = 1e-6 * speed / pair_half_size;
@@ -374,11 +374,16 @@ TEST(Cradle, FiveBallsTwoReleased) {
 // 1e-4 (0.01 %) is ten times that. A spurious impulse (speculative contact between passing
 // discs), a late catch or a restitution target taken from the wrong velocity exceeds it.
 //
-// Box2D 2.4.1 on the same scene (standalone program, not in the build: same discs, walls
-// shrunk by b2_polygonRadius, restitution 1, threshold 0, friction 0, dt 1/60), total kinetic
+// Box2D 2.4.1 on the same scene (a standalone program outside the build: the same discs,
+// LCG and walls, walls shrunk by b2_polygonRadius as bench/lab/peer_box2d.cpp does, density
+// 1, restitution 1, restitutionThreshold 0, friction 0, no sleeping, dt 1/60), total kinetic
 // energy after 60 s relative to the start:
-//   velocity/position iterations 8/3:  BOX2D_FIGURE_8
-//   velocity/position iterations 16/3: BOX2D_FIGURE_16
+//   velocity/position iterations 8/3 (Box2D's defaults):  -0.0047 % (worst during the run
+//     0.0047 %; -0.0039 % by 20 s, then small losses)
+//   velocity/position iterations 16/3 (impulse2d's 16):    +4.40 % (one multi-contact
+//     event in the first 10 s gains 4.4 %, then flat)
+// So Box2D meets 0.01 % at its defaults and misses it at 16 iterations: a sequential
+// solve of simultaneous elastic contacts is not energy-exact; the 0.01 % asks for more.
 
 TEST(ElasticGas, KineticEnergyIsKeptFor60Seconds) {
   WorldSettings settings;
@@ -449,21 +454,20 @@ TEST(ElasticGas, KineticEnergyIsKeptFor60Seconds) {
 // Exact answers: apex k at e^(2k) h; for e = 0 the body stays down; the drop is straight, so
 // angle and x stay 0.
 //
-// Apex tolerance. The contact's share is 2 % of e^(2k) h. On top of it comes the free-flight
-// error of the integrator, which no contact method removes at a fixed step. Semi-implicit
-// Euler under constant gravity keeps Q = v^2/2 + g y - g dt v / 2 exactly (check:
-// Q_{n+1} - Q_n = -g^2 dt^2/2 + g^2 dt^2/2 = 0), i.e. its height lags the exact energy by
-// dt |v| / 2, in both directions of travel. So a fall from h reaches the ground with the speed
-// of a fall from h - dt v_i / 2 (this lag is then scaled by e^2 into the apex), and the rise at
-// e v_i falls short by e v_i dt / 2; sampling at steps loses at most g dt^2 / 2 more. An error
-// at bounce i is scaled by e^2 at every later bounce:
-//   |h_k - e^(2k) h| <= 0.02 e^(2k) h + sum_i e^(2(k-i)) (e^2 + e) v_i dt / 2 + g dt^2 / 2,
-//   v_i = e^(i-1) sqrt(2 g h).
-// (The impact is found at a step, up to one step of gravity, g dt, early or late in speed; a
-// method must fix that itself, e.g. with the gap of a speculative contact, so it is left in
-// the contact's 2 %.) At 60 Hz the integrator's share is 6 % (h = 2, e = 0.8) to 16 %
-// (h = 0.5, e = 0.5) of the first apex: the literal 2 % is out of reach of any contact method
-// at the default step; the "[measured]" line gives the relative error for comparison.
+// Apex tolerance: 2 % of e^(2k) h + g dt^2 / 8. The method's known error: the bounce of
+// contact_bounce.h times the impact inside the step (tau = gap / v) and leaves the body where
+// and at the speed the reflected motion has at the step's instants, so the flight after a
+// bounce is the exact parabola sampled at the steps (semi-implicit Euler's positions lie on
+// the exact parabola when its velocities are the mid-interval ones, which the bounce sets).
+// What remains of a bounce is rounding and the closing acceleration taken as constant over
+// the step: documented there as apexes within 0.2 % of e^(2k) h0 at 60 Hz (one point, a
+// ball). 2 % leaves ten times that for a flat face, which must do the same with two points
+// whose impulses sum to the body's: anything a two-point solve loses to an uneven split
+// (spin, sideways drift, a point caught late) shows up beyond it. Sampling the apex at the
+// steps loses at most g (dt/2)^2 / 2 = g dt^2 / 8 (0.34 mm) below the peak of the parabola.
+// (A method without the timed bounce misses by up to e^2 v dt, one step of gravity in the
+// impact speed: 10 % of the first apex for h = 0.5 m; bounce_apexes.h's 3 v dt bound is that
+// kind of method's.)
 //
 // e = 0: the highest the bottom face gets after landing is below g dt^2 (2.7 mm): a body held
 // by a speculative contact may stop up to one step of free fall, g dt^2, above the surface
@@ -567,7 +571,7 @@ TEST_P(FlatDrop, ApexesFollowESquaredPowersAndTheDropStaysStraight) {
   std::ostringstream measured;
   measured << "[measured] FlatDrop " << drop_shape_name(which) << " h=" << h << " e=" << e
            << ":";
-  for (std::size_t k = 0; k < std::min<std::size_t>(apexes.size(), 2); ++k) {
+  for (std::size_t k = 0; e > 0.0f && k < std::min<std::size_t>(apexes.size(), 2); ++k) {
     const double exact = std::pow(e, 2.0 * static_cast<double>(k + 1)) * h;
     measured << " apex" << k + 1 << " " << apexes[k] << " (exact " << exact << ", "
              << 100.0 * (apexes[k] - exact) / exact << " %)";
@@ -586,12 +590,7 @@ TEST_P(FlatDrop, ApexesFollowESquaredPowersAndTheDropStaysStraight) {
   ASSERT_GE(apexes.size(), 2u);
   for (int k = 1; k <= 2; ++k) {
     const double exact = std::pow(e, 2 * k) * h;
-    double integrator = g * dt * dt / 2.0;
-    for (int i = 1; i <= k; ++i) {
-      const double impact_speed = std::pow(e, i - 1) * std::sqrt(2.0 * g * h);
-      integrator += std::pow(e, 2 * (k - i)) * (e * e + e) * impact_speed * dt / 2.0;
-    }
-    EXPECT_NEAR(apexes[static_cast<std::size_t>(k - 1)], exact, 0.02 * exact + integrator)
+    EXPECT_NEAR(apexes[static_cast<std::size_t>(k - 1)], exact, 0.02 * exact + g * dt * dt / 8.0)
         << "apex " << k;
   }
 }
