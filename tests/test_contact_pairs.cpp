@@ -550,10 +550,16 @@ TEST_P(FlatDrop, ApexesFollowESquaredPowersAndTheDropStaysStraight) {
   double highest = -1.0, after_landing = -1.0;
   bool rising = false, landed = false;
   double worst_angle = 0.0, worst_x = 0.0;
+  int first_tilt_step = -1;  // first step with |angle| >= 1e-4, and that angle
+  float first_tilt_angle = 0.0f;
   for (int step = 0; step < 240; ++step) {  // 4 s: apex 2 of e = 0.8 from 2 m is at ~2.1 s
     world.step();
     const Body& body = world.body(id);
     worst_angle = std::max(worst_angle, std::fabs(static_cast<double>(body.angle)));
+    if (first_tilt_step < 0 && std::fabs(body.angle) >= 1e-4f) {
+      first_tilt_step = step + 1;
+      first_tilt_angle = body.angle;
+    }
     worst_x = std::max(worst_x, std::fabs(static_cast<double>(body.transform.position.x)));
     const double height = body.transform.position.y - offset;
     if (!landed && height <= 1e-3) landed = true;
@@ -578,6 +584,9 @@ TEST_P(FlatDrop, ApexesFollowESquaredPowersAndTheDropStaysStraight) {
   }
   if (e == 0.0f) measured << " highest after landing " << after_landing << " m";
   measured << "; max |angle| " << worst_angle << ", max |x| " << worst_x;
+  if (first_tilt_step >= 0)
+    measured << "; |angle| >= 1e-4 first at step " << first_tilt_step << " (" << first_tilt_angle
+             << " rad)";
   std::printf("%s\n", measured.str().c_str());
 
   EXPECT_LT(worst_angle, 1e-4);
