@@ -47,10 +47,12 @@ struct ContactPoint {
   /// a resting contact's, so they are not warm-started into the next (sub-)step.
   bool bounced = false;
   /// True when the point is elastic (restitution > 0), one of its bodies bounces in this
-  /// (sub-)step, and it neither approaches, overlaps by more than the slop, nor carries
-  /// impulse from the last step: it sits out this
-  /// step's solve, so an impact travels along a touching elastic row one contact per step
-  /// (Newton's cradle) instead of being shared by the whole row at once.
+  /// (sub-)step, and it neither closes its gap within the step at the velocities the step
+  /// began with, overlaps by more than the slop, nor carries impulse from the last step: it
+  /// sits out this step's solve, so an impact travels along a touching elastic row one contact
+  /// per step (Newton's cradle) instead of being shared by the whole row at once, and a bounce
+  /// that drives a body into a third one makes a second bounce next step instead of an
+  /// inelastic stop inside this solve (which would lose energy).
   bool waiting = false;
   bool friction_at_limit = false;   ///< the last friction pass was clamped by the Coulomb limit
   /// Contact recycling (`contact_recycle.h`): the point as the manifold last found it, in A's

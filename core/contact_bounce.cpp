@@ -1,6 +1,7 @@
 #include "core/contact_bounce.h"
 
 #include "core/contact_solver_internal.h"
+#include "core/normal_block_solve.h"
 
 #include <algorithm>
 
@@ -88,8 +89,12 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
       if (point.bouncing) continue;
       const float gap = current_separation(a, b, contact, point);
       if (may_bounce && beside_bounce) {
+        // Does not reach its surface within this step at the velocities the step began with:
+        // if the bounce beside drives it in, it collides (and bounces) next step, instead of
+        // being stopped inelastically inside this solve.
         const float approach_speed = -glm::dot(relative_velocity(a, b, point), contact.normal);
-        point.waiting = gap >= -context.slop && approach_speed <= 0.0f && point.normal_impulse == 0.0f;
+        const bool closes = approach_speed > 0.0f && approach_speed * h > std::max(gap, 0.0f);
+        point.waiting = gap >= -context.slop && !closes && point.normal_impulse == 0.0f;
       }
       if (point.waiting) {
         point.velocity_bias = waiting_target_speed;
@@ -100,15 +105,43 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
   }
 }
 
-void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies) {
+void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies, int passes) {
+  // Gauss-Seidel passes over the bouncing points only, each pass meeting every bounce's target
+  // in turn with accumulated impulses (kept >= 0): the bounces of one step converge together,
+  // as the velocity solve's constraints do, so two hits on one body share it as the exact
+  // simultaneous answer does. The two points of a manifold that both bounce are met at once
+  // (the 2x2 block), so a box landing flat leaves flat.
+  for (int pass = 0; pass < passes; ++pass) {
+    bool any_bounce = false;
+    for (Contact& contact : contacts) {
+      if (!is_solvable(contact)) continue;
+      Body& a = bodies[contact.body_a.index];
+      Body& b = bodies[contact.body_b.index];
+      int bouncing = 0;
+      for (int i = 0; i < contact.point_count; ++i) bouncing += contact.points[i].bouncing ? 1 : 0;
+      if (bouncing == 0) continue;
+      any_bounce = true;
+      if (bouncing == 2) {
+        ContactPoint* points = contact.points;
+        const float solve_targets[2] = {points[0].velocity_bias, points[1].velocity_bias};
+        points[0].velocity_bias = points[0].bounce_speed;
+        points[1].velocity_bias = points[1].bounce_speed;
+        const bool solved = solve_normal_block(a, b, contact, contact.mass);
+        points[0].velocity_bias = solve_targets[0];
+        points[1].velocity_bias = solve_targets[1];
+        if (solved) continue;
+      }
+      for (int i = 0; i < contact.point_count; ++i) {
+        ContactPoint& point = contact.points[i];
+        if (point.bouncing) push_normal_to(a, b, contact, point, point.bounce_speed);
+      }
+    }
+    if (!any_bounce) return;
+  }
   for (Contact& contact : contacts) {
-    if (!is_solvable(contact)) continue;
-    Body& a = bodies[contact.body_a.index];
-    Body& b = bodies[contact.body_b.index];
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
       if (!point.bouncing) continue;
-      push_normal_to(a, b, contact, point, point.bounce_speed);
       point.bouncing = false;
       point.bounced = true;
     }

@@ -3,6 +3,7 @@
 #include "core/collide.h"
 #include "core/contact_friction_state.h"
 #include "core/contact_recycle.h"
+#include "core/speculative_meeting.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,10 +74,17 @@ void carry_over_impulses(const Contact& old_contact, Contact& contact) {
   }
 }
 
+// True when the speculative contact would push bodies that pass each other within `dt`.
+bool is_ghost(const Body& a, const Body& b, const Contact& contact, const WorldSettings& settings,
+              float dt) {
+  return is_ghost_contact(a, predict_motion(a, settings, dt), b, predict_motion(b, settings, dt),
+                          contact, dt);
+}
+
 }  // namespace
 
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
-                    const std::vector<float>& reach, const WorldSettings& settings,
+                    const std::vector<float>& reach, const WorldSettings& settings, float dt,
                     const ContactFilter& filter, std::vector<Contact>& contacts,
                     std::vector<Contact>& spill, ContactVisitor* visitor) {
   // This step's contacts are written over last step's in the same list: `write` never passes
@@ -126,6 +134,11 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       Contact& contact = place(/*replaces_old=*/true);
       if (&contact != &old_at(old_index)) contact = old_at(old_index);
       recycle_manifold(a, b, contact);
+      if (is_ghost(a, b, contact, settings, dt)) {
+        // Its slot is left to the next contact placed (or dropped when the list ends).
+        if (spilled) contacts.pop_back();
+        continue;
+      }
       contact.recycled = true;
       forget_bounced_impulses(contact);
       mix_materials(a, b, settings, contact);
@@ -150,6 +163,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       contact.points[i].depth = manifold.points[i].depth;
       contact.points[i].feature_id = manifold.points[i].feature_id;
     }
+    if (is_ghost(a, b, contact, settings, dt)) continue;
     mix_materials(a, b, settings, contact);
     remember_manifold_pose(a, b, contact);
     if (touched_before) {

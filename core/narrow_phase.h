@@ -16,11 +16,12 @@ namespace impulse2d {
 /// Turns `contacts`, last step's contacts sorted by pair, into this step's (sorted by pair)
 /// from `pairs`, each pair collided with the speculative margin `settings.speculative_margin +
 /// reach[a] + reach[b]` (metres; `reach` per slot, see `speculative_reach.h`); kept contacts
-/// are updated in place. `spill` is scratch space (reused: no allocation once warm). `filter`
+/// are updated in place. A contact whose points are all apart and that would only stop bodies
+/// passing each other within the coming `dt` seconds is left out (`is_ghost_contact`). `spill` is scratch space (reused: no allocation once warm). `filter`
 /// may be empty. `visitor` (may be null) sees each contact of the new list as soon as it is
 /// written. Returns the number of manifold points made.
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
-                    const std::vector<float>& reach, const WorldSettings& settings,
+                    const std::vector<float>& reach, const WorldSettings& settings, float dt,
                     const ContactFilter& filter, std::vector<Contact>& contacts,
                     std::vector<Contact>& spill, ContactVisitor* visitor);
 

@@ -110,6 +110,19 @@ float shock_mass_ratio(int velocity_iterations) {
   return static_cast<float>(velocity_iterations) / ln2;
 }
 
+bool has_heavy_on_light(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                        int velocity_iterations) {
+  const float ratio = shock_mass_ratio(velocity_iterations);
+  for (const Contact& contact : contacts) {
+    if (!is_solvable(contact)) continue;
+    const float inverse_mass_a = bodies[contact.body_a.index].inverse_mass;
+    const float inverse_mass_b = bodies[contact.body_b.index].inverse_mass;
+    if (inverse_mass_a > ratio * inverse_mass_b && inverse_mass_b > 0.0f) return true;
+    if (inverse_mass_b > ratio * inverse_mass_a && inverse_mass_a > 0.0f) return true;
+  }
+  return false;
+}
+
 void build_support_order(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                          vec2 gravity, int velocity_iterations, SupportOrder& order) {
   order.contacts_upward.clear();

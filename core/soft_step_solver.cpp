@@ -3,6 +3,7 @@
 #include "core/contact_bounce.h"
 #include "core/contact_friction_state.h"
 #include "core/contact_solver_internal.h"
+#include "core/shock_propagation.h"
 #include "core/wide_contact_solver.h"
 
 namespace impulse2d {
@@ -20,6 +21,10 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   std::vector<Contact>& contacts = stages.solver_contacts();
   wide.finish_step(contacts);
   const bool may_bounce = context.restitution && wide.has_elastic_contacts();
+  // Heavy bodies on light ones: a ground-up pass with the lower body held fixed after each
+  // sub-step's solve (as the accumulated solver does after its iterations), else one soft pass
+  // a sub-step lets a 1:1000 load squeeze through the light body.
+  const bool shock = context.shock_propagation && has_heavy_on_light(contacts, bodies, context.velocity_iterations);
   // The sub-steps work on the compact body states; the bodies are written once at the end
   // (and around the bounce stages, which work on them).
   stages.begin_solver_bodies();
@@ -38,6 +43,14 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     for (int i = 0; i < context.velocity_iterations; ++i) {
       wide.solve(context, /*use_bias=*/true, states.states());
     }
+    if (shock) {
+      wide.store_impulses(contacts);
+      states.store(bodies);
+      SupportOrder& order = stages.solver_support_order();
+      build_support_order(contacts, bodies, context.gravity, context.velocity_iterations, order);
+      solve_shock_pass(contacts, bodies, order, context.block_solver, context.friction);
+      states.load(bodies);
+    }
     stages.integrate_solver_positions(h);
     for (int i = 0; i < context.velocity_iterations; ++i) {
       wide.solve(context, /*use_bias=*/false, states.states());  // relax
@@ -45,7 +58,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     if (may_bounce) {
       wide.store_impulses(contacts);
       states.store(bodies);
-      apply_bounces(contacts, bodies);
+      apply_bounces(contacts, bodies, context.velocity_iterations);
       states.load(bodies);
       wide.load_points(contacts);
     }

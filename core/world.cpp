@@ -423,6 +423,11 @@ void World::set_aside_sleeping_contacts() {
     any_asleep = alive_[i] && bodies_[i].type != BodyType::Static && !bodies_[i].awake;
   }
   if (!any_asleep && sleeping_contacts_.empty()) return;
+  // The scratch and set-aside lists hold no more contacts than the step list has room for;
+  // grown with it during warm-up, the first bodies to fall asleep later allocate nothing.
+  const std::size_t capacity = contacts_.capacity();
+  if (merged_contacts_.capacity() < capacity) merged_contacts_.reserve(capacity);
+  if (sleeping_contacts_.capacity() < capacity) sleeping_contacts_.reserve(capacity);
   auto resting = [this](const Contact& contact) {
     return !is_moving(bodies_[contact.body_a.index]) && !is_moving(bodies_[contact.body_b.index]);
   };
@@ -446,7 +451,7 @@ void World::find_contacts(float dt, ContactVisitor* visitor) {
   stats_.broad_phase_ms += elapsed_ms(stage);
 
   stage = Clock::now();
-  stats_.contact_point_count = update_contacts(bodies_, pairs_, speculative_reach_, settings_,
+  stats_.contact_point_count = update_contacts(bodies_, pairs_, speculative_reach_, settings_, dt,
                                                contact_filter_, contacts_, spilled_contacts_,
                                                visitor);
   stats_.pairs_tested = static_cast<int>(pairs_.size());
