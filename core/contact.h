@@ -100,6 +100,11 @@ struct Contact {
   /// Consecutive steps (0..2) that ended with every point at the static limit and the slip
   /// growing; the contact breaks loose at 2 (one such step can be a cold-started solve).
   std::uint8_t steps_at_static_limit = 0;
+  /// |mean relative tangential velocity| (m/s) at the end of last step's solve if that step
+  /// ended with every point at the static limit, else -1: a slip that grows from one such
+  /// step to the next grows under the full static limit even when an impulse applied between
+  /// the steps (a per-step push) makes each step start faster than it ends.
+  float limit_slip = -1.0f;
   PairMass mass;  ///< the two bodies' inverse masses, resolved at prepare
   ManifoldPose manifold_pose;  ///< the bodies' pose when the manifold was last computed
   bool recycled = false;       ///< this step kept last step's manifold (see contact_recycle.h)

@@ -2,11 +2,53 @@
 
 #include "core/contact_solver_internal.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace impulse2d {
 
 using namespace contact_detail;
+
+bool static_friction_cannot_stop_slip(const Contact& contact, const Body& a, const Body& b,
+                                      bool rotation, float impulse_intervals) {
+  if (contact.sliding || contact.point_count == 0) return false;
+  const PairMass mass{a.inverse_mass, b.inverse_mass, rotation ? a.inverse_inertia : 0.0f,
+                      rotation ? b.inverse_inertia : 0.0f};
+  const vec2 tangent = tangent_of(contact.normal);
+  float needed = 0.0f;  // sum over the points of |v_t| m_t, N s
+  float load = 0.0f;    // sum over the points of the carried normal impulse, N s
+  float fastest = 0.0f;
+  for (int i = 0; i < contact.point_count; ++i) {
+    // The anchors as prepare will set them (a recycled point's midpoint is current too).
+    ContactPoint point = contact.points[i];
+    point.anchor_a = point.point - a.transform.position;
+    point.anchor_b = point.point - b.transform.position;
+    const float slip = std::fabs(glm::dot(relative_velocity(a, b, point), tangent));
+    const float k_tangent = inverse_effective_mass(mass, point, tangent);
+    if (k_tangent > 0.0f) needed += slip / k_tangent;
+    load += point.normal_impulse;
+    fastest = std::max(fastest, slip);
+  }
+  if (!(fastest > sticking_speed)) return false;
+  const float mean_needed = needed / static_cast<float>(contact.point_count);
+  return mean_needed > contact.static_friction * impulse_intervals * load;
+}
+
+void break_loose_if_slipping(Contact& contact, const Body& a, const Body& b,
+                             const WorldSettings& settings) {
+  if (!settings.enable_friction || settings.solver == SolverMethod::PerIteration) return;
+  const float intervals =
+      settings.solver == SolverMethod::SoftStep ? static_cast<float>(settings.substeps) : 1.0f;
+  if (!static_friction_cannot_stop_slip(contact, a, b, settings.enable_rotation, intervals)) return;
+  contact.sliding = true;
+  contact.steps_at_static_limit = 0;
+  contact.limit_slip = -1.0f;
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    const float limit = contact.dynamic_friction * point.normal_impulse;
+    point.tangent_impulse = std::clamp(point.tangent_impulse, -limit, limit);
+  }
+}
 
 void update_friction_state(Contact& contact, Body& a, Body& b) {
   const vec2 tangent = tangent_of(contact.normal);
@@ -25,6 +67,8 @@ void update_friction_state(Contact& contact, Body& a, Body& b) {
     at_static_limit = at_static_limit && contact.points[i].friction_at_limit;
     total_normal_impulse += contact.points[i].normal_impulse;
   }
+  const float last_limit_slip = contact.limit_slip;
+  contact.limit_slip = -1.0f;
   if (!at_static_limit || !(total_normal_impulse > 0.0f)) {
     contact.steps_at_static_limit = 0;
     return;
@@ -36,9 +80,15 @@ void update_friction_state(Contact& contact, Body& a, Body& b) {
   }
   // Saturated friction that still reduced (or kept) the slip the contact brought into the
   // step holds against what drives it: it is only clearing residual slip of an unconverged
-  // solve. Only a slip that grows under the full static limit means the cone is reached.
-  const float end_slip = slip_sum / static_cast<float>(contact.point_count);
-  if (!(std::fabs(end_slip) > std::fabs(contact.start_slip))) {
+  // solve. Only a slip that grows under the full static limit means the cone is reached:
+  // within the step (a force drives it), or from the end of last step, also at the limit, to
+  // the end of this one (an impulse applied between the steps drives it: it raises the slip
+  // the step starts with, so the step alone always sees it shrink).
+  const float end_slip = std::fabs(slip_sum / static_cast<float>(contact.point_count));
+  contact.limit_slip = end_slip;
+  const bool grew_in_step = end_slip > std::fabs(contact.start_slip);
+  const bool grew_since_last_step = last_limit_slip >= 0.0f && end_slip > last_limit_slip;
+  if (!grew_in_step && !grew_since_last_step) {
     contact.steps_at_static_limit = 0;
     return;
   }
@@ -46,6 +96,7 @@ void update_friction_state(Contact& contact, Body& a, Body& b) {
   // saturated limit before the normal impulses have converged. Two steps in a row cannot.
   if (++contact.steps_at_static_limit < 2) return;
   contact.steps_at_static_limit = 0;
+  contact.limit_slip = -1.0f;
   contact.sliding = true;
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];

@@ -34,13 +34,18 @@ SceneRun::SceneRun(const Scene& scene, const Params& params)
       script_ ? script_->buttons() : std::vector<std::string>{};
   int bodies_so_far = static_cast<int>(created_.size());
   for (const SceneEvent* event : events_) {
-    const bool names_body =
-        event->kind == SceneEventKind::Impulse || event->kind == SceneEventKind::Remove;
+    const bool pushes = event->kind == SceneEventKind::Impulse || event->kind == SceneEventKind::Force;
+    const bool names_body = pushes || event->kind == SceneEventKind::Remove;
     if (names_body && (event->body < 0 || event->body >= bodies_so_far)) {
       throw UsageError(scene.source + ": " + event->origin + ": body " +
                        std::to_string(event->body) + " does not exist at step " +
                        std::to_string(event->step) + " (" + std::to_string(bodies_so_far) +
                        " bodies created by then)");
+    }
+    // The builder's bodies exist now: one an impulse or a force cannot move is an error before
+    // the run (a scene file's are rejected when it loads; a spawned one, when the event applies).
+    if (pushes && static_cast<std::size_t>(event->body) < created_.size()) {
+      check_movable(*event, world_.body(created_[static_cast<std::size_t>(event->body)]).type);
     }
     if (event->kind == SceneEventKind::Spawn) ++bodies_so_far;
     if (event->kind == SceneEventKind::Button &&
@@ -74,13 +79,33 @@ BodyId SceneRun::event_body(const SceneEvent& event) const {
   return id;
 }
 
+void SceneRun::check_movable(const SceneEvent& event, BodyType type) const {
+  if (type == BodyType::Dynamic) return;
+  std::string label = "body " + std::to_string(event.body);
+  const auto name = scene_.body_names.find(event.body);
+  if (name != scene_.body_names.end()) label += " (\"" + name->second + "\")";
+  throw UsageError(scene_.source + ": " + event.origin + ": " +
+                   unmovable_body_reason(label, type, event.kind));
+}
+
 void SceneRun::apply_event(const SceneEvent& event) {
   switch (event.kind) {
     case SceneEventKind::Impulse: {
       const BodyId id = event_body(event);
+      check_movable(event, world_.body(id).type);
       const vec2 point = event.point ? *event.point : world_.body(id).transform.position;
       world_.apply_linear_impulse(id, event.impulse, point);
       if (event.angular_impulse != 0.0f) world_.apply_angular_impulse(id, event.angular_impulse);
+      break;
+    }
+    case SceneEventKind::Force: {
+      const BodyId id = event_body(event);
+      check_movable(event, world_.body(id).type);
+      // Where it acts, in the body's frame: it moves with the body for the whole window.
+      const Transform& transform = world_.body(id).transform;
+      const vec2 local_point =
+          event.point ? transform.apply_inverse(*event.point) : vec2(0.0f, 0.0f);
+      forces_.push_back(ActiveForce{&event, event.step + event.steps, local_point});
       break;
     }
     case SceneEventKind::Spawn:
@@ -102,6 +127,7 @@ void SceneRun::step() {
     apply_event(*events_[next_event_++]);
     changed = true;
   }
+  apply_forces(step);
   if (script_) {
     script_->before_step(world_, step);
     changed = true;
@@ -119,6 +145,27 @@ void SceneRun::step() {
       throw std::runtime_error(describe_divergence(scene_, divergences_.back()) +
                                " (--strict makes this an error)");
     }
+  }
+}
+
+void SceneRun::apply_forces(std::int64_t step) {
+  // Forces are cleared after every world step, so each force event's is applied again before
+  // each step of its window [step, step + steps); finished ones are dropped.
+  forces_.erase(std::remove_if(forces_.begin(), forces_.end(),
+                               [step](const ActiveForce& force) { return step >= force.end; }),
+                forces_.end());
+  for (const ActiveForce& force : forces_) {
+    const SceneEvent& event = *force.event;
+    const BodyId id = created_[static_cast<std::size_t>(event.body)];
+    if (!world_.is_valid(id)) {
+      throw UsageError(scene_.source + ": " + event.origin + ": body " +
+                       std::to_string(event.body) + " was removed before step " +
+                       std::to_string(step) + ", within the force's steps " +
+                       std::to_string(event.step) + ".." + std::to_string(force.end - 1));
+    }
+    const vec2 point = world_.body(id).transform.apply(force.local_point);
+    world_.apply_force(id, event.force, point);
+    if (event.torque != 0.0f) world_.apply_torque(id, event.torque);
   }
 }
 

@@ -40,7 +40,8 @@ class SceneRun {
   /// The parameters of this run.
   const Params& params() const { return params_; }
 
-  /// Applies the events of step `step_count()`, runs the script's `before_step`, takes one
+  /// Applies the events of step `step_count()` and the forces of the force events whose
+  /// window covers it, runs the script's `before_step`, takes one
   /// world step, checks the shape kinds of any new body and records diverged bodies. Throws
   /// `UsageError` naming the event when it refers to a body that was removed, and
   /// `Interrupted` when SIGINT, SIGTERM or SIGHUP arrived.
@@ -73,6 +74,19 @@ class SceneRun {
 
  private:
   void apply_event(const SceneEvent& event);
+  // Throws `UsageError` naming the event when its body, of `type`, is not dynamic (an impulse
+  // or a force would silently do nothing).
+  void check_movable(const SceneEvent& event, BodyType type) const;
+  // Applies every force event whose window covers `step` (and forgets the finished ones).
+  void apply_forces(std::int64_t step);
+
+  // A force event in its window: it acts before each step until `end` (exclusive), at
+  // `local_point` in its body's frame (the centre of mass when the event names no point).
+  struct ActiveForce {
+    const SceneEvent* event = nullptr;
+    std::int64_t end = 0;
+    vec2 local_point{0.0f, 0.0f};
+  };
   void verify_model() const;  // verify_shape_kinds, naming the scene file
   BodyId event_body(const SceneEvent& event) const;
 
@@ -82,6 +96,7 @@ class SceneRun {
   std::unique_ptr<StepScript> script_;
   std::vector<const SceneEvent*> events_;  // sorted by step, stable for equal steps
   std::size_t next_event_ = 0;
+  std::vector<ActiveForce> forces_;  // force events in their window, in application order
   std::vector<BodyId> created_;  // creation index -> handle
   std::vector<Divergence> divergences_;
   int bodies_in_run_ = 0;

@@ -20,6 +20,9 @@ struct BodySpawn {
 /// What a scripted event does.
 enum class SceneEventKind {
   Impulse,  ///< apply a linear (and angular) impulse to a body
+  /// Apply a force (and torque) to a body before each of `steps` consecutive steps: the world
+  /// integrates it every sub-step, a smooth push where an impulse is a kick.
+  Force,
   Spawn,    ///< create a body
   Remove,   ///< remove a body
   Button,   ///< press or release a named button of the scene's controls
@@ -30,14 +33,31 @@ enum class SceneEventKind {
 struct SceneEvent {
   std::int64_t step = 0;  ///< applied just before this step is taken (0: before the first)
   SceneEventKind kind = SceneEventKind::Impulse;  ///< what happens
-  int body = -1;                                  ///< Impulse, Remove: creation index of the body
+  int body = -1;  ///< Impulse, Force, Remove: creation index of the body
   vec2 impulse{0.0f, 0.0f};                       ///< Impulse: linear impulse, N s
-  std::optional<vec2> point;     ///< Impulse: world point, metres (none: centre of mass)
+  /// Impulse, Force: world point, metres (none: centre of mass). A force's point is where it
+  /// acts at its first step; it moves with the body after that.
+  std::optional<vec2> point;
   float angular_impulse = 0.0f;  ///< Impulse: angular impulse, N m s
+  vec2 force{0.0f, 0.0f};        ///< Force: force, N
+  float torque = 0.0f;           ///< Force: torque, N m
+  std::int64_t steps = 1;        ///< Force: consecutive steps it acts for, from `step` (>= 1)
   BodySpawn spawn;               ///< Spawn: the body to create
   std::string button;            ///< Button: its name, e.g. "jump"
   bool pressed = true;           ///< Button: true = pressed, false = released
   std::string origin;            ///< where it was declared, for messages ("events[2]")
 };
+
+/// Why an impulse or force event on a body of `type` (static or kinematic) is rejected: the
+/// world moves only dynamic bodies by them, so it would silently do nothing. `body` names it,
+/// e.g. "body 0 (\"ground\")". Gives "body 0 (\"ground\") is static: an impulse cannot move it".
+inline std::string unmovable_body_reason(const std::string& body, BodyType type,
+                                         SceneEventKind kind) {
+  const char* what = kind == SceneEventKind::Force ? "a force" : "an impulse";
+  const char* type_name = type == BodyType::Static ? "static" : "kinematic";
+  std::string reason = body + " is " + type_name + ": " + what + " cannot move it";
+  if (type == BodyType::Kinematic) reason += " (a kinematic body moves only at its set velocity)";
+  return reason;
+}
 
 }  // namespace impulse2d::demos

@@ -5,6 +5,8 @@
 /// arithmetic and then freeze, explode or vanish without a word, so the loader rejects them
 /// with the JSON path, the range and the reason (README, "Limits").
 
+#include <cstdint>
+
 namespace impulse2d::demos::limits {
 
 /// Smallest size (radius, half extent, polygon extent), m: the solver's slop is 1 cm and
@@ -58,6 +60,15 @@ constexpr const char* speed_reason = "m/s or rad/s; beyond it one step moves a b
 constexpr float max_impulse = 1e7f;
 /// Why impulses have their range.
 constexpr const char* impulse_reason = "N s; beyond it the body leaves float range";
+
+/// Largest |force| component and |torque| of a force event, N and N m: one step's push F dt
+/// (dt up to 0.1 s) then stays within the impulse limit.
+constexpr float max_force = 1e8f;
+/// Why forces have their range.
+constexpr const char* force_reason =
+    "N or N m; beyond it one step's push F dt exceeds the 1e7 N s impulse limit";
+/// Most steps a force event may last (the longest run).
+constexpr std::int64_t max_force_steps = 100000000;
 
 /// Largest |gravity_scale|.
 constexpr float max_gravity_scale = 100.0f;

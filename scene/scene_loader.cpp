@@ -522,6 +522,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
       event.step = node.field("step").integer(0, 100000000);
       const JsonCursor type = node.field("type");
       event.kind = type.choice<SceneEventKind>({{"impulse", SceneEventKind::Impulse},
+                                                {"force", SceneEventKind::Force},
                                                 {"spawn", SceneEventKind::Spawn},
                                                 {"remove", SceneEventKind::Remove},
                                                 {"button", SceneEventKind::Button}});
@@ -539,6 +540,18 @@ Scene parse_scene(const std::string& text, const std::string& file) {
                 angular->magnitude_at_most(limits::max_impulse, limits::impulse_reason);
           }
           break;
+        case SceneEventKind::Force:
+          node.allow_only({"step", "type", "body", "force", "point", "torque", "steps"});
+          event.body = read_body_reference(node.field("body"), names);
+          event.force = node.field("force").vector_at_most(limits::max_force, limits::force_reason);
+          if (auto point = node.optional_field("point")) {
+            event.point = point->vector_at_most(limits::max_coordinate, limits::coordinate_reason);
+          }
+          if (auto torque = node.optional_field("torque")) {
+            event.torque = torque->magnitude_at_most(limits::max_force, limits::force_reason);
+          }
+          event.steps = node.field("steps").integer(1, limits::max_force_steps);
+          break;
         case SceneEventKind::Spawn:
           node.allow_only({"step", "type", "body"});
           event.spawn = read_body(node.field("body"), table);
@@ -555,6 +568,29 @@ Scene parse_scene(const std::string& text, const std::string& file) {
           break;
       }
       scene.events.push_back(std::move(event));
+    }
+
+    // An impulse or a force on a static or kinematic body would do nothing (the world moves
+    // only dynamic bodies by them): reject it here, where every body's type is known.
+    std::map<int, std::size_t> spawn_event;  // creation index -> event index
+    for (const auto& [event_index, creation_index] : spawn_index) {
+      spawn_event[creation_index] = event_index;
+    }
+    for (std::size_t i = 0; i < scene.events.size(); ++i) {
+      const SceneEvent& event = scene.events[i];
+      if (event.kind != SceneEventKind::Impulse && event.kind != SceneEventKind::Force) continue;
+      const BodyDef* def = nullptr;
+      if (event.body >= 0 && static_cast<std::size_t>(event.body) < bodies.size()) {
+        def = &bodies[static_cast<std::size_t>(event.body)].def;
+      } else if (const auto spawn = spawn_event.find(event.body); spawn != spawn_event.end()) {
+        def = &scene.events[spawn->second].spawn.def;
+      }
+      if (def == nullptr || def->type == BodyType::Dynamic) continue;  // (a missing body: the run says)
+      std::string label = "body " + std::to_string(event.body);
+      for (const auto& [name, index] : names) {
+        if (index == event.body) label += " (\"" + name + "\")";
+      }
+      events->element(i).field("body").fail(unmovable_body_reason(label, def->type, event.kind));
     }
   }
 

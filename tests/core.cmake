@@ -10,6 +10,7 @@ impulse2d_add_test(test_physics
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_free_fall.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_bounce.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_friction.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_friction_state.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_collisions_1d.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_stacking.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_continuous.cpp

@@ -4,6 +4,7 @@ impulse2d_add_test(test_demos
   SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_scenes.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_scene_files.cpp
           ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_divergence.cpp
+          ${CMAKE_CURRENT_SOURCE_DIR}/test_demos_force_event.cpp
   LIBS impulse2d_demos)
 target_compile_definitions(test_demos PRIVATE IMPULSE2D_SCENES_DIR="${PROJECT_SOURCE_DIR}/demos/scenes")
 impulse2d_add_test(test_cli
