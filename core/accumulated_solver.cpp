@@ -53,7 +53,7 @@ void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context)
     }
     if (context.friction) update_friction_state(contacts, bodies);
     if (!context.explicit_euler) stages.integrate_positions(h);  // with the new velocity
-    apply_bounces(contacts, bodies, context.velocity_iterations);
+    apply_bounces(contacts, bodies);
     stages.correct_positions();
   }
 }

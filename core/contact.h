@@ -46,6 +46,11 @@ struct ContactPoint {
   /// True once the point's bounce was applied: its accumulated impulses are a collision's, not
   /// a resting contact's, so they are not warm-started into the next (sub-)step.
   bool bounced = false;
+  /// True when the point was still apart at the start of the step and approached faster than
+  /// gravity alone brings a resting contact in a step (2 |g| h): its impulse stops a fall (an
+  /// inelastic catch), so, like a bounce's, it is not warm-started into the next step, where
+  /// it would launch the body off the surface it landed on.
+  bool caught = false;
   /// True when the point is elastic (restitution > 0), one of its bodies bounces in this
   /// (sub-)step, and it neither closes its gap within the step at the velocities the step
   /// began with, overlaps by more than the slop, nor carries impulse from the last step: it
@@ -97,6 +102,8 @@ struct Contact {
   /// Mean relative tangential velocity (m/s, along the normal turned clockwise) of the points
   /// at prepare, before this step's forces: slip the contact carried into the step.
   float start_slip = 0.0f;
+  /// Sum (N s) of the points' normal impulses at prepare: the load carried into the step.
+  float start_load = 0.0f;
   /// Consecutive steps (0..2) that ended with every point at the static limit and the slip
   /// growing; the contact breaks loose at 2 (one such step can be a cold-started solve).
   std::uint8_t steps_at_static_limit = 0;

@@ -22,12 +22,16 @@ enum ContactBlockFlag : std::int32_t {
   block_point_present = 1 << 4,   ///< the lane's contact has point slot 0 (<< 1: slot 1)
   block_point_waiting = 1 << 6,   ///< point slot 0 sits this sub-step out (<< 1: slot 1)
   block_point_bouncing = 1 << 8,  ///< point slot 0 bounces in this sub-step (<< 1: slot 1)
+  /// Both point slots are solved together through the inverse of their 2x2 effective-mass
+  /// matrix (well conditioned), so a manifold pressed evenly (a box landing flat) gets even
+  /// impulses whichever point comes first.
+  block_point_pair = 1 << 10,
 };
 
 // A block's lanes are split in three arrays by the passes that read them: the blocks are
 // streamed a dozen times per step, so once they outgrow the cache their bytes are the solve's
 // cost. Warm starting reads only the `ContactBlock` (84 bytes a lane), the relax pass that and
-// the `ContactBlockSolve` (152), the biased pass all three (192).
+// the `ContactBlockSolve` (164), the biased pass all three (204).
 
 /// What warm starting applies at one manifold point slot, one value per lane.
 template <int Lanes>
@@ -75,6 +79,11 @@ struct alignas(4 * Lanes) ContactBlockSolve {
   std::int32_t friction_at_limit[Lanes];
   float static_friction[Lanes];       ///< mixed coefficient
   float dynamic_friction[Lanes];      ///< mixed coefficient
+  /// Inverse of the two points' 2x2 normal effective-mass matrix (kg), where
+  /// `block_point_pair` is set: entry (0,0), (0,1) = (1,0) and (1,1).
+  float pair_mass_00[Lanes];
+  float pair_mass_01[Lanes];  ///< (0,1) and (1,0), kg
+  float pair_mass_11[Lanes];  ///< (1,1), kg
   BlockPointSolve<Lanes> points[2];   ///< manifold point slots
 };
 

@@ -49,10 +49,10 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
                          std::vector<std::uint8_t>& bouncing_bodies);
 
 /// After positions moved: raises every bouncing point's relative normal velocity to its
-/// `bounce_speed` (accumulated impulse kept >= 0) in `passes` Gauss-Seidel passes over the
-/// bouncing points, so that simultaneous bounces are met together, both points of a manifold
-/// at once (2x2 block); then ends the bounces.
-void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies, int passes);
+/// `bounce_speed` (accumulated impulse kept >= 0) in Gauss-Seidel passes over the bouncing
+/// points, so that simultaneous bounces are met together, both points of a manifold at once
+/// (2x2 block); then ends the bounces.
+void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies);
 
 /// Current separation (m) of a prepared point, from its local anchors: > 0 apart. Inline: the
 /// soft step asks it for every point in every pass.

@@ -9,6 +9,14 @@ namespace impulse2d {
 
 using namespace contact_detail;
 
+namespace {
+
+// Largest change of a contact's total normal impulse over a step (a fraction of it) for which
+// its load counts as known: 1 %, the accuracy the static limit mu_s * Pn is wanted to.
+constexpr float settled_load_change = 0.01f;
+
+}  // namespace
+
 bool static_friction_cannot_stop_slip(const Contact& contact, const Body& a, const Body& b,
                                       bool rotation, float impulse_intervals) {
   if (contact.sliding || contact.point_count == 0) return false;
@@ -69,7 +77,12 @@ void update_friction_state(Contact& contact, Body& a, Body& b) {
   }
   const float last_limit_slip = contact.limit_slip;
   contact.limit_slip = -1.0f;
-  if (!at_static_limit || !(total_normal_impulse > 0.0f)) {
+  // The cone is judged against the load only once the load is known: a step whose normal
+  // impulses moved by more than `settled_load_change` of themselves since the step began (a
+  // cold start, a landing) cannot tell a saturated contact from one still taking its load.
+  const bool load_settled = std::fabs(total_normal_impulse - contact.start_load) <=
+                            settled_load_change * total_normal_impulse;
+  if (!at_static_limit || !(total_normal_impulse > 0.0f) || !load_settled) {
     contact.steps_at_static_limit = 0;
     return;
   }

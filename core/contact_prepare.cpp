@@ -3,6 +3,8 @@
 #include "core/contact_recycle.h"
 #include "core/contact_solver_internal.h"
 
+#include <cmath>
+
 namespace impulse2d {
 
 using namespace contact_detail;
@@ -25,7 +27,10 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
   const vec2 tangent = tangent_of(normal);
   contact.approach_acceleration =
       -glm::dot(free_acceleration(b, context.gravity) - free_acceleration(a, context.gravity), normal);
+  // A resting contact approaches at most what gravity adds in a step; twice that is a fall.
+  const float catch_speed = 2.0f * std::sqrt(length_squared(context.gravity)) * context.time_step;
   float slip_sum = 0.0f;
+  float load_sum = 0.0f;
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
     if (contact.recycled) {
@@ -38,7 +43,9 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
       point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth);
       point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
     }
-    slip_sum += glm::dot(relative_velocity(a, b, point), tangent);
+    const vec2 velocity = relative_velocity(a, b, point);
+    slip_sum += glm::dot(velocity, tangent);
+    point.caught = point.depth < 0.0f && -glm::dot(velocity, normal) > catch_speed;
     const float k_normal = inverse_effective_mass(contact.mass, point, normal);
     const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
     point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
@@ -52,8 +59,10 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
       point.tangent_impulse = 0.0f;
     }
     if (!context.friction) point.tangent_impulse = 0.0f;
+    load_sum += point.normal_impulse;
   }
   contact.start_slip = slip_sum / static_cast<float>(contact.point_count);
+  contact.start_load = load_sum;
 }
 
 void prepare_contacts(std::vector<Contact>& contacts, const std::vector<Body>& bodies,

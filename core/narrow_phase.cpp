@@ -45,15 +45,16 @@ void mix_materials(const Body& a, const Body& b, const WorldSettings& settings, 
       mix_restitution(a.material.restitution, b.material.restitution, settings.restitution_mixing);
 }
 
-// A kept point whose bounce was applied last step drops its impulses: a collision's impulse
-// is not a load to warm-start (see ContactPoint::bounced).
+// A kept point that bounced or was caught last step drops its impulses: a collision's impulse
+// is not a load to warm-start (see ContactPoint::bounced, ContactPoint::caught).
 void forget_bounced_impulses(Contact& contact) {
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
-    if (!point.bounced) continue;
+    if (!point.bounced && !point.caught) continue;
     point.normal_impulse = 0.0f;
     point.tangent_impulse = 0.0f;
     point.bounced = false;
+    point.caught = false;
   }
 }
 
@@ -65,7 +66,7 @@ void carry_over_impulses(const Contact& old_contact, Contact& contact) {
       const ContactPoint& old_point = old_contact.points[k];
       if (old_point.feature_id == point.feature_id) {
         // A collision's impulse is not a load to warm-start (see ContactPoint::bounced).
-        if (old_point.bounced) break;
+        if (old_point.bounced || old_point.caught) break;
         point.normal_impulse = old_point.normal_impulse;
         point.tangent_impulse = old_point.tangent_impulse;
         break;

@@ -69,7 +69,7 @@ void PerIterationSolver::step(SolverStages& stages, const SolverContext& context
                         stages.solver_body_flags());
     for (int i = 0; i < context.velocity_iterations; ++i) solve_pass(contacts, bodies, context);
     if (!context.explicit_euler) stages.integrate_positions(h);  // with the new velocity
-    apply_bounces(contacts, bodies, context.velocity_iterations);
+    apply_bounces(contacts, bodies);
     stages.correct_positions();
   }
 }

@@ -17,6 +17,16 @@ const char* solver_name(SolverMethod method) {
   return "?";
 }
 
+WorldSettings settings_for(SolverMethod method) {
+  WorldSettings settings;
+  settings.solver = method;
+  if (method != SolverMethod::SoftStep) {
+    settings.substeps = 1;
+    settings.velocity_iterations = 16;
+  }
+  return settings;
+}
+
 void validate_settings(const WorldSettings& s) {
   auto require = [](bool ok, const char* field, const char* reason) {
     if (!ok) throw Error(std::string("WorldSettings.") + field + ": " + reason);

@@ -58,12 +58,17 @@ enum class BroadPhaseMethod {
 struct WorldSettings {
   vec2 gravity{0.0f, -9.81f};  ///< m/s^2
   float time_step = 1.0f / 60.0f;  ///< seconds per step
-  int substeps = 1;  ///< each step is split into this many equal sub-steps
+  /// Each step is split into this many equal sub-steps. The default is the soft step's (Box2D
+  /// v3's 4); `settings_for` gives each method its own.
+  int substeps = 4;
 
-  SolverMethod solver = SolverMethod::AccumulatedImpulses;  ///< impulse scheme
-  /// Passes over all contacts per (sub)step. 16 holds a 30-box stack of rotating boxes that 8
-  /// lets fall (README, "Measured figures: physics").
-  int velocity_iterations = 16;
+  /// Impulse scheme. The soft step is the default: of the three it is the most accurate on the
+  /// exact-answer suite and the pyramids and the fastest (docs/engine.md, "The default").
+  SolverMethod solver = SolverMethod::SoftStep;
+  /// Passes over all contacts per (sub-)step: the soft step makes one soft pass and one relax
+  /// pass of this many each (Box2D v3: 1); the accumulated and per-iteration solvers want 16
+  /// at one sub-step (16 holds a 30-box stack of rotating boxes that 8 lets fall).
+  int velocity_iterations = 1;
   /// Contacts the soft step solves side by side (SoftStep only): 4 (SSE2) or 8 (AVX2, x86-64
   /// CPUs that have it); 0 picks the widest this CPU runs. The result is bit-identical
   /// whichever is chosen (see `wide_contact_solver.h`), so this only changes the speed.
@@ -126,6 +131,11 @@ struct WorldSettings {
   float time_to_sleep = 0.5f;        ///< seconds a body must stay slow before it sleeps
   float max_linear_speed = 400.0f;   ///< m/s clamp against blow-ups
 };
+
+/// The default settings with `method` at the sub-steps and passes it is measured at:
+/// SoftStep 4 sub-steps of 1 pass (the default), AccumulatedImpulses and PerIteration 1 step
+/// of 16 passes.
+WorldSettings settings_for(SolverMethod method);
 
 /// The solver's name as scene files write it: "accumulated", "per_iteration", "soft_step".
 const char* solver_name(SolverMethod method);

@@ -58,12 +58,13 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     if (may_bounce) {
       wide.store_impulses(contacts);
       states.store(bodies);
-      apply_bounces(contacts, bodies, context.velocity_iterations);
+      apply_bounces(contacts, bodies);
       states.load(bodies);
       wide.load_points(contacts);
     }
   }
   states.store(bodies);
+  if (states.has_bullets()) stages.sweep_bullets(context.time_step);
   // One walk in the list's order writes the impulses back and then, with friction, switches
   // each contact between sticking and sliding (the switch reads them).
   wide.store_impulses(contacts, [&](Contact& contact) {

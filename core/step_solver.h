@@ -34,9 +34,14 @@ class SolverStages {
   virtual void begin_solver_bodies() = 0;
   /// `integrate_velocities` on `solver_body_states()` instead of the bodies.
   virtual void integrate_solver_velocities(float dt) = 0;
-  /// `integrate_positions` on `solver_body_states()` instead of the bodies (bullets are swept
-  /// through the bodies: written out, swept, read back).
+  /// `integrate_positions` on `solver_body_states()` instead of the bodies (bullets are not
+  /// swept: see `sweep_bullets`).
   virtual void integrate_solver_positions(float dt) = 0;
+  /// Moves every bullet back to where its motion over the last `dt` seconds first met another
+  /// body (continuous collision, when enabled), on the bodies. The soft step sweeps once a
+  /// step, after its sub-steps, as its contacts are found once a step: a bullet stopped
+  /// within a sub-step would have no contact to meet in the next one.
+  virtual void sweep_bullets(float dt) = 0;
   /// Removes overlap left after the velocity solve, by the world's position correction method.
   virtual void correct_positions() = 0;
   /// This step's contacts, sorted by pair.

@@ -316,12 +316,22 @@ Floats clamp_lanes(Floats value, Floats low, Floats high) {
   return select_lanes(value < low, low, select_lanes(high < value, high, value));
 }
 
-// The soft step's normal constraint of point slot `slot` (0 or 1), whose separation (m) is
-// `separation`.
+// What the soft step's normal constraint of one point slot asks in this pass.
 template <int Lanes>
-void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
-                  typename LaneTypes<Lanes>::Floats separation, BlockPointImpulse<Lanes>& point,
-                  const BlockPointSolve<Lanes>& solve, const WidePassSettings& pass) {
+struct NormalTarget {
+  typename LaneTypes<Lanes>::Masks active;        // lanes whose point takes part
+  typename LaneTypes<Lanes>::Floats target_speed;  // m/s: relative normal speed sought
+  typename LaneTypes<Lanes>::Floats mass_scale;    // softness' share of the effective mass
+  typename LaneTypes<Lanes>::Floats impulse_scale; // softness' share of the old impulse
+};
+
+// The target of point slot `slot` (0 or 1), whose separation (m) is `separation`.
+template <int Lanes>
+NormalTarget<Lanes> normal_target(const BlockState<Lanes>& state,
+                                  const SoftnessLanes<Lanes>& softness, int slot,
+                                  typename LaneTypes<Lanes>::Floats separation,
+                                  const BlockPointSolve<Lanes>& solve,
+                                  const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
   const Floats zero = {};
@@ -332,26 +342,39 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
   const Floats velocity_bias = load_lanes<Floats>(solve.velocity_bias);
   const Masks apart = separation > zero;
 
-  Masks active = present & ~waiting;
-  Floats target_speed, mass_scale, impulse_scale;
+  NormalTarget<Lanes> target;
+  target.active = present & ~waiting;
   if (pass.use_bias) {
     // Apart: may approach until the gap closes; touching: pushed out softly.
     const Floats push_out = -softness.bias_rate * separation;
     const Floats push_max = splat<Floats>(pass.push_max_speed);
     const Floats soft_target = select_lanes(push_max < push_out, push_max, push_out);
     const Floats gap_target = -separation * splat<Floats>(pass.inverse_substep);
-    target_speed = select_lanes(bouncing, velocity_bias, select_lanes(apart, gap_target, soft_target));
+    target.target_speed =
+        select_lanes(bouncing, velocity_bias, select_lanes(apart, gap_target, soft_target));
     const Masks rigid = bouncing | apart;
-    mass_scale = select_lanes(rigid, one, softness.mass_scale);
-    impulse_scale = select_lanes(rigid, zero, softness.impulse_scale);
+    target.mass_scale = select_lanes(rigid, one, softness.mass_scale);
+    target.impulse_scale = select_lanes(rigid, zero, softness.impulse_scale);
   } else {
     // Relaxing takes the push-out speed off touching points; points still apart keep theirs.
-    active &= bouncing | ~apart;
-    target_speed = select_lanes(bouncing, velocity_bias, zero);
-    mass_scale = one;
-    impulse_scale = zero;
+    target.active &= bouncing | ~apart;
+    target.target_speed = select_lanes(bouncing, velocity_bias, zero);
+    target.mass_scale = one;
+    target.impulse_scale = zero;
   }
+  return target;
+}
 
+// Point slot `slot`'s normal constraint on its own, in the lanes of `target.active` outside
+// `skip` (lanes the pair solve already served).
+template <int Lanes>
+void solve_normal(BlockState<Lanes>& state, const NormalTarget<Lanes>& target,
+                  BlockPointImpulse<Lanes>& point, const BlockPointSolve<Lanes>& solve,
+                  typename LaneTypes<Lanes>::Masks skip) {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  typedef typename LaneTypes<Lanes>::Masks Masks;
+  const Floats zero = {};
+  const Masks active = target.active & ~skip;
   const Floats anchor_ax = load_lanes<Floats>(point.anchor_ax);
   const Floats anchor_ay = load_lanes<Floats>(point.anchor_ay);
   const Floats anchor_bx = load_lanes<Floats>(point.anchor_bx);
@@ -360,9 +383,9 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
   const Floats normal_speed = state.relative_speed(anchor_ax, anchor_ay, anchor_bx, anchor_by,
                                                    state.normal_x, state.normal_y);
   const Floats unclamped = normal_impulse -
-                           load_lanes<Floats>(solve.normal_mass) * mass_scale *
-                               (normal_speed - target_speed) -
-                           impulse_scale * normal_impulse;
+                           load_lanes<Floats>(solve.normal_mass) * target.mass_scale *
+                               (normal_speed - target.target_speed) -
+                           target.impulse_scale * normal_impulse;
   const Floats accumulated = select_lanes(unclamped < zero, zero, unclamped);
   const Floats change = select_lanes(active, accumulated - normal_impulse, zero);
   store_lanes(point.normal_impulse, select_lanes(active, accumulated, normal_impulse));
@@ -370,12 +393,60 @@ void solve_normal(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness
               state.normal_y * change);
 }
 
+// Both point slots' normal constraints at once, through the inverse of their effective-mass
+// matrix (`block_point_pair`), where both take part and both new impulses push (>= 0): the
+// soft update of each point as solve_normal makes it, with the coupling between the two points
+// solved exactly instead of one after the other. Returns the lanes it served; the others are
+// left to solve_normal point by point. Both speeds are read before either impulse is applied,
+// so two points pressed alike get bit-identical impulses.
+template <int Lanes>
+typename LaneTypes<Lanes>::Masks solve_normal_pair(BlockState<Lanes>& state,
+                                                   const NormalTarget<Lanes> (&target)[2],
+                                                   BlockPointImpulse<Lanes> (&points)[2],
+                                                   const ContactBlockSolve<Lanes>& solve) {
+  typedef typename LaneTypes<Lanes>::Floats Floats;
+  typedef typename LaneTypes<Lanes>::Masks Masks;
+  const Floats zero = {};
+  const Masks paired = flag_lanes(state.flags, block_point_pair) & target[0].active &
+                       target[1].active;
+  Floats anchor_ax[2], anchor_ay[2], anchor_bx[2], anchor_by[2], impulse[2], error[2];
+  for (int slot = 0; slot < 2; ++slot) {
+    anchor_ax[slot] = load_lanes<Floats>(points[slot].anchor_ax);
+    anchor_ay[slot] = load_lanes<Floats>(points[slot].anchor_ay);
+    anchor_bx[slot] = load_lanes<Floats>(points[slot].anchor_bx);
+    anchor_by[slot] = load_lanes<Floats>(points[slot].anchor_by);
+    impulse[slot] = load_lanes<Floats>(points[slot].normal_impulse);
+    error[slot] = state.relative_speed(anchor_ax[slot], anchor_ay[slot], anchor_bx[slot],
+                                       anchor_by[slot], state.normal_x, state.normal_y) -
+                  target[slot].target_speed;
+  }
+  const Floats mass_00 = load_lanes<Floats>(solve.pair_mass_00);
+  const Floats mass_01 = load_lanes<Floats>(solve.pair_mass_01);
+  const Floats mass_11 = load_lanes<Floats>(solve.pair_mass_11);
+  const Floats unclamped[2] = {
+      impulse[0] - target[0].mass_scale * (mass_00 * error[0] + mass_01 * error[1]) -
+          target[0].impulse_scale * impulse[0],
+      impulse[1] - target[1].mass_scale * (mass_01 * error[0] + mass_11 * error[1]) -
+          target[1].impulse_scale * impulse[1]};
+  const Masks served = paired & (unclamped[0] >= zero) & (unclamped[1] >= zero);
+  for (int slot = 0; slot < 2; ++slot) {
+    const Floats change = select_lanes(served, unclamped[slot] - impulse[slot], zero);
+    store_lanes(points[slot].normal_impulse, select_lanes(served, unclamped[slot], impulse[slot]));
+    state.apply(anchor_ax[slot], anchor_ay[slot], anchor_bx[slot], anchor_by[slot],
+                state.normal_x * change, state.normal_y * change);
+  }
+  return served;
+}
+
 // Friction of point slot `slot`: anchored static friction in the biased pass (sticking
 // contacts only; `drift`: the point's tangential drift (m) from where it stuck), Coulomb
-// friction with the contact's current coefficient in the relax pass.
+// friction with the contact's current coefficient in the relax pass. The Coulomb limit is the
+// point's own, mu * Pn, plus what the other point leaves of its own unused: with rotation the
+// two points carry unequal loads and need unequal friction, and a limit per point alone would
+// let the contact slip before its total friction reached the contact's cone mu * (Pn0 + Pn1).
 template <int Lanes>
 void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
-                    typename LaneTypes<Lanes>::Floats drift, BlockPointImpulse<Lanes>& point,
+                    typename LaneTypes<Lanes>::Floats drift, BlockPointImpulse<Lanes> (&points)[2],
                     ContactBlockSolve<Lanes>& solve, const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
@@ -383,6 +454,8 @@ void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softne
   const Masks present = flag_lanes(state.flags, block_point_present << slot);
   const Masks sliding = flag_lanes(state.flags, block_sliding);
   const Masks active = pass.use_bias ? present & ~sliding : present;
+  BlockPointImpulse<Lanes>& point = points[slot];
+  const BlockPointImpulse<Lanes>& other = points[1 - slot];
 
   const Floats anchor_ax = load_lanes<Floats>(point.anchor_ax);
   const Floats anchor_ay = load_lanes<Floats>(point.anchor_ay);
@@ -390,29 +463,36 @@ void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softne
   const Floats anchor_by = load_lanes<Floats>(point.anchor_by);
   const Floats tangent_impulse = load_lanes<Floats>(point.tangent_impulse);
   const Floats tangent_mass = load_lanes<Floats>(solve.points[slot].tangent_mass);
-  const Floats normal_impulse = load_lanes<Floats>(point.normal_impulse);
+  const Floats own_load = load_lanes<Floats>(point.normal_impulse);
+  const Floats other_load = load_lanes<Floats>(other.normal_impulse);
+  const Floats other_tangent = load_lanes<Floats>(other.tangent_impulse);
+  const Floats other_share = select_lanes(other_tangent < zero, -other_tangent, other_tangent);
   const Floats tangent_speed = state.relative_speed(anchor_ax, anchor_ay, anchor_bx, anchor_by,
                                                     state.tangent_x, state.tangent_y);
-  Floats unclamped, limit;
+  Floats unclamped, coefficient;
   if (pass.use_bias) {
     // Drive the point back to where it stuck, at the contact's stiffness.
     const Floats push_max = splat<Floats>(pass.push_max_speed);
     const Floats target_speed =
         clamp_lanes(-softness.bias_rate * drift, -push_max, push_max);
     unclamped = tangent_impulse - tangent_mass * (tangent_speed - target_speed);
-    limit = load_lanes<Floats>(solve.static_friction) * normal_impulse;
+    coefficient = load_lanes<Floats>(solve.static_friction);
   } else {
     unclamped = tangent_impulse - tangent_speed * tangent_mass;
-    const Floats coefficient = select_lanes(sliding, load_lanes<Floats>(solve.dynamic_friction),
-                                            load_lanes<Floats>(solve.static_friction));
-    limit = coefficient * normal_impulse;
+    coefficient = select_lanes(sliding, load_lanes<Floats>(solve.dynamic_friction),
+                               load_lanes<Floats>(solve.static_friction));
   }
+  // Its own cone, and what the other point leaves of its cone unused.
+  const Floats spare = coefficient * other_load - other_share;
+  const Floats limit = coefficient * own_load + select_lanes(spare < zero, zero, spare);
   const Floats accumulated = clamp_lanes(unclamped, -limit, limit);
   if (!pass.use_bias) {
-    const Masks slot_bit = Masks{} + (1 << slot);
-    const Masks at_limit = present & (accumulated != unclamped) & slot_bit;
-    const Masks others = load_lanes<Masks>(solve.friction_at_limit) & ~slot_bit;
-    store_lanes(solve.friction_at_limit, others | at_limit);
+    // The contact is at its limit when either point's clamp acted: both bits, so the switch's
+    // "every point at the limit" reads the contact's cone.
+    const Masks both_bits = Masks{} + 3;
+    const Masks at_limit = present & (accumulated != unclamped) & both_bits;
+    const Masks before = slot == 0 ? Masks{} : load_lanes<Masks>(solve.friction_at_limit);
+    store_lanes(solve.friction_at_limit, before | at_limit);
   }
   const Floats change = select_lanes(active, accumulated - tangent_impulse, zero);
   store_lanes(point.tangent_impulse, select_lanes(active, accumulated, tangent_impulse));
@@ -445,13 +525,16 @@ void solve_blocks(const ContactBlockArrays<Lanes>& arrays, SolverBody* bodies,
                     load_lanes<Floats>(stick.stick_offset);
     }
     const SoftnessLanes<Lanes> softness(state, pass);
+    const NormalTarget<Lanes> target[2] = {
+        normal_target(state, softness, 0, separation[0], solve.points[0], pass),
+        normal_target(state, softness, 1, separation[1], solve.points[1], pass)};
+    const auto served = solve_normal_pair(state, target, block.points, solve);
     for (int slot = 0; slot < 2; ++slot) {
-      solve_normal(state, softness, slot, separation[slot], block.points[slot], solve.points[slot],
-                   pass);
+      solve_normal(state, target[slot], block.points[slot], solve.points[slot], served);
     }
     if (pass.friction) {
       for (int slot = 0; slot < 2; ++slot) {
-        solve_friction(state, softness, slot, drift[slot], block.points[slot], solve, pass);
+        solve_friction(state, softness, slot, drift[slot], block.points, solve, pass);
       }
     }
     state.store(block, bodies);

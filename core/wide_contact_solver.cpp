@@ -70,6 +70,14 @@ void clear_point(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, in
   block.points[slot].tangent_impulse[lane] = 0.0f;
 }
 
+// No pair solve in lane `lane` (its lanes are still read, so they hold zeros).
+template <int Lanes>
+void clear_pair(ContactBlockSolve<Lanes>& solve, int lane) {
+  solve.pair_mass_00[lane] = 0.0f;
+  solve.pair_mass_01[lane] = 0.0f;
+  solve.pair_mass_11[lane] = 0.0f;
+}
+
 // An unused lane: no contact, no points, body slot 0 (never written: it moves nothing).
 template <int Lanes>
 void clear_lane(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int lane) {
@@ -77,6 +85,7 @@ void clear_lane(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int
   block.body_b[lane] = 0;
   block.flags[lane] = 0;
   solve.friction_at_limit[lane] = 0;
+  clear_pair(solve, lane);
   block.inverse_mass_a[lane] = 0.0f;
   block.inverse_mass_b[lane] = 0.0f;
   block.inverse_inertia_a[lane] = 0.0f;
@@ -118,6 +127,34 @@ void set_lane_points(float* ax, float* ay, float* bx, float* by, int lane, vec2 
   by[lane] = on_b.y;
 }
 
+// Largest condition number (Box2D v2's bound) of a two-point manifold's effective-mass matrix
+// solved as a pair; beyond it the points are nearly one, and are solved one after the other.
+constexpr float max_pair_condition = 1000.0f;
+
+// Writes the inverse of the two points' normal effective-mass matrix K into lane `lane`;
+// returns false (writing nothing) when K is ill-conditioned. K's diagonal is each point's own
+// 1/normal_mass; its off-diagonal couples them through the bodies' masses and inertias.
+template <int Lanes>
+bool pair_inverse(const Contact& contact, ContactBlockSolve<Lanes>& solve, int lane) {
+  const ContactPoint& first = contact.points[0];
+  const ContactPoint& second = contact.points[1];
+  if (!(first.normal_mass > 0.0f && second.normal_mass > 0.0f)) return false;
+  const PairMass& mass = contact.mass;
+  const vec2 normal = contact.normal;
+  const float k00 = 1.0f / first.normal_mass;
+  const float k11 = 1.0f / second.normal_mass;
+  const float k01 = mass.inverse_mass_a + mass.inverse_mass_b +
+                    mass.inverse_inertia_a * cross(first.anchor_a, normal) * cross(second.anchor_a, normal) +
+                    mass.inverse_inertia_b * cross(first.anchor_b, normal) * cross(second.anchor_b, normal);
+  const float determinant = k00 * k11 - k01 * k01;
+  if (!(k00 * k00 < max_pair_condition * determinant)) return false;
+  const float inverse_determinant = 1.0f / determinant;
+  solve.pair_mass_00[lane] = k11 * inverse_determinant;
+  solve.pair_mass_01[lane] = -k01 * inverse_determinant;
+  solve.pair_mass_11[lane] = k00 * inverse_determinant;
+  return true;
+}
+
 // One contact into lane `lane` of a block's three parts.
 template <int Lanes>
 void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
@@ -156,6 +193,11 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
     stuck.stick_offset[lane] = point.stick_offset;
     flags |= (block_point_present << i) | bounce_flags(i, point);
     load_point_values(block, solve, i, lane, point);
+  }
+  if (contact.point_count == 2 && pair_inverse(contact, solve, lane)) {
+    flags |= block_point_pair;
+  } else {
+    clear_pair(solve, lane);
   }
   block.flags[lane] = flags;
   for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block, solve, i, lane);

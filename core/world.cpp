@@ -490,11 +490,13 @@ void World::integrate_solver_velocities(float dt) {
 void World::integrate_solver_positions(float dt) {
   const Clock::time_point stage = Clock::now();
   solver_body_states_.integrate_positions(dt);
-  if (settings_.enable_continuous && solver_body_states_.has_bullets()) {
-    solver_body_states_.store(bodies_);
-    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt, broad_phase_);
-    solver_body_states_.load(bodies_);
-  }
+  stats_.integrate_ms += elapsed_ms(stage);
+}
+
+void World::sweep_bullets(float dt) {
+  if (!settings_.enable_continuous) return;
+  const Clock::time_point stage = Clock::now();
+  stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt, broad_phase_);
   stats_.integrate_ms += elapsed_ms(stage);
 }
 

@@ -157,6 +157,7 @@ class World : private SolverStages {
   void begin_solver_bodies() override;
   void integrate_solver_velocities(float dt) override;
   void integrate_solver_positions(float dt) override;
+  void sweep_bullets(float dt) override;
   void correct_positions() override;
   std::vector<Contact>& solver_contacts() override { return contacts_; }
   std::vector<Body>& solver_bodies() override { return bodies_; }

@@ -35,7 +35,14 @@ WorldSettings read_settings(const JsonCursor& node) {
                    "broad_phase", "sleep_linear_speed", "sleep_angular_speed", "time_to_sleep",
                    "max_linear_speed", "contact_hertz", "contact_damping_ratio",
                    "contact_push_max_speed", "speculative_margin", "contact_recycle_distance"});
+  // A named solver starts from its own sub-steps and passes (`settings_for`).
   WorldSettings settings;
+  if (auto field = node.optional_field("solver")) {
+    settings = settings_for(
+        field->choice<SolverMethod>({{"accumulated", SolverMethod::AccumulatedImpulses},
+                                     {"per_iteration", SolverMethod::PerIteration},
+                                     {"soft_step", SolverMethod::SoftStep}}));
+  }
   if (auto field = node.optional_field("gravity")) {
     settings.gravity = field->vector_at_most(limits::max_gravity, limits::gravity_reason);
   }
@@ -45,12 +52,6 @@ WorldSettings read_settings(const JsonCursor& node) {
   }
   if (auto field = node.optional_field("substeps"))
     settings.substeps = static_cast<int>(field->integer(1, 64));
-  if (auto field = node.optional_field("solver")) {
-    settings.solver =
-        field->choice<SolverMethod>({{"accumulated", SolverMethod::AccumulatedImpulses},
-                                     {"per_iteration", SolverMethod::PerIteration},
-                                     {"soft_step", SolverMethod::SoftStep}});
-  }
   if (auto field = node.optional_field("contact_hertz")) settings.contact_hertz = field->positive();
   if (auto field = node.optional_field("contact_damping_ratio")) {
     settings.contact_damping_ratio = field->non_negative();
@@ -126,10 +127,13 @@ WorldSettings read_settings(const JsonCursor& node) {
   return settings;
 }
 
-SceneModel read_model(const JsonCursor& node) {
+// The model block; iterations it does not name are the settings' (the solver's own).
+SceneModel read_model(const JsonCursor& node, const WorldSettings& settings) {
   node.allow_only({"shapes", "rotation", "friction", "restitution", "ccd", "sleeping",
                    "velocity_iterations", "position_iterations"});
   SceneModel model;
+  model.velocity_iterations = settings.velocity_iterations;
+  model.position_iterations = settings.position_iterations;
   const JsonCursor shapes = node.field("shapes");
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     const JsonCursor kind = shapes.element(i);
@@ -595,7 +599,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   }
 
   if (auto field = root.optional_field("model")) {
-    scene.model = read_model(*field);
+    scene.model = read_model(*field, scene.settings);
   } else {
     // No declared model: the least one that covers the file's bodies.
     scene.model.velocity_iterations = scene.settings.velocity_iterations;

@@ -35,18 +35,14 @@ const char* solver_label(Solver solver) {
   return "?";
 }
 
-// Default settings but for the method (the soft step with 4 sub-steps).
-WorldSettings settings_for(Solver solver) {
-  WorldSettings settings;
+// Each method at the sub-steps and passes it is measured at (core's `settings_for`).
+WorldSettings method_settings(Solver solver) {
   switch (solver) {
-    case Solver::Accumulated: settings.solver = SolverMethod::AccumulatedImpulses; break;
-    case Solver::SoftStep4:
-      settings.solver = SolverMethod::SoftStep;
-      settings.substeps = 4;
-      break;
-    case Solver::PerIteration: settings.solver = SolverMethod::PerIteration; break;
+    case Solver::Accumulated: return settings_for(SolverMethod::AccumulatedImpulses);
+    case Solver::SoftStep4: return settings_for(SolverMethod::SoftStep);
+    case Solver::PerIteration: return settings_for(SolverMethod::PerIteration);
   }
-  return settings;
+  return WorldSettings{};
 }
 
 // A 1 kg, 1 x 1 box resting on long static ground (top at y = 0) of the same material.
@@ -110,7 +106,7 @@ class Kick : public ::testing::TestWithParam<KickCase> {};
 // v^2 / (2 mu_s g) (1.63 m: the bug), and stays stopped.
 TEST_P(Kick, SlidesVSquaredOverTwoMuDG) {
   const KickCase c = GetParam();
-  const WorldSettings settings = settings_for(c.solver);
+  const WorldSettings settings = method_settings(c.solver);
   Flat flat(settings, c.kind);
   const float v0 = 4.0f;
   const float start = flat.x();
@@ -157,7 +153,7 @@ constexpr float hold_drift = 1.0e-3f;
 TEST_P(Pushed, HoldsBelowMuSWeight) {
   const PushCase c = GetParam();
   for (float ratio : {0.45f, 0.49f}) {
-    Flat flat(settings_for(c.solver), c.kind);
+    Flat flat(method_settings(c.solver), c.kind);
     const float start = flat.x();
     for (int i = 0; i < 150; ++i) push_step(flat, c.push, ratio);
     EXPECT_LT(std::fabs(flat.x() - start), hold_drift) << ratio << " W";
@@ -172,7 +168,7 @@ TEST_P(Pushed, HoldsBelowMuSWeight) {
 TEST_P(Pushed, AcceleratesAtTheDynamicAnswerAboveMuSWeight) {
   const PushCase c = GetParam();
   for (float ratio : {0.51f, 0.55f}) {
-    Flat flat(settings_for(c.solver), c.kind);
+    Flat flat(method_settings(c.solver), c.kind);
     for (int i = 0; i < 30; ++i) push_step(flat, c.push, ratio);
     const float v1 = flat.vx();
     for (int i = 0; i < 60; ++i) push_step(flat, c.push, ratio);
@@ -222,7 +218,9 @@ TEST(FrictionState, SlowBumpIsStoppedByStaticFrictionWithinTheStep) {
 // not rotate, so m_t = m = 1 kg at both points) carrying W dt: static friction can stop a slip
 // of up to mu_s W dt / m = mu_s g dt within the step.
 TEST(FrictionState, BreaksLooseIffTheSlipNeedsMoreThanMuSTimesTheCarriedLoad) {
-  Flat flat(WorldSettings{}, BoxKind::AxisAligned);
+  // One impulse interval a step: the accumulated solver's (the soft step's carries W h per
+  // sub-step, counted by the last case below).
+  Flat flat(settings_for(SolverMethod::AccumulatedImpulses), BoxKind::AxisAligned);
   ASSERT_EQ(flat.world.contacts().size(), 1u);
   const Contact& contact = flat.world.contacts()[0];
   ASSERT_FALSE(contact.sliding);

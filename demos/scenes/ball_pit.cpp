@@ -48,8 +48,6 @@ Scene ball_pit() {
   scene.model.boxes = true;
   scene.model.rotation = false;
   scene.model.sleeping = true;
-  scene.model.velocity_iterations = 6;
-  scene.model.position_iterations = 2;
   scene.view.steps = 600;
   scene.view.frames = "::4";
   scene.view.draw.flags = draw_shapes | draw_sleeping;

@@ -40,8 +40,6 @@ Scene materials() {
   scene.model.boxes = true;
   scene.model.rotation = false;
   scene.model.friction = false;
-  scene.model.velocity_iterations = 4;
-  scene.model.position_iterations = 2;
   scene.settings.restitution_mixing = RestitutionMixing::Minimum;
   scene.settings.restitution_threshold = 0.2f;
   scene.view.camera.mode = CameraSpec::Mode::FitBounds;

@@ -1,7 +1,7 @@
 /// @file pyramid.cpp
 /// A pyramid of axis-aligned boxes: rows boxes at the bottom, one at the top. Boxes never
 /// rotate, so the model leaves rotation off and the narrow phase uses the AABB tests only.
-/// With accumulated impulses and warm starting it stands; the tutorial's solver cannot hold it.
+/// The default soft step holds it; the tutorial's solver cannot.
 #include "core/world.h"
 #include "scene/scene.h"
 #include "demos/scene_helpers.h"

@@ -29,8 +29,6 @@ Scene stack() {
   scene.params = {{"height", "boxes in the stack", 15, 1, 80, true}};
   scene.model.polygons = true;
   scene.model.restitution = false;
-  scene.model.velocity_iterations = 10;
-  scene.model.position_iterations = 4;
   scene.view.steps = 600;
   scene.view.frames = "::4";
   scene.view.draw.flags = draw_shapes | draw_contact_points;
