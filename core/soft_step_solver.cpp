@@ -71,11 +71,13 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     if (!context.friction || !is_solvable(contact)) return;
     Body& a = bodies[contact.body_a.index];
     Body& b = bodies[contact.body_b.index];
+    const bool at_limit = contact.points[0].friction_at_limit;
     update_friction_state(contact, a, b);
-    if (!contact.sliding) return;
-    // A sliding contact sticks, when it does, where it came to rest: its points' drift so far
-    // is no longer taken back. (The switch changes velocities only, the drift reads poses, so
-    // one walk does both.)
+    if (!contact.sliding && !at_limit) return;
+    // A sliding contact sticks, when it does, where it came to rest, and a sticking one whose
+    // friction was at its limit slipped for real: their points' drift so far is no longer
+    // taken back (only residual slip under a friction that held is). (The switch changes
+    // velocities only, the drift reads poses, so one walk does both.)
     for (int i = 0; i < contact.point_count; ++i) {
       contact.points[i].stick_offset += friction_drift(a, b, contact, contact.points[i]);
     }

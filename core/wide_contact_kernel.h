@@ -273,6 +273,26 @@ struct BlockState {
     b.angular_velocity += inverse_inertia_b * (anchor_bx * impulse_y - anchor_by * impulse_x);
   }
 
+  // Applies two impulses (N s) at once, each to B at its anchor and the opposite to A: their
+  // sums, so the result does not depend on which point is named first (a mirror image of a
+  // contact gets the mirror image of its velocities, bit for bit).
+  void apply_pair(const Floats (&anchor_ax)[2], const Floats (&anchor_ay)[2],
+                  const Floats (&anchor_bx)[2], const Floats (&anchor_by)[2],
+                  const Floats (&impulse_x)[2], const Floats (&impulse_y)[2]) {
+    const Floats total_x = impulse_x[0] + impulse_x[1];
+    const Floats total_y = impulse_y[0] + impulse_y[1];
+    const Floats moment_a = (anchor_ax[0] * impulse_y[0] - anchor_ay[0] * impulse_x[0]) +
+                            (anchor_ax[1] * impulse_y[1] - anchor_ay[1] * impulse_x[1]);
+    const Floats moment_b = (anchor_bx[0] * impulse_y[0] - anchor_by[0] * impulse_x[0]) +
+                            (anchor_bx[1] * impulse_y[1] - anchor_by[1] * impulse_x[1]);
+    a.velocity_x -= total_x * inverse_mass_a;
+    a.velocity_y -= total_y * inverse_mass_a;
+    a.angular_velocity -= inverse_inertia_a * moment_a;
+    b.velocity_x += total_x * inverse_mass_b;
+    b.velocity_y += total_y * inverse_mass_b;
+    b.angular_velocity += inverse_inertia_b * moment_b;
+  }
+
   // Offset (m) along (direction_x, direction_y) of B's local point from A's, both placed by
   // the bodies' current poses; the local points' coordinates are lane arrays of a block.
   Floats offset_along(const float* ax, const float* ay, const float* bx, const float* by,
@@ -393,12 +413,13 @@ void solve_normal(BlockState<Lanes>& state, const NormalTarget<Lanes>& target,
               state.normal_y * change);
 }
 
-// Both point slots' normal constraints at once, through the inverse of their effective-mass
-// matrix (`block_point_pair`), where both take part and both new impulses push (>= 0): the
-// soft update of each point as solve_normal makes it, with the coupling between the two points
-// solved exactly instead of one after the other. Returns the lanes it served; the others are
-// left to solve_normal point by point. Both speeds are read before either impulse is applied,
-// so two points pressed alike get bit-identical impulses.
+// Both point slots' normal constraints at once where both take part (`block_point_pair`):
+// through the inverse of their effective-mass matrix, the soft update of each point as
+// solve_normal makes it with the coupling between the two solved exactly; where that would
+// pull (a new impulse < 0), each point as if alone, from the same velocities. Both speeds are
+// read before any impulse is applied and the two are applied as one (`apply_pair`), so the
+// result does not depend on the points' order. Returns the lanes it served; the others are left
+// to solve_normal point by point.
 template <int Lanes>
 typename LaneTypes<Lanes>::Masks solve_normal_pair(BlockState<Lanes>& state,
                                                    const NormalTarget<Lanes> (&target)[2],
@@ -423,58 +444,78 @@ typename LaneTypes<Lanes>::Masks solve_normal_pair(BlockState<Lanes>& state,
   const Floats mass_00 = load_lanes<Floats>(solve.pair_mass_00);
   const Floats mass_01 = load_lanes<Floats>(solve.pair_mass_01);
   const Floats mass_11 = load_lanes<Floats>(solve.pair_mass_11);
-  const Floats unclamped[2] = {
+  const Floats coupled[2] = {
       impulse[0] - target[0].mass_scale * (mass_00 * error[0] + mass_01 * error[1]) -
           target[0].impulse_scale * impulse[0],
       impulse[1] - target[1].mass_scale * (mass_01 * error[0] + mass_11 * error[1]) -
           target[1].impulse_scale * impulse[1]};
-  const Masks served = paired & (unclamped[0] >= zero) & (unclamped[1] >= zero);
+  const Masks both_push = (coupled[0] >= zero) & (coupled[1] >= zero);
+  Floats change_x[2], change_y[2];
   for (int slot = 0; slot < 2; ++slot) {
-    const Floats change = select_lanes(served, unclamped[slot] - impulse[slot], zero);
-    store_lanes(points[slot].normal_impulse, select_lanes(served, unclamped[slot], impulse[slot]));
-    state.apply(anchor_ax[slot], anchor_ay[slot], anchor_bx[slot], anchor_by[slot],
-                state.normal_x * change, state.normal_y * change);
+    const Floats alone = impulse[slot] -
+                         load_lanes<Floats>(solve.points[slot].normal_mass) *
+                             target[slot].mass_scale * error[slot] -
+                         target[slot].impulse_scale * impulse[slot];
+    const Floats clamped_alone = select_lanes(alone < zero, zero, alone);
+    const Floats accumulated = select_lanes(both_push, coupled[slot], clamped_alone);
+    const Floats change = select_lanes(paired, accumulated - impulse[slot], zero);
+    store_lanes(points[slot].normal_impulse, select_lanes(paired, accumulated, impulse[slot]));
+    change_x[slot] = state.normal_x * change;
+    change_y[slot] = state.normal_y * change;
   }
-  return served;
+  state.apply_pair(anchor_ax, anchor_ay, anchor_bx, anchor_by, change_x, change_y);
+  return paired;
 }
 
-// Friction of point slot `slot`: anchored static friction in the biased pass (sticking
-// contacts only; `drift`: the point's tangential drift (m) from where it stuck), Coulomb
-// friction with the contact's current coefficient in the relax pass. The Coulomb limit is the
-// point's own, mu * Pn, plus what the other point leaves of its own unused: with rotation the
-// two points carry unequal loads and need unequal friction, and a limit per point alone would
-// let the contact slip before its total friction reached the contact's cone mu * (Pn0 + Pn1).
+// A contact's friction: one constraint at the middle of its points. The two points of a 2D
+// manifold lie on one face, so the tangent moves both alike (their tangential arms are equal):
+// their friction is one constraint, whose Coulomb limit is the contact's, mu * (Pn0 + Pn1). A
+// limit per point would let a contact slip before its total friction reached that cone when
+// rotation loads its points unequally, and solving the points one after the other would make
+// the result depend on their order. Anchored static friction in the biased pass (sticking
+// contacts only; `drift`: the points' tangential drift (m) from where they stuck, averaged),
+// Coulomb friction with the contact's current coefficient in the relax pass. The accumulated
+// impulse is kept split evenly between the points (the same impulse at the middle).
 template <int Lanes>
-void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness, int slot,
-                    typename LaneTypes<Lanes>::Floats drift, BlockPointImpulse<Lanes> (&points)[2],
-                    ContactBlockSolve<Lanes>& solve, const WidePassSettings& pass) {
+void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softness,
+                    const typename LaneTypes<Lanes>::Floats (&drift)[2],
+                    BlockPointImpulse<Lanes> (&points)[2], ContactBlockSolve<Lanes>& solve,
+                    const WidePassSettings& pass) {
   typedef typename LaneTypes<Lanes>::Floats Floats;
   typedef typename LaneTypes<Lanes>::Masks Masks;
   const Floats zero = {};
-  const Masks present = flag_lanes(state.flags, block_point_present << slot);
+  const Floats half = splat<Floats>(0.5f);
+  const Masks present = flag_lanes(state.flags, block_point_present);
+  const Masks two = flag_lanes(state.flags, block_point_present << 1);
   const Masks sliding = flag_lanes(state.flags, block_sliding);
   const Masks active = pass.use_bias ? present & ~sliding : present;
-  BlockPointImpulse<Lanes>& point = points[slot];
-  const BlockPointImpulse<Lanes>& other = points[1 - slot];
 
-  const Floats anchor_ax = load_lanes<Floats>(point.anchor_ax);
-  const Floats anchor_ay = load_lanes<Floats>(point.anchor_ay);
-  const Floats anchor_bx = load_lanes<Floats>(point.anchor_bx);
-  const Floats anchor_by = load_lanes<Floats>(point.anchor_by);
-  const Floats tangent_impulse = load_lanes<Floats>(point.tangent_impulse);
-  const Floats tangent_mass = load_lanes<Floats>(solve.points[slot].tangent_mass);
-  const Floats own_load = load_lanes<Floats>(point.normal_impulse);
-  const Floats other_load = load_lanes<Floats>(other.normal_impulse);
-  const Floats other_tangent = load_lanes<Floats>(other.tangent_impulse);
-  const Floats other_share = select_lanes(other_tangent < zero, -other_tangent, other_tangent);
-  const Floats tangent_speed = state.relative_speed(anchor_ax, anchor_ay, anchor_bx, anchor_by,
+  Floats anchor_ax[2], anchor_ay[2], anchor_bx[2], anchor_by[2];
+  for (int slot = 0; slot < 2; ++slot) {
+    anchor_ax[slot] = load_lanes<Floats>(points[slot].anchor_ax);
+    anchor_ay[slot] = load_lanes<Floats>(points[slot].anchor_ay);
+    anchor_bx[slot] = load_lanes<Floats>(points[slot].anchor_bx);
+    anchor_by[slot] = load_lanes<Floats>(points[slot].anchor_by);
+  }
+  const Floats middle_ax = select_lanes(two, half * (anchor_ax[0] + anchor_ax[1]), anchor_ax[0]);
+  const Floats middle_ay = select_lanes(two, half * (anchor_ay[0] + anchor_ay[1]), anchor_ay[0]);
+  const Floats middle_bx = select_lanes(two, half * (anchor_bx[0] + anchor_bx[1]), anchor_bx[0]);
+  const Floats middle_by = select_lanes(two, half * (anchor_by[0] + anchor_by[1]), anchor_by[0]);
+  const Floats tangent_impulse =
+      load_lanes<Floats>(points[0].tangent_impulse) + load_lanes<Floats>(points[1].tangent_impulse);
+  // Slot 0 holds the contact's tangent mass at the middle (see pack_contact).
+  const Floats tangent_mass = load_lanes<Floats>(solve.points[0].tangent_mass);
+  const Floats load =
+      load_lanes<Floats>(points[0].normal_impulse) + load_lanes<Floats>(points[1].normal_impulse);
+  const Floats tangent_speed = state.relative_speed(middle_ax, middle_ay, middle_bx, middle_by,
                                                     state.tangent_x, state.tangent_y);
   Floats unclamped, coefficient;
   if (pass.use_bias) {
-    // Drive the point back to where it stuck, at the contact's stiffness.
+    // Drive the points back to where they stuck, at the contact's stiffness.
+    const Floats mean_drift = select_lanes(two, half * (drift[0] + drift[1]), drift[0]);
     const Floats push_max = splat<Floats>(pass.push_max_speed);
     const Floats target_speed =
-        clamp_lanes(-softness.bias_rate * drift, -push_max, push_max);
+        clamp_lanes(-softness.bias_rate * mean_drift, -push_max, push_max);
     unclamped = tangent_impulse - tangent_mass * (tangent_speed - target_speed);
     coefficient = load_lanes<Floats>(solve.static_friction);
   } else {
@@ -482,21 +523,19 @@ void solve_friction(BlockState<Lanes>& state, const SoftnessLanes<Lanes>& softne
     coefficient = select_lanes(sliding, load_lanes<Floats>(solve.dynamic_friction),
                                load_lanes<Floats>(solve.static_friction));
   }
-  // Its own cone, and what the other point leaves of its cone unused.
-  const Floats spare = coefficient * other_load - other_share;
-  const Floats limit = coefficient * own_load + select_lanes(spare < zero, zero, spare);
+  const Floats limit = coefficient * load;
   const Floats accumulated = clamp_lanes(unclamped, -limit, limit);
   if (!pass.use_bias) {
-    // The contact is at its limit when either point's clamp acted: both bits, so the switch's
-    // "every point at the limit" reads the contact's cone.
-    const Masks both_bits = Masks{} + 3;
-    const Masks at_limit = present & (accumulated != unclamped) & both_bits;
-    const Masks before = slot == 0 ? Masks{} : load_lanes<Masks>(solve.friction_at_limit);
-    store_lanes(solve.friction_at_limit, before | at_limit);
+    // Both points' bits: the switch's "every point at the limit" reads the contact's cone.
+    const Masks at_limit = present & (accumulated != unclamped) & (Masks{} + 3);
+    store_lanes(solve.friction_at_limit, at_limit);
   }
   const Floats change = select_lanes(active, accumulated - tangent_impulse, zero);
-  store_lanes(point.tangent_impulse, select_lanes(active, accumulated, tangent_impulse));
-  state.apply(anchor_ax, anchor_ay, anchor_bx, anchor_by, state.tangent_x * change,
+  const Floats kept = select_lanes(active, accumulated, tangent_impulse);
+  const Floats share = select_lanes(two, half * kept, kept);
+  store_lanes(points[0].tangent_impulse, share);
+  store_lanes(points[1].tangent_impulse, select_lanes(two, share, zero));
+  state.apply(middle_ax, middle_ay, middle_bx, middle_by, state.tangent_x * change,
               state.tangent_y * change);
 }
 
@@ -532,11 +571,7 @@ void solve_blocks(const ContactBlockArrays<Lanes>& arrays, SolverBody* bodies,
     for (int slot = 0; slot < 2; ++slot) {
       solve_normal(state, target[slot], block.points[slot], solve.points[slot], served);
     }
-    if (pass.friction) {
-      for (int slot = 0; slot < 2; ++slot) {
-        solve_friction(state, softness, slot, drift[slot], block.points, solve, pass);
-      }
-    }
+    if (pass.friction) solve_friction(state, softness, drift, block.points, solve, pass);
     state.store(block, bodies);
   }
 }
@@ -547,14 +582,19 @@ void warm_start_blocks(const ContactBlock<Lanes>* blocks, std::size_t count, Sol
   for (std::size_t i = 0; i < count; ++i) {
     const ContactBlock<Lanes>& block = blocks[i];
     BlockState<Lanes> state(block, bodies);
-    for (const BlockPointImpulse<Lanes>& point : block.points) {
+    Floats anchor_ax[2], anchor_ay[2], anchor_bx[2], anchor_by[2], impulse_x[2], impulse_y[2];
+    for (int slot = 0; slot < 2; ++slot) {
+      const BlockPointImpulse<Lanes>& point = block.points[slot];
       const Floats normal_impulse = load_lanes<Floats>(point.normal_impulse);
       const Floats tangent_impulse = load_lanes<Floats>(point.tangent_impulse);
-      state.apply(load_lanes<Floats>(point.anchor_ax), load_lanes<Floats>(point.anchor_ay),
-                  load_lanes<Floats>(point.anchor_bx), load_lanes<Floats>(point.anchor_by),
-                  state.normal_x * normal_impulse + state.tangent_x * tangent_impulse,
-                  state.normal_y * normal_impulse + state.tangent_y * tangent_impulse);
+      anchor_ax[slot] = load_lanes<Floats>(point.anchor_ax);
+      anchor_ay[slot] = load_lanes<Floats>(point.anchor_ay);
+      anchor_bx[slot] = load_lanes<Floats>(point.anchor_bx);
+      anchor_by[slot] = load_lanes<Floats>(point.anchor_by);
+      impulse_x[slot] = state.normal_x * normal_impulse + state.tangent_x * tangent_impulse;
+      impulse_y[slot] = state.normal_y * normal_impulse + state.tangent_y * tangent_impulse;
     }
+    state.apply_pair(anchor_ax, anchor_ay, anchor_bx, anchor_by, impulse_x, impulse_y);
     state.store(block, bodies);
   }
 }

@@ -155,6 +155,17 @@ bool pair_inverse(const Contact& contact, ContactBlockSolve<Lanes>& solve, int l
   return true;
 }
 
+// Effective mass (kg) along the tangent at the middle of a two-point contact's points, where
+// the wide solver applies its friction (see solve_friction).
+float middle_tangent_mass(const Contact& contact) {
+  ContactPoint middle = contact.points[0];
+  middle.anchor_a = 0.5f * (contact.points[0].anchor_a + contact.points[1].anchor_a);
+  middle.anchor_b = 0.5f * (contact.points[0].anchor_b + contact.points[1].anchor_b);
+  const float inverse = contact_detail::inverse_effective_mass(
+      contact.mass, middle, contact_detail::tangent_of(contact.normal));
+  return inverse > 0.0f ? 1.0f / inverse : 0.0f;
+}
+
 // One contact into lane `lane` of a block's three parts.
 template <int Lanes>
 void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
@@ -193,6 +204,10 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
     stuck.stick_offset[lane] = point.stick_offset;
     flags |= (block_point_present << i) | bounce_flags(i, point);
     load_point_values(block, solve, i, lane, point);
+  }
+  if (contact.point_count == 2) {
+    solve.points[0].tangent_mass[lane] = middle_tangent_mass(contact);
+    solve.points[1].tangent_mass[lane] = 0.0f;
   }
   if (contact.point_count == 2 && pair_inverse(contact, solve, lane)) {
     flags |= block_point_pair;
