@@ -413,13 +413,15 @@ void solve_normal(BlockState<Lanes>& state, const NormalTarget<Lanes>& target,
               state.normal_y * change);
 }
 
-// Both point slots' normal constraints at once where both take part (`block_point_pair`):
-// through the inverse of their effective-mass matrix, the soft update of each point as
-// solve_normal makes it with the coupling between the two solved exactly; where that would
-// pull (a new impulse < 0), each point as if alone, from the same velocities. Both speeds are
-// read before any impulse is applied and the two are applied as one (`apply_pair`), so the
-// result does not depend on the points' order. Returns the lanes it served; the others are left
-// to solve_normal point by point.
+// Both point slots' normal constraints at once where both take part (`block_point_pair`),
+// through the inverse of their effective-mass matrix: the speeds the points must reach
+// together (apart, bouncing, relaxing) are met with the coupling between the two solved
+// exactly, while a soft point's spring push-out stays its own (weighed by its own effective
+// mass, as solve_normal does, so a loaded contact yields as much as point by point: a pyramid
+// sags no more). Where that would pull (a new impulse < 0), each point as if alone, from the
+// same velocities. Both speeds are read before any impulse is applied and the two are applied
+// as one (`apply_pair`), so the result does not depend on the points' order. Returns the lanes
+// it served; the others are left to solve_normal point by point.
 template <int Lanes>
 typename LaneTypes<Lanes>::Masks solve_normal_pair(BlockState<Lanes>& state,
                                                    const NormalTarget<Lanes> (&target)[2],
@@ -430,31 +432,41 @@ typename LaneTypes<Lanes>::Masks solve_normal_pair(BlockState<Lanes>& state,
   const Floats zero = {};
   const Masks paired = flag_lanes(state.flags, block_point_pair) & target[0].active &
                        target[1].active;
-  Floats anchor_ax[2], anchor_ay[2], anchor_bx[2], anchor_by[2], impulse[2], error[2];
+  Floats anchor_ax[2], anchor_ay[2], anchor_bx[2], anchor_by[2], impulse[2], error[2], push[2];
   for (int slot = 0; slot < 2; ++slot) {
     anchor_ax[slot] = load_lanes<Floats>(points[slot].anchor_ax);
     anchor_ay[slot] = load_lanes<Floats>(points[slot].anchor_ay);
     anchor_bx[slot] = load_lanes<Floats>(points[slot].anchor_bx);
     anchor_by[slot] = load_lanes<Floats>(points[slot].anchor_by);
     impulse[slot] = load_lanes<Floats>(points[slot].normal_impulse);
+    // A soft point's target is a spring's push-out (each point's own, weighed by its own
+    // effective mass as solve_normal does, so a loaded contact yields as much as it does point
+    // by point); a rigid point's (apart, bouncing, relaxing) is a speed both points reach
+    // together.
+    const Masks soft = target[slot].impulse_scale != zero;
+    const Floats kinematic = select_lanes(soft, zero, target[slot].target_speed);
+    push[slot] = select_lanes(soft, load_lanes<Floats>(solve.points[slot].normal_mass) *
+                                        target[slot].target_speed,
+                              zero);
     error[slot] = state.relative_speed(anchor_ax[slot], anchor_ay[slot], anchor_bx[slot],
                                        anchor_by[slot], state.normal_x, state.normal_y) -
-                  target[slot].target_speed;
+                  kinematic;
   }
   const Floats mass_00 = load_lanes<Floats>(solve.pair_mass_00);
   const Floats mass_01 = load_lanes<Floats>(solve.pair_mass_01);
   const Floats mass_11 = load_lanes<Floats>(solve.pair_mass_11);
   const Floats coupled[2] = {
-      impulse[0] - target[0].mass_scale * (mass_00 * error[0] + mass_01 * error[1]) -
+      impulse[0] - target[0].mass_scale * (mass_00 * error[0] + mass_01 * error[1] - push[0]) -
           target[0].impulse_scale * impulse[0],
-      impulse[1] - target[1].mass_scale * (mass_01 * error[0] + mass_11 * error[1]) -
+      impulse[1] - target[1].mass_scale * (mass_01 * error[0] + mass_11 * error[1] - push[1]) -
           target[1].impulse_scale * impulse[1]};
   const Masks both_push = (coupled[0] >= zero) & (coupled[1] >= zero);
   Floats change_x[2], change_y[2];
   for (int slot = 0; slot < 2; ++slot) {
     const Floats alone = impulse[slot] -
-                         load_lanes<Floats>(solve.points[slot].normal_mass) *
-                             target[slot].mass_scale * error[slot] -
+                         target[slot].mass_scale *
+                             (load_lanes<Floats>(solve.points[slot].normal_mass) * error[slot] -
+                              push[slot]) -
                          target[slot].impulse_scale * impulse[slot];
     const Floats clamped_alone = select_lanes(alone < zero, zero, alone);
     const Floats accumulated = select_lanes(both_push, coupled[slot], clamped_alone);
