@@ -15,9 +15,10 @@ constexpr double g = 9.81;  // m/s^2, the world's default gravity
 /// Ground material: no bounce, ordinary friction.
 inline Material ground_material() { return Material{"Ground", 0.0f, 0.0f, 0.6f, 0.4f}; }
 
-/// A world at time step `dt` with default settings otherwise.
+/// A world at time step `dt` on the accumulated solver at one sub-step, which the character
+/// controller is tuned for (its scenes pick it), with default settings otherwise.
 inline WorldSettings settings_at(float dt) {
-  WorldSettings settings;
+  WorldSettings settings = settings_for(SolverMethod::AccumulatedImpulses);
   settings.time_step = dt;
   return settings;
 }

@@ -1,6 +1,8 @@
 // The impulse2d program run as a subprocess: commands, exit codes (0 / 1 runtime / 2 usage),
 // messages for bad input, and no partial files left behind. `trace` of a JSON projectile
 // matches the exact answer up to semi-implicit Euler's known error g t dt / 2.
+#include "core/settings.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -160,6 +162,9 @@ TEST_F(CliTest, TraceOfAJsonProjectileMatchesTheExactAnswer) {
   std::getline(lines, line);
   EXPECT_EQ(line, "step,t,body,x,y,angle,vx,vy,omega,contacts,energy");
   const double g = 9.81, dt = 0.01f, y0 = 100.0, v0x = 3.0, v0y = 12.0;
+  // The file leaves the sub-steps at the default's: semi-implicit Euler at h = dt / substeps.
+  const int substeps = impulse2d::WorldSettings{}.substeps;
+  const double h = dt / substeps;
   int rows = 0;
   while (std::getline(lines, line)) {
     std::vector<double> v;
@@ -168,12 +173,13 @@ TEST_F(CliTest, TraceOfAJsonProjectileMatchesTheExactAnswer) {
     ASSERT_EQ(v.size(), 11u) << line;
     const int n = static_cast<int>(v[0]);
     const double t = n * dt;
-    // Semi-implicit Euler: y_n = exact - g t dt / 2; rounding: at most 2^-23 |y| per step.
+    // Semi-implicit Euler: y_n = exact - g t h / 2; rounding: at most 2^-23 |y| per sub-step.
     const double exact = y0 + v0y * t - g * t * t / 2;
-    const double bound = (n + 1) * 130.0 * std::ldexp(1.0, -23);
-    EXPECT_NEAR(v[4] - exact, -g * t * dt / 2, bound) << "step " << n;
-    EXPECT_NEAR(v[3], v0x * t, (n + 1) * 10.0 * std::ldexp(1.0, -23)) << "step " << n;
-    EXPECT_NEAR(v[7], v0y - g * t, (n + 1) * 20.0 * std::ldexp(1.0, -23)) << "step " << n;
+    const double integrations = n * substeps + 1.0;
+    const double bound = integrations * 130.0 * std::ldexp(1.0, -23);
+    EXPECT_NEAR(v[4] - exact, -g * t * h / 2, bound) << "step " << n;
+    EXPECT_NEAR(v[3], v0x * t, integrations * 10.0 * std::ldexp(1.0, -23)) << "step " << n;
+    EXPECT_NEAR(v[7], v0y - g * t, integrations * 20.0 * std::ldexp(1.0, -23)) << "step " << n;
     EXPECT_NEAR(v[1], t, 1e-6);
     ++rows;
   }

@@ -258,7 +258,9 @@ TEST(SceneFile, AFollowingCameraKeepsTheNamedBodyAtTheImageCentre) {
 namespace {
 // A floor (top at y = 0), a one-way shelf whose top is at y = 2.3, and a character on the floor.
 std::string character_scene(const std::string& events) {
-  return R"({"bodies": [
+  // The character controller's solver (its scenes pick the accumulated one; see
+  // demos/scenes/character.json).
+  return R"({"settings": {"solver": "accumulated"}, "bodies": [
       {"type": "static", "shape": {"type": "box", "half_extents": [12, 0.5]},
        "position": [0, -0.5], "material": "Static"},
       {"type": "static", "shape": {"type": "box", "half_extents": [1.5, 0.1]},

@@ -24,11 +24,12 @@ TEST(SceneHeadless, LoadsAndStepsTheProjectileFileWithoutGl) {
   const float vy0 = world.body(ball).linear_velocity.y;
   const int steps = 60;
   for (int i = 0; i < steps; ++i) world.step();
-  // Semi-implicit Euler: y = y0 + vy0 t - g t^2 / 2 - g t dt / 2 (the file's own model).
+  // Semi-implicit Euler at the sub-step h: y = y0 + vy0 t - g t^2 / 2 - g t h / 2.
   const float dt = scene.settings.time_step;
+  const float h = dt / static_cast<float>(scene.settings.substeps);
   const float t = dt * steps;
   const float g = -scene.settings.gravity.y;
-  const float expected = y0 + vy0 * t - 0.5f * g * t * t - 0.5f * g * t * dt;
+  const float expected = y0 + vy0 * t - 0.5f * g * t * t - 0.5f * g * t * h;
   EXPECT_NEAR(world.body(ball).transform.position.y, expected, 1e-3f);
 
   std::ifstream maps("/proc/self/maps");

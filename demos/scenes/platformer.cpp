@@ -124,6 +124,10 @@ Scene platformer() {
   scene.description =
       "a scripted platformer character: hop and full jump, one-way platform up and down, "
       "slope, coyote + double jump, buffered jump, moving platform, wall jumps";
+  // The character controller is tuned and tested on the accumulated solver at one sub-step
+  // (tests/test_character_*.cpp); the scene picks it.
+  scene.settings = settings_for(SolverMethod::AccumulatedImpulses);
+  scene.model.velocity_iterations = scene.settings.velocity_iterations;
   scene.model.boxes = true;
   scene.model.polygons = true;
   scene.model.rotation = false;

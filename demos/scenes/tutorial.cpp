@@ -91,7 +91,7 @@ Scene tutorial() {
   scene.model.position_iterations = 0;
   // The tutorial's methods: fresh impulses every iteration, linear projection (40%, 5 cm
   // slop), restitution min(eA, eB), friction sqrt(a^2 + b^2).
-  scene.settings.solver = SolverMethod::PerIteration;
+  scene.settings = settings_for(SolverMethod::PerIteration);
   scene.settings.position_correction = PositionCorrection::LinearProjection;
   scene.settings.correction_percent = 0.4f;
   scene.settings.slop = 0.05f;
