@@ -120,10 +120,13 @@ void run_stability(bool quick, bool charts, bool quiet, const std::string& direc
     out << "wrote " << directory << "/stability.png\n";
   }
   // Contact sheets of a few boundaries: the final frame on each side.
+  // (Only cells with a boundary are drawn: a method that passes a whole ladder has none.)
   const std::string standard = method_label(LabMethod{});
+  const std::string accumulated = method_label(method_for(SolverMethod::AccumulatedImpulses));
   const std::vector<std::pair<std::string, std::string>> boundaries = {
-      {standard, "stack_height"}, {standard, "mass_ratio"}, {standard, "elastic_pile"},
-      {standard + " noccd nospec", "bullet_speed"}, {"soft 4s x1i", "friction_angle"}};
+      {standard, "stack_height"},   {standard, "time_step"},
+      {standard, "friction_angle"}, {standard, "elastic_pile"},
+      {standard + " noccd nospec", "bullet_speed"}, {accumulated, "elastic_pile"}};
   std::filesystem::create_directories(directory + "/stability_sheets");
   for (const auto& [label, stressor_name] : boundaries) {
     for (const StabilityCell& cell : cells) {

@@ -58,6 +58,15 @@ const char* restitution_mixing_name(RestitutionMixing rule) {
   return "?";
 }
 
+LabMethod method_for(SolverMethod solver) {
+  const WorldSettings settings = settings_for(solver);
+  LabMethod method;
+  method.solver = settings.solver;
+  method.substeps = settings.substeps;
+  method.velocity_iterations = settings.velocity_iterations;
+  return method;
+}
+
 std::string method_label(const LabMethod& method) {
   std::ostringstream text;
   if (method.engine == Engine::Box2d) {
@@ -80,7 +89,9 @@ std::string method_label(const LabMethod& method) {
       if (method.position_correction == PositionCorrection::LinearProjection) text << " linpc";
       if (method.integrator == Integrator::ExplicitEuler) text << " expl";
     }
-    if (method.solver == SolverMethod::AccumulatedImpulses) {
+    // Warm starting and shock propagation (whose pass uses the block solver) serve the
+    // accumulated solver and the soft step; the per-iteration solver keeps no impulses.
+    if (method.solver != SolverMethod::PerIteration) {
       if (!method.warm_starting) text << " nowarm";
       if (!method.block_solver) text << " noblock";
       if (!method.shock_propagation) text << " noshock";
@@ -113,31 +124,27 @@ std::vector<LabMethod> method_space(bool quick) {
   const std::vector<int> substep_iterations = quick ? std::vector<int>{1} : std::vector<int>{1, 2, 4};
   for (const SolverMethod solver : solvers) {
     for (const int count : iterations) {
-      LabMethod method;
-      method.solver = solver;
+      LabMethod method = method_for(solver);
+      method.substeps = 1;
       method.velocity_iterations = count;
       methods.push_back(method);
     }
     for (const int steps : substeps) {
       for (const int count : substep_iterations) {
-        LabMethod method;
-        method.solver = solver;
+        LabMethod method = method_for(solver);
         method.substeps = steps;
         method.velocity_iterations = count;
         methods.push_back(method);
       }
     }
   }
-  // One setting at a time from the default (WorldSettings': accumulated, 16 iterations, NGS,
-  // semi-implicit Euler, speculative margin 2 cm).
+  // One setting at a time from the default (WorldSettings': the soft step at 4 sub-steps of 1
+  // pass, 1/60 s, CCD, speculative margin 2 cm, warm starting, shock propagation) ...
   const auto vary = [&](auto change) {
     LabMethod method;
     change(method);
     methods.push_back(method);
   };
-  vary([](LabMethod& m) { m.position_correction = PositionCorrection::None; });
-  vary([](LabMethod& m) { m.position_correction = PositionCorrection::LinearProjection; });
-  vary([](LabMethod& m) { m.integrator = Integrator::ExplicitEuler; });
   const std::vector<float> steps = quick ? std::vector<float>{1.0f / 30.0f, 1.0f / 240.0f}
                                          : std::vector<float>{1.0f / 30.0f, 1.0f / 120.0f, 1.0f / 240.0f};
   for (const float step : steps) vary([step](LabMethod& m) { m.time_step = step; });
@@ -146,7 +153,6 @@ std::vector<LabMethod> method_space(bool quick) {
   if (!quick) vary([](LabMethod& m) { m.speculative_margin = 0.1f; });
   vary([](LabMethod& m) { m.warm_starting = false; });
   if (!quick) {
-    vary([](LabMethod& m) { m.block_solver = false; });
     vary([](LabMethod& m) { m.shock_propagation = false; });
     for (const FrictionMixing rule :
          {FrictionMixing::RootSumSquares, FrictionMixing::Product, FrictionMixing::Average,
@@ -156,6 +162,18 @@ std::vector<LabMethod> method_space(bool quick) {
     for (const RestitutionMixing rule : {RestitutionMixing::Minimum, RestitutionMixing::Average})
       vary([rule](LabMethod& m) { m.restitution_mixing = rule; });
   }
+  // ... and the settings the soft step ignores (it has no position correction, always
+  // integrates semi-implicitly, and solves its pairs through their 2x2 inverse), one at a time
+  // from accumulated impulses at their own 16 iterations.
+  const auto vary_accumulated = [&](auto change) {
+    LabMethod method = method_for(SolverMethod::AccumulatedImpulses);
+    change(method);
+    methods.push_back(method);
+  };
+  vary_accumulated([](LabMethod& m) { m.position_correction = PositionCorrection::None; });
+  vary_accumulated([](LabMethod& m) { m.position_correction = PositionCorrection::LinearProjection; });
+  vary_accumulated([](LabMethod& m) { m.integrator = Integrator::ExplicitEuler; });
+  if (!quick) vary_accumulated([](LabMethod& m) { m.block_solver = false; });
   return methods;
 }
 

@@ -20,7 +20,9 @@ enum class Engine {
 };
 
 /// One configuration of the sweep. The defaults are `WorldSettings`' own, so the lab's
-/// "default" follows core/settings.h.
+/// "default" follows core/settings.h (the soft step, 4 sub-steps of 1 pass). A method that
+/// means another solver starts from `method_for(solver)`, which gives it the sub-steps and
+/// passes `settings_for` (core/settings.h) measures it at.
 struct LabMethod {
   Engine engine = Engine::Impulse2d;  ///< which engine runs it
   SolverMethod solver = WorldSettings{}.solver;  ///< impulse scheme
@@ -40,15 +42,23 @@ struct LabMethod {
   bool shock_propagation = WorldSettings{}.shock_propagation;  ///< ground-up heavy-on-light pass
 };
 
-/// A short label naming the method by what differs from the default, e.g. "acc 16i",
-/// "soft 4s x1i", "acc 16i dt1/120", "acc 16i nospec", "box2d 8/3".
+/// The default method with `solver` at its own sub-steps and passes (`settings_for`): the soft
+/// step 4 sub-steps x 1 pass (= `LabMethod{}`), accumulated and per-iteration impulses 1 step x
+/// 16 iterations.
+LabMethod method_for(SolverMethod solver);
+
+/// A short label: the solver and its budget, always ("soft 4s x1i" is the default, "acc 16i"
+/// accumulated impulses at 1 step of 16 iterations, "iter 2s x4i"), then only the settings that
+/// differ from the default and that the solver uses, e.g. "soft 4s x1i dt1/120",
+/// "soft 4s x1i nospec", "acc 16i linpc", "box2d 8/3".
 std::string method_label(const LabMethod& method);
 
-/// The configurations swept by `impulse2d lab`: every solver at 1, 2, 4, 8, 16, 32 velocity
-/// iterations, 2, 4, 8 substeps at 1, 2, 4 iterations, and, one at a time from the default,
-/// each position correction, integrator, time step 1/30..1/240, CCD off, speculative contacts
-/// off and at a wider margin, every friction and restitution mixing rule, warm starting and the
-/// block solver off. `quick` keeps a subset
+/// The configurations swept by `impulse2d lab`: every solver at one step of 1, 2, 4, 8, 16, 32
+/// velocity iterations and at 2, 4, 8 substeps of 1, 2, 4 iterations; one at a time from the
+/// default (the soft step), time step 1/30..1/240, CCD off, speculative contacts off and at a
+/// wider margin, warm starting and shock propagation off, every friction and restitution mixing
+/// rule; one at a time from accumulated impulses at 16 iterations (the settings only it uses),
+/// each position correction, explicit Euler and the block solver off. `quick` keeps a subset
 /// (for CI). In a fixed order.
 std::vector<LabMethod> method_space(bool quick);
 

@@ -133,12 +133,16 @@ std::vector<LabMethod> tune_candidates(const demos::Scene& scene, bool quick) {
       }
     }
   }
+  const int accumulated_substeps = settings_for(SolverMethod::AccumulatedImpulses).substeps;
   for (const int count : {2, 4, 8}) {
     for (const PositionCorrection correction :
          {PositionCorrection::None, PositionCorrection::LinearProjection,
           PositionCorrection::NonlinearGaussSeidel}) {
+      // Position correction serves accumulated impulses at one step a frame (settings_for's
+      // sub-steps; the soft step ignores it).
       LabMethod method = own;
       method.solver = SolverMethod::AccumulatedImpulses;
+      method.substeps = accumulated_substeps;
       method.velocity_iterations = count;
       method.position_correction = correction;
       if (correction != own.position_correction) candidates.push_back(method);
@@ -147,6 +151,7 @@ std::vector<LabMethod> tune_candidates(const demos::Scene& scene, bool quick) {
       for (const float factor : {2.0f, 0.5f}) {
         LabMethod method = own;
         method.solver = SolverMethod::AccumulatedImpulses;
+        method.substeps = accumulated_substeps;
         method.velocity_iterations = count;
         method.time_step = own.time_step * factor;
         candidates.push_back(method);

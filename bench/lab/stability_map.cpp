@@ -40,33 +40,31 @@ double between(const Stressor& stressor, double pass, double fail) {
 
 std::vector<LabMethod> stability_methods(bool quick) {
   std::vector<LabMethod> methods;
-  const auto add = [&](auto change) {
-    LabMethod method;
+  const auto add = [&](LabMethod method, auto change) {
     change(method);
     methods.push_back(method);
   };
-  add([](LabMethod& m) {
-    m.solver = SolverMethod::PerIteration;
+  const LabMethod standard;  // the default: the soft step, 4 sub-steps of 1 pass
+  const LabMethod accumulated = method_for(SolverMethod::AccumulatedImpulses);  // 1 x 16
+  // The tutorial's solver at its 10 iterations and linear projection, one step a frame.
+  add(method_for(SolverMethod::PerIteration), [](LabMethod& m) {
     m.velocity_iterations = 10;
     m.position_correction = PositionCorrection::LinearProjection;
   });
-  add([](LabMethod&) {});
+  add(standard, [](LabMethod&) {});
+  add(accumulated, [](LabMethod&) {});
   if (!quick) {
-    add([](LabMethod& m) { m.warm_starting = false; });
-    add([](LabMethod& m) { m.position_correction = PositionCorrection::LinearProjection; });
-    add([](LabMethod& m) {
+    add(accumulated, [](LabMethod& m) { m.warm_starting = false; });
+    add(accumulated, [](LabMethod& m) { m.position_correction = PositionCorrection::LinearProjection; });
+    add(accumulated, [](LabMethod& m) {
       m.substeps = 4;
       m.velocity_iterations = 2;
     });
-    add([](LabMethod& m) { m.integrator = Integrator::ExplicitEuler; });
+    add(accumulated, [](LabMethod& m) { m.integrator = Integrator::ExplicitEuler; });
+    add(standard, [](LabMethod& m) { m.warm_starting = false; });
   }
-  add([](LabMethod& m) {
-    m.solver = SolverMethod::SoftStep;
-    m.substeps = 4;
-    m.velocity_iterations = 1;
-  });
-  add([](LabMethod& m) { m.continuous = false; });
-  add([](LabMethod& m) {
+  add(standard, [](LabMethod& m) { m.continuous = false; });
+  add(standard, [](LabMethod& m) {
     m.continuous = false;
     m.speculative_margin = 0.0f;
   });
