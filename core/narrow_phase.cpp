@@ -78,6 +78,10 @@ void carry_over_impulses(const Contact& old_contact, Contact& contact) {
 // True when the speculative contact would push bodies that pass each other within `dt`.
 bool is_ghost(const Body& a, const Body& b, const Contact& contact, const WorldSettings& settings,
               float dt) {
+  // A touching point makes it a real contact: most contacts stop here, before any prediction.
+  for (int i = 0; i < contact.point_count; ++i) {
+    if (contact.points[i].depth >= 0.0f) return false;
+  }
   return is_ghost_contact(a, predict_motion(a, settings, dt), b, predict_motion(b, settings, dt),
                           contact, dt);
 }

@@ -128,7 +128,7 @@ PredictedMotion predict_motion(const Body& body, const WorldSettings& settings, 
 }
 
 float closest_approach(const Body& a, const PredictedMotion& motion_a, const Body& b,
-                       const PredictedMotion& motion_b, float h) {
+                       const PredictedMotion& motion_b, float h, float enough) {
   const vec2 origin = a.transform.position;
   const RoundedOutline outline_a = outline_of(a, origin);
   const RoundedOutline outline_b = outline_of(b, origin);
@@ -137,6 +137,11 @@ float closest_approach(const Body& a, const PredictedMotion& motion_a, const Bod
   auto distance_at = [&](float t) {
     return std::max(outline_distance(outline_a, outline_b, relative_velocity * t) - radii, 0.0f);
   };
+  // The ends first: a landing body meets the ground by the end of the step.
+  float best = distance_at(h);
+  if (best <= enough) return best;
+  best = std::min(best, distance_at(0.0f));
+  if (best <= enough) return best;
   // Convex in t: a golden-section search keeps the bracket that holds the minimum. 48
   // shrinkings by 0.618 leave a bracket of 1e-10 h, far below a float's resolution of t.
   constexpr float inverse_golden = 0.6180339887f;
@@ -146,8 +151,8 @@ float closest_approach(const Body& a, const PredictedMotion& motion_a, const Bod
   float right = low + inverse_golden * (high - low);
   float at_left = distance_at(left);
   float at_right = distance_at(right);
-  float best = std::min(std::min(distance_at(low), distance_at(high)), std::min(at_left, at_right));
-  for (int i = 0; i < 48 && best > 0.0f; ++i) {
+  best = std::min(best, std::min(at_left, at_right));
+  for (int i = 0; i < 48 && best > enough; ++i) {
     if (at_left <= at_right) {
       high = right;
       right = left;
@@ -179,8 +184,8 @@ bool is_ghost_contact(const Body& a, const PredictedMotion& motion_a, const Body
     closes_within_step = closes_within_step || approach_speed * h >= -point.depth;
   }
   if (!closes_within_step) return false;
-  return closest_approach(a, motion_a, b, motion_b, h) >
-         motion_a.turn_reach + motion_b.turn_reach;
+  const float reach = motion_a.turn_reach + motion_b.turn_reach;
+  return closest_approach(a, motion_a, b, motion_b, h, reach) > reach;
 }
 
 }  // namespace impulse2d

@@ -34,9 +34,10 @@ PredictedMotion predict_motion(const Body& body, const WorldSettings& settings, 
 
 /// Smallest distance (metres, 0 when they overlap) between the shapes of `a` and `b` while
 /// they translate at `motion_a.velocity` and `motion_b.velocity` for `h` seconds from their
-/// current transforms.
+/// current transforms; the search stops as soon as it finds a distance at or below `enough`
+/// (metres), which it then returns.
 float closest_approach(const Body& a, const PredictedMotion& motion_a, const Body& b,
-                       const PredictedMotion& motion_b, float h);
+                       const PredictedMotion& motion_b, float h, float enough = 0.0f);
 
 /// True when `contact` is a ghost: every point is apart (depth < 0), the linearised constraint
 /// would stop at least one point within `h` seconds (its gap closes at the predicted normal

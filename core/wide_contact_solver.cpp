@@ -158,11 +158,13 @@ bool pair_inverse(const Contact& contact, ContactBlockSolve<Lanes>& solve, int l
 // Effective mass (kg) along the tangent at the middle of a two-point contact's points, where
 // the wide solver applies its friction (see solve_friction).
 float middle_tangent_mass(const Contact& contact) {
-  ContactPoint middle = contact.points[0];
-  middle.anchor_a = 0.5f * (contact.points[0].anchor_a + contact.points[1].anchor_a);
-  middle.anchor_b = 0.5f * (contact.points[0].anchor_b + contact.points[1].anchor_b);
-  const float inverse = contact_detail::inverse_effective_mass(
-      contact.mass, middle, contact_detail::tangent_of(contact.normal));
+  const vec2 tangent = contact_detail::tangent_of(contact.normal);
+  const float arm_a = cross(0.5f * (contact.points[0].anchor_a + contact.points[1].anchor_a), tangent);
+  const float arm_b = cross(0.5f * (contact.points[0].anchor_b + contact.points[1].anchor_b), tangent);
+  const PairMass& mass = contact.mass;
+  const float inverse = mass.inverse_mass_a + mass.inverse_mass_b +
+                        mass.inverse_inertia_a * arm_a * arm_a +
+                        mass.inverse_inertia_b * arm_b * arm_b;
   return inverse > 0.0f ? 1.0f / inverse : 0.0f;
 }
 
