@@ -46,10 +46,11 @@ struct ContactPoint {
   /// True once the point's bounce was applied: its accumulated impulses are a collision's, not
   /// a resting contact's, so they are not warm-started into the next (sub-)step.
   bool bounced = false;
-  /// True when the point was still apart at the start of the step and approached faster than
-  /// gravity alone brings a resting contact in a step (2 |g| h): its impulse stops a fall (an
-  /// inelastic catch), so, like a bounce's, it is not warm-started into the next step, where
-  /// it would launch the body off the surface it landed on.
+  /// True when the point approached faster at the start of the step than gravity alone brings
+  /// a resting contact in a step (2 |g| h): an impact, not a load. The soft step stops it
+  /// rigidly (a soft catch lets a fast body through a thin wall), and, like a bounce's, its
+  /// impulse is not warm-started into the next step, where it would launch the body off the
+  /// surface it landed on.
   bool caught = false;
   /// True when the point is elastic (restitution > 0), one of its bodies bounces in this
   /// (sub-)step, and it neither closes its gap within the step at the velocities the step

@@ -26,6 +26,9 @@ enum ContactBlockFlag : std::int32_t {
   /// matrix (well conditioned), so a manifold pressed evenly (a box landing flat) gets even
   /// impulses whichever point comes first.
   block_point_pair = 1 << 10,
+  /// Point slot 0 approached faster than a resting contact can (`ContactPoint::caught`): the
+  /// biased pass stops it rigidly instead of softly (<< 1: slot 1).
+  block_point_caught = 1 << 12,
 };
 
 // A block's lanes are split in three arrays by the passes that read them: the blocks are

@@ -9,13 +9,6 @@ namespace impulse2d {
 
 using namespace contact_detail;
 
-namespace {
-
-// Largest change of a contact's total normal impulse over a step (a fraction of it) for which
-// its load counts as known: 1 %, the accuracy the static limit mu_s * Pn is wanted to.
-constexpr float settled_load_change = 0.01f;
-
-}  // namespace
 
 bool static_friction_cannot_stop_slip(const Contact& contact, const Body& a, const Body& b,
                                       bool rotation, float impulse_intervals) {
@@ -88,12 +81,7 @@ void update_friction_state(Contact& contact, Body& a, Body& b) {
   }
   const float last_limit_slip = contact.limit_slip;
   contact.limit_slip = -1.0f;
-  // The cone is judged against the load only once the load is known: a step whose normal
-  // impulses moved by more than `settled_load_change` of themselves since the step began (a
-  // cold start, a landing) cannot tell a saturated contact from one still taking its load.
-  const bool load_settled = std::fabs(total_normal_impulse - contact.start_load) <=
-                            settled_load_change * total_normal_impulse;
-  if (!at_static_limit || !(total_normal_impulse > 0.0f) || !load_settled) {
+  if (!at_static_limit || !(total_normal_impulse > 0.0f)) {
     contact.steps_at_static_limit = 0;
     return;
   }
@@ -110,14 +98,24 @@ void update_friction_state(Contact& contact, Body& a, Body& b) {
   // the step starts with, so the step alone always sees it shrink).
   const float end_slip = std::fabs(slip_sum / static_cast<float>(contact.point_count));
   contact.limit_slip = end_slip;
-  const bool grew_in_step = end_slip > std::fabs(contact.start_slip);
-  const bool grew_since_last_step = last_limit_slip >= 0.0f && end_slip > last_limit_slip;
+  // While the load still changes (a cold start, a landing), the limit mu_s * Pn the solve
+  // clamped at was off by up to mu_s * |dPn|, which lets the slip grow by that over the
+  // tangent mass without the cone being reached: only growth beyond it counts.
+  float tangent_mass = 0.0f;
+  for (int i = 0; i < contact.point_count; ++i) tangent_mass += contact.points[i].tangent_mass;
+  const float load_change = std::fabs(total_normal_impulse - contact.start_load);
+  const float explained = tangent_mass > 0.0f
+                              ? contact.static_friction * load_change / tangent_mass
+                              : 0.0f;
+  const bool grew_in_step = end_slip > std::fabs(contact.start_slip) + explained;
+  const bool grew_since_last_step =
+      last_limit_slip >= 0.0f && end_slip > last_limit_slip + explained;
   if (!grew_in_step && !grew_since_last_step) {
     contact.steps_at_static_limit = 0;
     return;
   }
-  // The first step of a new contact starts cold (no warm start): its slip can grow under a
-  // saturated limit before the normal impulses have converged. Two steps in a row cannot.
+  // Two steps in a row: one can still be a cold start's (the first step of a new contact is
+  // solved without a warm start, and its load is not yet the solve's to judge).
   if (++contact.steps_at_static_limit < 2) return;
   contact.steps_at_static_limit = 0;
   contact.limit_slip = -1.0f;

@@ -45,7 +45,7 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
     }
     const vec2 velocity = relative_velocity(a, b, point);
     slip_sum += glm::dot(velocity, tangent);
-    point.caught = point.depth < 0.0f && -glm::dot(velocity, normal) > catch_speed;
+    point.caught = -glm::dot(velocity, normal) > catch_speed;
     const float k_normal = inverse_effective_mass(contact.mass, point, normal);
     const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
     point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;

@@ -359,20 +359,23 @@ NormalTarget<Lanes> normal_target(const BlockState<Lanes>& state,
   const Masks present = flag_lanes(state.flags, block_point_present << slot);
   const Masks waiting = flag_lanes(state.flags, block_point_waiting << slot);
   const Masks bouncing = flag_lanes(state.flags, block_point_bouncing << slot);
+  const Masks caught = flag_lanes(state.flags, block_point_caught << slot);
   const Floats velocity_bias = load_lanes<Floats>(solve.velocity_bias);
   const Masks apart = separation > zero;
 
   NormalTarget<Lanes> target;
   target.active = present & ~waiting;
   if (pass.use_bias) {
-    // Apart: may approach until the gap closes; touching: pushed out softly.
+    // Apart: may approach until the gap closes; touching: pushed out softly, unless the point
+    // is being caught (an impact: stopped rigidly, or a fast body would go on through).
     const Floats push_out = -softness.bias_rate * separation;
     const Floats push_max = splat<Floats>(pass.push_max_speed);
-    const Floats soft_target = select_lanes(push_max < push_out, push_max, push_out);
+    const Floats soft_target =
+        select_lanes(caught, zero, select_lanes(push_max < push_out, push_max, push_out));
     const Floats gap_target = -separation * splat<Floats>(pass.inverse_substep);
     target.target_speed =
         select_lanes(bouncing, velocity_bias, select_lanes(apart, gap_target, soft_target));
-    const Masks rigid = bouncing | apart;
+    const Masks rigid = bouncing | apart | caught;
     target.mass_scale = select_lanes(rigid, one, softness.mass_scale);
     target.impulse_scale = select_lanes(rigid, zero, softness.impulse_scale);
   } else {

@@ -204,7 +204,8 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
     set_lane_points(stuck.stick_ax, stuck.stick_ay, stuck.stick_bx, stuck.stick_by, lane,
                     point.recycle_anchor_a, point.recycle_anchor_b);
     stuck.stick_offset[lane] = point.stick_offset;
-    flags |= (block_point_present << i) | bounce_flags(i, point);
+    flags |= (block_point_present << i) | bounce_flags(i, point) |
+             (point.caught ? block_point_caught << i : 0);
     load_point_values(block, solve, i, lane, point);
   }
   if (contact.point_count == 2) {
