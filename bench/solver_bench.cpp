@@ -38,8 +38,7 @@ struct Method {
 
 std::vector<Method> methods() {
   std::vector<Method> list;
-  WorldSettings tutorial;
-  tutorial.solver = SolverMethod::PerIteration;
+  WorldSettings tutorial = settings_for(SolverMethod::PerIteration);
   tutorial.position_correction = PositionCorrection::LinearProjection;
   tutorial.correction_percent = 0.4f;
   tutorial.slop = 0.05f;
@@ -47,7 +46,7 @@ std::vector<Method> methods() {
   tutorial.restitution_mixing = RestitutionMixing::Minimum;
   list.push_back({"tutorial per-iteration + linear projection", tutorial});
 
-  WorldSettings cold;
+  WorldSettings cold = settings_for(SolverMethod::AccumulatedImpulses);
   cold.warm_starting = false;
   cold.block_solver = false;
   cold.position_correction = PositionCorrection::LinearProjection;
@@ -63,31 +62,27 @@ std::vector<Method> methods() {
 
   WorldSettings block = ngs;
   block.block_solver = true;
-  list.push_back({"accumulated + warm + block + NGS (default)", block});
+  list.push_back({"accumulated + warm + block + NGS", block});
 
   WorldSettings eight = block;
-  eight.velocity_iterations = 8;  // the default's count before speculative contacts
-  list.push_back({"default with 8 iterations", eight});
+  eight.velocity_iterations = 8;
+  list.push_back({"accumulated with 8 iterations", eight});
 
   WorldSettings no_speculation = block;
   no_speculation.speculative_margin = 0.0f;
-  list.push_back({"default without speculative contacts", no_speculation});
+  list.push_back({"accumulated without speculative contacts", no_speculation});
 
   WorldSettings brute = block;
   brute.broad_phase = BroadPhaseMethod::BruteForce;
-  list.push_back({"default with brute-force broad phase", brute});
+  list.push_back({"accumulated with brute-force broad phase", brute});
 
   WorldSettings substeps = block;
   substeps.substeps = 4;
   substeps.velocity_iterations = 2;
-  list.push_back({"default, 4 substeps x 2 iterations", substeps});
+  list.push_back({"accumulated, 4 substeps x 2 iterations", substeps});
 
-  // Box2D v3's solver with its defaults: 4 sub-steps of one soft pass and one relax pass.
-  WorldSettings soft;
-  soft.solver = SolverMethod::SoftStep;
-  soft.substeps = 4;
-  soft.velocity_iterations = 1;
-  list.push_back({"soft step, 4 substeps x 1 + 1 relax", soft});
+  // The default: Box2D v3's soft step, 4 sub-steps of one soft pass and one relax pass.
+  list.push_back({"default: soft step, 4 substeps x 1 + 1 relax", WorldSettings{}});
   return list;
 }
 
@@ -169,7 +164,7 @@ void sweep(int rows, int steps, const std::string& csv_path) {
     settings.substeps = substeps;
     const Result r = run(settings, rows, steps);
     csv << "substeps,1," << substeps << ',' << r.median_ms << ',' << r.error << '\n';
-    std::printf("%-44s substeps %2d: %7.3f ms/step, error %.4f m\n", "default, substeps x 1 iteration", substeps,
+    std::printf("%-44s substeps %2d: %7.3f ms/step, error %.4f m\n", "accumulated, substeps x 1 iteration", substeps,
                 r.median_ms, r.error);
   }
   for (int substeps : {1, 2, 4, 8}) {
