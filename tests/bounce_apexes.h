@@ -20,6 +20,30 @@ namespace impulse2d::bounce_test {
 /// Drops a ball (radius 0.25 m, restitution e) from `drop_height` metres above a floor of the
 /// same restitution, with `settings` but no friction and no restitution threshold, and returns
 /// the heights (metres above the floor) of its first `bounces` apexes.
+/// The apexes of a height sampled once a step: the highest sample of each rise, recorded when
+/// the vertical velocity stops being upward.
+class ApexTracker {
+ public:
+  /// Takes one step's `height` (m) and vertical velocity (m/s).
+  void sample(double height, float vertical_velocity) {
+    if (vertical_velocity > 0.0f) {
+      rising_ = true;
+      highest_ = std::max(highest_, height);
+    } else if (rising_) {
+      apexes_.push_back(std::max(highest_, height));
+      rising_ = false;
+      highest_ = -1.0;
+    }
+  }
+  /// The apexes so far, in order (m).
+  const std::vector<double>& apexes() const { return apexes_; }
+
+ private:
+  std::vector<double> apexes_;
+  double highest_ = -1.0;
+  bool rising_ = false;
+};
+
 inline std::vector<double> bounce_apexes(WorldSettings settings, float e, float drop_height,
                                          int bounces) {
   settings.restitution_threshold = 0.0f;
@@ -36,23 +60,13 @@ inline std::vector<double> bounce_apexes(WorldSettings settings, float e, float 
   ball.position = {0.0f, radius + drop_height};
   const BodyId id = world.create_body(ball, make_circle(radius));
 
-  std::vector<double> apexes;
-  double highest = -1.0;
-  bool rising = false;
-  for (int step = 0; step < 200000 && static_cast<int>(apexes.size()) < bounces; ++step) {
+  ApexTracker tracker;
+  for (int step = 0; step < 200000 && static_cast<int>(tracker.apexes().size()) < bounces; ++step) {
     world.step();
     const Body& body = world.body(id);
-    const double height = body.transform.position.y - radius;
-    if (body.linear_velocity.y > 0.0f) {
-      rising = true;
-      highest = std::max(highest, height);
-    } else if (rising) {
-      apexes.push_back(std::max(highest, height));
-      rising = false;
-      highest = -1.0;
-    }
+    tracker.sample(body.transform.position.y - radius, body.linear_velocity.y);
   }
-  return apexes;
+  return tracker.apexes();
 }
 
 /// The error bound above for apex k (1-based) of a drop from h0 with restitution e, gravity g

@@ -13,6 +13,7 @@
 //  4. ElasticGas:      discs in a closed elastic box keep their kinetic energy.
 //  5. FlatDrop:        boxes and regular polygons dropped flat bounce to e^(2k) h, straight.
 //  6. MirrorSymmetry:  a mirror-symmetric scene stays mirror-symmetric.
+#include "bounce_apexes.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -546,9 +547,9 @@ TEST_P(FlatDrop, ApexesFollowESquaredPowersAndTheDropStaysStraight) {
   def.position = {0.0f, h + offset};
   const BodyId id = world.create_body(def, shape);
 
-  std::vector<double> apexes;
-  double highest = -1.0, after_landing = -1.0;
-  bool rising = false, landed = false;
+  bounce_test::ApexTracker tracker;
+  double after_landing = -1.0;
+  bool landed = false;
   double worst_angle = 0.0, worst_x = 0.0;
   int first_tilt_step = -1;  // first step with |angle| >= 1e-4, and that angle
   float first_tilt_angle = 0.0f;
@@ -564,15 +565,9 @@ TEST_P(FlatDrop, ApexesFollowESquaredPowersAndTheDropStaysStraight) {
     const double height = body.transform.position.y - offset;
     if (!landed && height <= 1e-3) landed = true;
     if (landed) after_landing = std::max(after_landing, height);
-    if (body.linear_velocity.y > 0.0f) {
-      rising = true;
-      highest = std::max(highest, height);
-    } else if (rising) {
-      apexes.push_back(std::max(highest, height));
-      rising = false;
-      highest = -1.0;
-    }
+    tracker.sample(height, body.linear_velocity.y);
   }
+  const std::vector<double>& apexes = tracker.apexes();
 
   std::ostringstream measured;
   measured << "[measured] FlatDrop " << drop_shape_name(which) << " h=" << h << " e=" << e
