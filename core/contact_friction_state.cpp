@@ -10,48 +10,7 @@ namespace impulse2d {
 using namespace contact_detail;
 
 
-bool static_friction_cannot_stop_slip(const Contact& contact, const Body& a, const Body& b,
-                                      bool rotation, float impulse_intervals) {
-  if (contact.sliding || contact.point_count == 0) return false;
-  const PairMass mass{a.inverse_mass, b.inverse_mass, rotation ? a.inverse_inertia : 0.0f,
-                      rotation ? b.inverse_inertia : 0.0f};
-  const vec2 tangent = tangent_of(contact.normal);
-  // The anchors as prepare will set them (a recycled point's midpoint is current too).
-  vec2 anchors_a[max_manifold_points];
-  vec2 anchors_b[max_manifold_points];
-  float slips[max_manifold_points];
-  float fastest = 0.0f;
-  for (int i = 0; i < contact.point_count; ++i) {
-    anchors_a[i] = contact.points[i].point - a.transform.position;
-    anchors_b[i] = contact.points[i].point - b.transform.position;
-    const vec2 velocity_a = a.linear_velocity + cross(a.angular_velocity, anchors_a[i]);
-    const vec2 velocity_b = b.linear_velocity + cross(b.angular_velocity, anchors_b[i]);
-    slips[i] = std::fabs(glm::dot(velocity_b - velocity_a, tangent));
-    fastest = std::max(fastest, slips[i]);
-  }
-  // Most contacts rest: no slip, no effective masses to work out.
-  if (!(fastest > sticking_speed)) return false;
-  float needed = 0.0f;  // sum over the points of |v_t| m_t, N s
-  float load = 0.0f;    // sum over the points of the carried normal impulse, N s
-  for (int i = 0; i < contact.point_count; ++i) {
-    const float arm_a = cross(anchors_a[i], tangent);
-    const float arm_b = cross(anchors_b[i], tangent);
-    const float k_tangent = mass.inverse_mass_a + mass.inverse_mass_b +
-                            arm_a * arm_a * mass.inverse_inertia_a +
-                            arm_b * arm_b * mass.inverse_inertia_b;
-    if (k_tangent > 0.0f) needed += slips[i] / k_tangent;
-    load += contact.points[i].normal_impulse;
-  }
-  const float mean_needed = needed / static_cast<float>(contact.point_count);
-  return mean_needed > contact.static_friction * impulse_intervals * load;
-}
-
-void break_loose_if_slipping(Contact& contact, const Body& a, const Body& b,
-                             const WorldSettings& settings) {
-  if (!settings.enable_friction || settings.solver == SolverMethod::PerIteration) return;
-  const float intervals =
-      settings.solver == SolverMethod::SoftStep ? static_cast<float>(settings.substeps) : 1.0f;
-  if (!static_friction_cannot_stop_slip(contact, a, b, settings.enable_rotation, intervals)) return;
+void break_loose(Contact& contact) {
   contact.sliding = true;
   contact.steps_at_static_limit = 0;
   contact.limit_slip = -1.0f;

@@ -1,8 +1,10 @@
 #include "core/contact_prepare.h"
 
+#include "core/contact_friction_state.h"
 #include "core/contact_recycle.h"
 #include "core/contact_solver_internal.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace impulse2d {
@@ -27,10 +29,11 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
   const vec2 tangent = tangent_of(normal);
   contact.approach_acceleration =
       -glm::dot(free_acceleration(b, context.gravity) - free_acceleration(a, context.gravity), normal);
-  // A resting contact approaches at most what gravity adds in a step; twice that is a fall.
-  const float catch_speed = 2.0f * std::sqrt(length_squared(context.gravity)) * context.time_step;
   float slip_sum = 0.0f;
   float load_sum = 0.0f;
+  float carried_load = 0.0f;  // N s, before a cold solve drops it
+  float slip_need = 0.0f;     // N s, sum over the points of |v_t| m_t
+  float fastest_slip = 0.0f;  // m/s
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
     if (contact.recycled) {
@@ -44,12 +47,16 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
       point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
     }
     const vec2 velocity = relative_velocity(a, b, point);
-    slip_sum += glm::dot(velocity, tangent);
-    point.caught = -glm::dot(velocity, normal) > catch_speed;
+    const float slip = glm::dot(velocity, tangent);
+    slip_sum += slip;
+    point.caught = -glm::dot(velocity, normal) > context.catch_speed;
     const float k_normal = inverse_effective_mass(contact.mass, point, normal);
     const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
     point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
     point.tangent_mass = k_tangent > 0.0f ? 1.0f / k_tangent : 0.0f;
+    fastest_slip = std::max(fastest_slip, std::fabs(slip));
+    slip_need += std::fabs(slip) * point.tangent_mass;
+    carried_load += point.normal_impulse;
     point.velocity_bias = 0.0f;
     point.bouncing = false;
     point.waiting = false;
@@ -63,6 +70,14 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
   }
   contact.start_slip = slip_sum / static_cast<float>(contact.point_count);
   contact.start_load = load_sum;
+  // Surfaces already slipping faster than static friction can stop within the step slide from
+  // its start, whatever set them moving (contact_friction_state.h).
+  const float count = static_cast<float>(contact.point_count);
+  if (context.friction_intervals > 0.0f && !contact.sliding && fastest_slip > sticking_speed &&
+      static_friction_cannot_stop(slip_need / count, carried_load, contact.static_friction,
+                                  context.friction_intervals)) {
+    break_loose(contact);
+  }
 }
 
 void prepare_contacts(std::vector<Contact>& contacts, const std::vector<Body>& bodies,

@@ -147,7 +147,6 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       contact.recycled = true;
       forget_bounced_impulses(contact);
       mix_materials(a, b, settings, contact);
-      break_loose_if_slipping(contact, a, b, settings);
       point_total += contact.point_count;
       if (visitor) visitor->visit(write, contact);
       ++write;
@@ -185,7 +184,6 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       contact.steps_at_static_limit = old_contact.steps_at_static_limit;
       contact.limit_slip = old_contact.limit_slip;
       carry_over_impulses(old_contact, contact);
-      break_loose_if_slipping(contact, a, b, settings);
     } else {
       // A contact that begins with its surfaces already slipping past each other slides
       // (kinetic friction) until it comes to rest; one that begins at rest sticks.

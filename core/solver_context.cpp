@@ -1,6 +1,7 @@
 #include "core/solver_context.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace impulse2d {
 
@@ -26,6 +27,11 @@ SolverContext resolve_solver_context(const WorldSettings& settings) {
   context.static_softness = make_soft(2.0f * hertz, settings.contact_damping_ratio, context.substep);
   context.push_max_speed = settings.contact_push_max_speed;
   context.solver_lanes = settings.solver_lanes;
+  context.catch_speed = 2.0f * std::sqrt(length_squared(settings.gravity)) * settings.time_step;
+  if (settings.enable_friction && settings.solver != SolverMethod::PerIteration) {
+    context.friction_intervals =
+        settings.solver == SolverMethod::SoftStep ? static_cast<float>(settings.substeps) : 1.0f;
+  }
   return context;
 }
 

@@ -29,6 +29,14 @@ struct SolverContext {
   /// Soft contact against a static or kinematic body: twice as stiff (SoftStep).
   Softness static_softness;
   float push_max_speed = 0.0f;     ///< m/s: fastest soft push-out (SoftStep)
+  /// m/s: approach speed above which a point is being caught, not resting: twice what gravity
+  /// adds in a step (`ContactPoint::caught`).
+  float catch_speed = 0.0f;
+  /// Impulse intervals one prepare covers, for the start-of-step friction check
+  /// (`static_friction_cannot_stop`): the soft step's sub-steps, 1 for the accumulated solver,
+  /// 0 (no check) for the per-iteration solver, which decides the state in every iteration,
+  /// and with friction off.
+  float friction_intervals = 0.0f;
   int solver_lanes = 0;            ///< contacts solved side by side, 0: widest (SoftStep)
 };
 

@@ -5,6 +5,7 @@
 //    accelerates at (F - mu_d W) / m at F = 0.55 W (mu_s 0.5, mu_d 0.3);
 // with each solver method, an axis-aligned `Box` and a rotating box (`make_oriented_box`).
 #include "core/contact_friction_state.h"
+#include "core/contact_prepare.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -214,9 +215,9 @@ TEST(FrictionState, SlowBumpIsStoppedByStaticFrictionWithinTheStep) {
   EXPECT_FALSE(flat.world.contacts()[0].sliding);
 }
 
-// The narrow phase's test itself, on the settled contact of a 1 kg axis-aligned box (it does
-// not rotate, so m_t = m = 1 kg at both points) carrying W dt: static friction can stop a slip
-// of up to mu_s W dt / m = mu_s g dt within the step.
+// The start-of-step test itself, as prepare_contact applies it, on the settled contact of a
+// 1 kg axis-aligned box (it does not rotate, so m_t = m = 1 kg at both points) carrying W dt:
+// static friction can stop a slip of up to mu_s W dt / m = mu_s g dt within the step.
 TEST(FrictionState, BreaksLooseIffTheSlipNeedsMoreThanMuSTimesTheCarriedLoad) {
   // One impulse interval a step: the accumulated solver's (the soft step's carries W h per
   // sub-step, counted by the last case below).
@@ -229,21 +230,27 @@ TEST(FrictionState, BreaksLooseIffTheSlipNeedsMoreThanMuSTimesTheCarriedLoad) {
   for (int i = 0; i < contact.point_count; ++i) load += contact.points[i].normal_impulse;
   EXPECT_NEAR(load, flat.weight * dt, 1e-3f * flat.weight * dt);  // at rest: W dt
   const Body& ground = flat.world.body(contact.body_a);
-  Body box = flat.world.body(contact.body_b);
-  const float limit_speed = mu_s * load / box.mass;  // 8.2 cm/s
-  // The tangent is the normal (+y) turned clockwise: +x. Either direction of slip counts.
-  for (float sign : {1.0f, -1.0f}) {
-    box.linear_velocity = {sign * 1.02f * limit_speed, 0.0f};
-    EXPECT_TRUE(static_friction_cannot_stop_slip(contact, ground, box, true, 1.0f));
-    box.linear_velocity = {sign * 0.98f * limit_speed, 0.0f};
-    EXPECT_FALSE(static_friction_cannot_stop_slip(contact, ground, box, true, 1.0f));
+  const Body& resting = flat.world.body(contact.body_b);
+  const float limit_speed = mu_s * load / resting.mass;  // 8.2 cm/s
+  const SolverContext context = resolve_solver_context(flat.world.settings());
+  // Whether `prepared` starts the step sliding with the box moving at `speed` along the
+  // tangent (the normal, +y, turned clockwise: +x) and `intervals` impulse intervals.
+  auto breaks_loose = [&](Contact prepared, float speed, float intervals) {
+    Body box = resting;
+    box.linear_velocity = {speed, 0.0f};
+    SolverContext with_intervals = context;
+    with_intervals.friction_intervals = intervals;
+    prepare_contact(prepared, ground, box, with_intervals);
+    return prepared.sliding;
+  };
+  for (float sign : {1.0f, -1.0f}) {  // either direction of slip counts
+    EXPECT_TRUE(breaks_loose(contact, sign * 1.02f * limit_speed, 1.0f));
+    EXPECT_FALSE(breaks_loose(contact, sign * 0.98f * limit_speed, 1.0f));
     // The soft step's impulses are per sub-step: 4 of them make the step's budget.
-    box.linear_velocity = {sign * 3.9f * limit_speed, 0.0f};
-    EXPECT_FALSE(static_friction_cannot_stop_slip(contact, ground, box, true, 4.0f));
+    EXPECT_FALSE(breaks_loose(contact, sign * 3.9f * limit_speed, 4.0f));
   }
   // At rest within sticking_speed: never loose, even with no load carried.
   Contact unloaded = contact;
   for (int i = 0; i < unloaded.point_count; ++i) unloaded.points[i].normal_impulse = 0.0f;
-  box.linear_velocity = {0.5f * sticking_speed, 0.0f};
-  EXPECT_FALSE(static_friction_cannot_stop_slip(unloaded, ground, box, true, 1.0f));
+  EXPECT_FALSE(breaks_loose(unloaded, 0.5f * sticking_speed, 1.0f));
 }
