@@ -2,14 +2,14 @@
 /// @file contact_friction_state.h
 /// Coulomb's static/dynamic switch, decided for a contact as a whole once per step.
 ///
-/// A contact starts sticking: its accumulated friction impulse is clamped to mu_s * Pn at each
-/// point. It breaks loose only when the friction it needs reaches the static limit: every
-/// point of the manifold ended the solve clamped at mu_s * Pn (with rotation the two points
-/// carry unequal normal impulses, so one saturated point alone only shifts load to the other)
-/// and, even so, its slip still grew over the step, on two consecutive steps (the first step
-/// of a contact is solved cold and can look saturated before its normal impulses converge). Friction saturated only while clearing
-/// residual slip left by an unconverged iterative solve (the slip shrinks) is not "reaching
-/// the limit": the contact keeps sticking and the slip dies out.
+/// A contact starts sticking: its accumulated friction impulse is clamped to mu_s * Pn (the
+/// soft step: at the contact's middle, against the two points' total load). It breaks loose
+/// only when the friction it needs reaches the static limit: every point ended the solve at the
+/// limit and, even so, its slip grew over the step by more than the step's change of load can
+/// explain (a limit mu_s * Pn off by mu_s |dPn| lets the slip grow by that over the tangent
+/// mass: a cold start, a landing), on two consecutive steps. Friction saturated only while
+/// clearing residual slip left by an unconverged iterative solve (the slip shrinks) is not
+/// "reaching the limit": the contact keeps sticking and the slip dies out.
 /// Then its friction drops to mu_d * Pn and it slides until its relative tangential speed is
 /// back at rest (at most `sticking_speed`), when it sticks again (stick-slip both ways, the
 /// seed's "energy of activation").
