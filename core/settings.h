@@ -63,7 +63,7 @@ struct WorldSettings {
   int substeps = 4;
 
   /// Impulse scheme. The soft step is the default: of the three it is the most accurate on the
-  /// exact-answer suite and the pyramids and the fastest (docs/engine.md, "The default").
+  /// exact-answer suite and the pyramids and the fastest (README, "The engine": "Contacts").
   SolverMethod solver = SolverMethod::SoftStep;
   /// Passes over all contacts per (sub-)step: the soft step makes one soft pass and one relax
   /// pass of this many each (Box2D v3: 1); the accumulated and per-iteration solvers want 16
