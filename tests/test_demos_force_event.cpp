@@ -10,12 +10,14 @@
 #include <vector>
 
 #include "core/world.h"
+#include "scene_load_error.h"
 #include "demos/scene_run.h"
 #include "scene/scene_loader.h"
 #include "scene/usage_error.h"
 
 using namespace impulse2d;
 using namespace impulse2d::demos;
+using impulse2d::demos::test::load_error;
 
 namespace {
 
@@ -33,16 +35,6 @@ std::string disc_scene(const std::string& events, const std::string& settings = 
 }
 
 const std::string no_gravity = R"({"gravity": [0, 0]})";
-
-/// The message `parse_scene` throws for `text`, or "" when it loads.
-std::string load_error(const std::string& text) {
-  try {
-    parse_scene(text, "bad.json");
-  } catch (const UsageError& error) {
-    return error.what();
-  }
-  return "";
-}
 
 }  // namespace
 

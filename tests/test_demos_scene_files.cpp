@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/world.h"
+#include "scene_load_error.h"
 #include "demos/scene_camera.h"
 #include "scene/scene_loader.h"
 #include "demos/scene_run.h"
@@ -16,6 +17,7 @@
 
 using namespace impulse2d;
 using namespace impulse2d::demos;
+using impulse2d::demos::test::load_error;
 
 namespace {
 
@@ -24,16 +26,6 @@ std::string scene_with_body(const std::string& body) {
   return R"({"bodies": [)" + body +
          R"(, {"type": "static", "shape": {"type": "box", "half_extents": [5, 0.5]},
              "position": [0, -1], "material": "Static"}]})";
-}
-
-/// The message `parse_scene` throws for `text`, or "" when it loads.
-std::string load_error(const std::string& text) {
-  try {
-    parse_scene(text, "bad.json");
-  } catch (const UsageError& error) {
-    return error.what();
-  }
-  return "";
 }
 
 }  // namespace
