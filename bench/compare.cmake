@@ -1,7 +1,13 @@
 # bench_compare (bench/compare/): impulse2d against Box2D 2.4.1 and Chipmunk 7 on the same scenes
 # in the same run, with stability beside every speed and a scaling chart (README "Peers in
-# one run"). Uses the lab's peers (impulse2d_lab, bench/lab.cmake).
-file(GLOB compare_sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/compare/*.cpp)
-add_executable(bench_compare ${compare_sources})
+# one run"). Uses the lab's peers (impulse2d_lab, lab/).
+add_executable(bench_compare
+  ${CMAKE_CURRENT_SOURCE_DIR}/compare/bench_compare.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_chart.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_report.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_run.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_scene.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/compare/stability.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/compare/world_simulation.cpp)
 target_link_libraries(bench_compare PRIVATE impulse2d_lab)
 target_include_directories(bench_compare PRIVATE ${PROJECT_SOURCE_DIR})

@@ -12,7 +12,7 @@
 // beside this program. Usage: bench_large_pyramid [--rows R] [--steps N] [--lanes 4|8] [--check]
 // --check runs the soft step alone and exits 1 unless it stands (a ctest in optimised builds);
 // --lanes picks the soft step's contact block width (default: the widest this CPU runs).
-#include "core/wide_contact_solver.h"
+#include "core/solver/wide_contact_solver.h"
 #include "core/world.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "core/settings.h"
 
 #include "core/error.h"
-#include "core/wide_contact_solver.h"
+#include "core/solver/wide_contact_solver.h"
 
 #include <cmath>
 #include <string>

@@ -1,10 +1,10 @@
 #include "core/world.h"
 
 #include "core/error.h"
-#include "core/integrate.h"
-#include "core/narrow_phase.h"
-#include "core/position_correction.h"
-#include "core/speculative_reach.h"
+#include "core/solver/integrate.h"
+#include "core/collide/narrow_phase.h"
+#include "core/solver/position_correction.h"
+#include "core/collide/speculative_reach.h"
 
 #include <algorithm>
 #include <chrono>

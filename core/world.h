@@ -4,13 +4,13 @@
 /// The tutorial's `Scene`, with handles, methods as data and a deterministic order.
 
 #include "core/body.h"
-#include "core/broad_phase.h"
+#include "core/collide/broad_phase.h"
 #include "core/contact.h"
-#include "core/continuous.h"
+#include "core/collide/continuous.h"
 #include "core/debug_draw.h"
 #include "core/settings.h"
-#include "core/sleep.h"
-#include "core/step_solver.h"
+#include "core/solver/sleep.h"
+#include "core/solver/step_solver.h"
 #include "core/step_stats.h"
 
 #include <cstdint>

@@ -445,7 +445,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   const nlohmann::json document = parse_json_document(text, file);
   const JsonCursor root(document, file);
   // "golden" (the file's golden frames) belongs to `impulse2d golden`, which reads it itself
-  // (tools/golden_scenes/golden_block.h); a run ignores it.
+  // (golden/scenes/golden_block.h); a run ignores it.
   root.allow_only({"name", "description", "caption", "settings", "model", "materials", "bodies",
                    "events", "camera", "run", "overlays", "view", "character", "golden"});
 

@@ -5,4 +5,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build
-build/demos/impulse2d lab --out docs/lab "$@"
+build/impulse2d lab --out docs/lab "$@"

@@ -4,4 +4,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build
-exec build/demos/impulse2d "$@"
+exec build/impulse2d "$@"

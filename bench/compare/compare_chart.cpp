@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "bench/lab/gnuplot.h"
+#include "lab/gnuplot.h"
 
 namespace impulse2d::compare {
 

@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "bench/compare/world_simulation.h"
-#include "bench/lab/lab_peers.h"
+#include "lab/lab_peers.h"
 #include "core/world.h"
 #include "scene/scene.h"
 #include "scene/scene_model.h"

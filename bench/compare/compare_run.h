@@ -10,7 +10,7 @@
 
 #include "bench/compare/compare_scene.h"
 #include "bench/compare/stability.h"
-#include "bench/lab/lab_method.h"
+#include "lab/lab_method.h"
 
 namespace impulse2d::compare {
 

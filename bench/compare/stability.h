@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "bench/compare/compare_scene.h"
-#include "bench/lab/lab_simulation.h"
+#include "lab/lab_simulation.h"
 
 namespace impulse2d::compare {
 

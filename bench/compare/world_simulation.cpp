@@ -1,7 +1,7 @@
 /// @file world_simulation.cpp
 #include "bench/compare/world_simulation.h"
 
-#include "bench/lab/engine_simulation.h"
+#include "lab/engine_simulation.h"
 
 namespace impulse2d::compare {
 

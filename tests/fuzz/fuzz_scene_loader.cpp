@@ -8,7 +8,7 @@
 #include "core/error.h"
 #include "scene/params.h"
 #include "scene/scene_loader.h"
-#include "demos/scene_run.h"
+#include "scene/scene_run.h"
 #include "scene/usage_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

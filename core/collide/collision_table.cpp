@@ -1,0 +1,95 @@
+/// @file collision_table.cpp
+/// The narrow phase's jump table: one entry per (type of A, type of B).
+///
+/// Each pair of kinds has one collide function written for a fixed order; the entry for the
+/// swapped order calls it with the shapes swapped and flips the result: the normal is negated,
+/// the points and depths stay, and the two halves of each feature id are swapped so the high
+/// half still names a feature of the first shape.
+
+#include "core/collide.h"
+#include "core/collide/collide_internal.h"
+#include "core/error.h"
+
+#include <string>
+
+namespace impulse2d {
+
+namespace {
+
+/// The manifold of (B, A) from the manifold of (A, B).
+Manifold flipped(Manifold manifold) {
+  manifold.normal = -manifold.normal;
+  for (int i = 0; i < manifold.point_count; ++i) {
+    manifold.points[i].feature_id = collide_detail::swap_feature_id(manifold.points[i].feature_id);
+  }
+  return manifold;
+}
+
+Manifold circle_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
+                          const Transform& xb, float margin) {
+  return collide_circles(a.circle, xa, b.circle, xb, margin);
+}
+
+Manifold circle_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return flipped(collide_box_circle(b.box, xb, a.circle, xa, margin));
+}
+
+Manifold circle_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
+                           const Transform& xb, float margin) {
+  return flipped(collide_polygon_circle(b.polygon, xb, a.circle, xa, margin));
+}
+
+Manifold box_vs_circle(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return collide_box_circle(a.box, xa, b.circle, xb, margin);
+}
+
+Manifold box_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return collide_boxes(a.box, xa, b.box, xb, margin);
+}
+
+Manifold box_vs_polygon(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return collide_box_polygon(a.box, xa, b.polygon, xb, margin);
+}
+
+Manifold polygon_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
+                           const Transform& xb, float margin) {
+  return collide_polygon_circle(a.polygon, xa, b.circle, xb, margin);
+}
+
+Manifold polygon_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  return flipped(collide_box_polygon(b.box, xb, a.polygon, xa, margin));
+}
+
+Manifold polygon_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
+                            const Transform& xb, float margin) {
+  return collide_polygons(a.polygon, xa, b.polygon, xb, margin);
+}
+
+/// Rows: type of A; columns: type of B; in `ShapeType` order (circle, box, polygon).
+constexpr CollideFunction collision_table[shape_type_count][shape_type_count] = {
+    {circle_vs_circle, circle_vs_box, circle_vs_polygon},
+    {box_vs_circle, box_vs_box, box_vs_polygon},
+    {polygon_vs_circle, polygon_vs_box, polygon_vs_polygon},
+};
+
+int table_index(ShapeType type, const char* argument) {
+  const int index = static_cast<int>(type);
+  if (index < 0 || index >= shape_type_count) {
+    throw Error(std::string("collide_function: ") + argument + " has unknown shape type " +
+                std::to_string(index));
+  }
+  return index;
+}
+
+}  // namespace
+
+CollideFunction collide_function(ShapeType a, ShapeType b) {
+  return collision_table[table_index(a, "a")][table_index(b, "b")];
+}
+
+Manifold collide(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                 float margin) {
+  return collide_function(a.type, b.type)(a, xa, b, xb, margin);
+}
+
+}  // namespace impulse2d

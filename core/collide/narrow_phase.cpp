@@ -1,0 +1,203 @@
+#include "core/collide/narrow_phase.h"
+
+#include "core/collide.h"
+#include "core/solver/contact_friction_state.h"
+#include "core/solver/contact_recycle.h"
+#include "core/collide/speculative_meeting.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse2d {
+
+namespace {
+
+// Gap (metres) beyond which a pair counts as apart again for a kept contact decision.
+constexpr float separated_gap = 1.0e-3f;
+
+// The largest depth (metres) of a manifold's points.
+float deepest_depth(const Manifold& manifold) {
+  float deepest = manifold.points[0].depth;
+  for (int i = 1; i < manifold.point_count; ++i) deepest = std::max(deepest, manifold.points[i].depth);
+  return deepest;
+}
+
+// Relative tangential speed (m/s) of B against A at the contact's first point.
+float tangential_speed(const Body& a, const Body& b, const Contact& contact) {
+  const vec2 point = contact.points[0].point;
+  const vec2 velocity_b = b.linear_velocity + cross(b.angular_velocity, point - b.transform.position);
+  const vec2 velocity_a = a.linear_velocity + cross(a.angular_velocity, point - a.transform.position);
+  return glm::dot(velocity_b - velocity_a, right_perpendicular(contact.normal));
+}
+
+// The contact's coefficients from its bodies' materials by the world's mixing rules.
+void mix_materials(const Body& a, const Body& b, const WorldSettings& settings, Contact& contact) {
+  contact.static_friction = mix_friction(a.material.static_friction, b.material.static_friction,
+                                         settings.friction_mixing);
+  contact.dynamic_friction = mix_friction(a.material.dynamic_friction,
+                                          b.material.dynamic_friction, settings.friction_mixing);
+  // Mixing can put dynamic above static (e.g. root-sum-squares never does, but a custom
+  // rule might); Coulomb's model needs static >= dynamic.
+  if (contact.dynamic_friction > contact.static_friction) {
+    contact.dynamic_friction = contact.static_friction;
+  }
+  contact.restitution =
+      mix_restitution(a.material.restitution, b.material.restitution, settings.restitution_mixing);
+}
+
+// A kept point that bounced or was caught last step drops its impulses: a collision's impulse
+// is not a load to warm-start (see ContactPoint::bounced, ContactPoint::caught).
+void forget_bounced_impulses(Contact& contact) {
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    if (!point.bounced && !point.caught) continue;
+    point.normal_impulse = 0.0f;
+    point.tangent_impulse = 0.0f;
+    point.bounced = false;
+    point.caught = false;
+  }
+}
+
+// Copies last step's impulses into points whose feature ids match.
+void carry_over_impulses(const Contact& old_contact, Contact& contact) {
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    for (int k = 0; k < old_contact.point_count; ++k) {
+      const ContactPoint& old_point = old_contact.points[k];
+      if (old_point.feature_id == point.feature_id) {
+        // A collision's impulse is not a load to warm-start (see ContactPoint::bounced).
+        if (old_point.bounced || old_point.caught) break;
+        point.normal_impulse = old_point.normal_impulse;
+        point.tangent_impulse = old_point.tangent_impulse;
+        break;
+      }
+    }
+  }
+}
+
+// True when the speculative contact would push bodies that pass each other within `dt`.
+bool is_ghost(const Body& a, const Body& b, const Contact& contact, const WorldSettings& settings,
+              float dt) {
+  // A touching point makes it a real contact: most contacts stop here, before any prediction.
+  for (int i = 0; i < contact.point_count; ++i) {
+    if (contact.points[i].depth >= 0.0f) return false;
+  }
+  return is_ghost_contact(a, predict_motion(a, settings, dt), b, predict_motion(b, settings, dt),
+                          contact, dt);
+}
+
+}  // namespace
+
+int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
+                    const std::vector<float>& reach, const WorldSettings& settings, float dt,
+                    const ContactFilter& filter, std::vector<Contact>& contacts,
+                    std::vector<Contact>& spill, ContactVisitor* visitor) {
+  // This step's contacts are written over last step's in the same list: `write` never passes
+  // `read` while every new contact lands on a slot already read, so a kept contact is updated
+  // where it lies (no copy). A new contact with no read slot to land on moves the unread rest
+  // of the old list to `spill`, and the walk goes on reading from there.
+  const std::size_t old_count = contacts.size();
+  std::size_t write = 0;
+  std::size_t read = 0;  // next unread old contact: in `contacts`, or in `spill` once spilled
+  bool spilled = false;
+  auto old_size = [&] { return spilled ? spill.size() : old_count; };
+  auto old_at = [&](std::size_t i) -> Contact& { return spilled ? spill[i] : contacts[i]; };
+  // The slot contact `write` goes to: the old contact at `read` when `replaces_old` (it is
+  // consumed), else one already read, else a new one after spilling.
+  auto place = [&](bool replaces_old) -> Contact& {
+    if (spilled) return contacts.emplace_back();
+    if (write == read) {
+      if (replaces_old) {
+        ++read;
+        return contacts[write];
+      }
+      if (spill.capacity() < contacts.capacity()) spill.reserve(contacts.capacity());
+      spill.assign(contacts.begin() + static_cast<std::ptrdiff_t>(read),
+                   contacts.begin() + static_cast<std::ptrdiff_t>(old_count));
+      contacts.resize(write);
+      spilled = true;
+      read = 0;
+      return contacts.emplace_back();
+    }
+    return contacts[write];
+  };
+
+  int point_total = 0;
+  for (const BodyPair& pair : pairs) {
+    const Body& a = bodies[pair.first];
+    const Body& b = bodies[pair.second];
+    while (read < old_size() &&
+           (old_at(read).body_a.index < pair.first ||
+            (old_at(read).body_a.index == pair.first && old_at(read).body_b.index < pair.second))) {
+      ++read;
+    }
+    const bool touched_before =
+        read < old_size() && old_at(read).body_a == a.id && old_at(read).body_b == b.id;
+    if (touched_before && may_recycle(a, b, old_at(read), settings.contact_recycle_distance,
+                                      settings.speculative_margin)) {
+      const std::size_t old_index = read;
+      Contact& contact = place(/*replaces_old=*/true);
+      if (&contact != &old_at(old_index)) contact = old_at(old_index);
+      recycle_manifold(a, b, contact);
+      if (is_ghost(a, b, contact, settings, dt)) {
+        // Its slot is left to the next contact placed (or dropped when the list ends).
+        if (spilled) contacts.pop_back();
+        continue;
+      }
+      contact.recycled = true;
+      forget_bounced_impulses(contact);
+      mix_materials(a, b, settings, contact);
+      point_total += contact.point_count;
+      if (visitor) visitor->visit(write, contact);
+      ++write;
+      continue;
+    }
+    const float margin = settings.speculative_margin > 0.0f && a.speculative && b.speculative
+                             ? settings.speculative_margin + reach[pair.first] + reach[pair.second]
+                             : 0.0f;
+    const Manifold manifold = collide(a.shape, a.transform, b.shape, b.transform, margin);
+    if (manifold.point_count == 0) continue;
+
+    Contact contact;
+    contact.body_a = a.id;
+    contact.body_b = b.id;
+    contact.normal = manifold.normal;
+    contact.point_count = manifold.point_count;
+    for (int i = 0; i < manifold.point_count; ++i) {
+      contact.points[i].point = manifold.points[i].point;
+      contact.points[i].depth = manifold.points[i].depth;
+      contact.points[i].feature_id = manifold.points[i].feature_id;
+    }
+    if (is_ghost(a, b, contact, settings, dt)) continue;
+    mix_materials(a, b, settings, contact);
+    remember_manifold_pose(a, b, contact);
+    if (touched_before) {
+      const Contact& old_contact = old_at(read);
+      contact.enabled = old_contact.enabled;
+      // A disabled pair stays disabled while its shapes overlap (re-enabling then would pop a
+      // body through a one-way platform); once they are apart again, with speculative contacts
+      // still inside the margin, the decision is taken afresh.
+      if (!contact.enabled && deepest_depth(manifold) < -separated_gap) {
+        contact.enabled = filter ? filter(a, b, manifold) : true;
+      }
+      contact.sliding = old_contact.sliding;
+      contact.steps_at_static_limit = old_contact.steps_at_static_limit;
+      contact.limit_slip = old_contact.limit_slip;
+      carry_over_impulses(old_contact, contact);
+    } else {
+      // A contact that begins with its surfaces already slipping past each other slides
+      // (kinetic friction) until it comes to rest; one that begins at rest sticks.
+      contact.sliding = std::fabs(tangential_speed(a, b, contact)) > sticking_speed;
+      if (filter) contact.enabled = filter(a, b, manifold);
+    }
+    point_total += contact.point_count;
+    Contact& placed = place(/*replaces_old=*/touched_before);
+    placed = contact;
+    if (visitor) visitor->visit(write, placed);
+    ++write;
+  }
+  if (!spilled) contacts.resize(write);
+  return point_total;
+}
+
+}  // namespace impulse2d

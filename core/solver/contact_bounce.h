@@ -1,0 +1,66 @@
+#pragma once
+/// @file contact_bounce.h
+/// Non-penetration targets of a (sub-)step, with restitution timed at the moment of impact.
+///
+/// Each point may close its gap g (m) within the step of h seconds, and no more: the solve
+/// keeps its relative normal velocity vn >= -g / h (a speculative contact), or >= 0 once
+/// touching. A point whose approach speed v (m/s, before the solve) exceeds the restitution
+/// threshold and whose gap closes within this step bounces. Semi-implicit Euler moves
+/// positions with the end-of-step velocity, so within the step the gap closes at
+/// tau = g / v; the impact speed, with the closing acceleration a (gravity, forces) over the
+/// step, is u = v + a (tau - h/2); afterwards the point separates at e u. The solve therefore
+/// targets vn = e u - (1 + e) g / h, which leaves the point e (v h - g) apart at the end of
+/// the step (where the reflected motion puts it), and after positions move its velocity is
+/// raised to e u - a (h/2 - tau) (the reflected speed at the step's velocity instant).
+/// Measured: apexes of a dropped ball within 0.2 % of e^(2k) h0 at 60 Hz (tests/test_bounce).
+
+#include "core/body.h"
+#include "core/contact.h"
+#include "core/solver/solver_context.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace impulse2d {
+
+/// How a point bounces in one (sub-)step, from `plan_bounce`.
+struct BouncePlan {
+  bool bouncing = false;    ///< false: no bounce in this step (too slow, or the gap stays open)
+  float solve_speed = 0.0f; ///< m/s: target relative normal velocity of the velocity solve
+  float leave_speed = 0.0f; ///< m/s: separating speed once positions have moved
+};
+
+/// The bounce of a point approaching at `approach_speed` (m/s, > 0 closing) across `gap`
+/// metres (<= 0: touching or overlapping) with closing acceleration `approach_acceleration`
+/// (m/s^2), restitution `restitution`, over a step of `h` seconds; no bounce at or below
+/// `threshold` m/s.
+BouncePlan plan_bounce(float approach_speed, float gap, float approach_acceleration,
+                       float restitution, float threshold, float h);
+
+/// Sets every point's `velocity_bias` for a (sub-)step of `h` seconds from its current gap
+/// (recomputed from the transforms) and relative velocity: -gap/h while apart, 0 when
+/// touching, or a bounce from `plan_bounce`; an elastic point on a body that bounces in this
+/// step that neither approaches, overlaps nor carries last step's impulse is marked `waiting`
+/// (left out of the solve). With `bounces_only`, points that do not bounce
+/// are left as they are (the soft solver computes their targets itself).
+/// `bouncing_bodies` is scratch (one flag per body slot, reused between calls).
+void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                         const SolverContext& context, float h, bool bounces_only,
+                         std::vector<std::uint8_t>& bouncing_bodies);
+
+/// After positions moved: raises every bouncing point's relative normal velocity to its
+/// `bounce_speed` (accumulated impulse kept >= 0) in Gauss-Seidel passes over the bouncing
+/// points, so that simultaneous bounces are met together, both points of a manifold at once
+/// (2x2 block); then ends the bounces.
+void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies);
+
+/// Current separation (m) of a prepared point, from its local anchors: > 0 apart. Inline: the
+/// soft step asks it for every point in every pass.
+inline float current_separation(const Body& a, const Body& b, const Contact& contact,
+                                const ContactPoint& point) {
+  const vec2 surface_a = a.transform.apply(point.local_anchor_a);
+  const vec2 surface_b = b.transform.apply(point.local_anchor_b);
+  return glm::dot(surface_b - surface_a, contact.normal);
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,105 @@
+#include "core/solver/contact_prepare.h"
+
+#include "core/solver/contact_friction_state.h"
+#include "core/solver/contact_recycle.h"
+#include "core/solver/contact_solver_internal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse2d {
+
+using namespace contact_detail;
+
+namespace {
+
+// Acceleration (m/s^2) of a body's centre from gravity and applied forces.
+vec2 free_acceleration(const Body& body, vec2 gravity) {
+  if (body.type != BodyType::Dynamic || !body.awake) return vec2(0.0f);
+  return body.force * body.inverse_mass + gravity * body.gravity_scale;
+}
+
+}  // namespace
+
+void prepare_contact(Contact& contact, const Body& a, const Body& b, const SolverContext& context) {
+  contact.mass = PairMass{a.inverse_mass, b.inverse_mass,
+                          context.rotation ? a.inverse_inertia : 0.0f,
+                          context.rotation ? b.inverse_inertia : 0.0f};
+  const vec2 normal = contact.normal;
+  const vec2 tangent = tangent_of(normal);
+  contact.approach_acceleration =
+      -glm::dot(free_acceleration(b, context.gravity) - free_acceleration(a, context.gravity), normal);
+  float slip_sum = 0.0f;
+  float load_sum = 0.0f;
+  float carried_load = 0.0f;  // N s, before a cold solve drops it
+  float slip_need = 0.0f;     // N s, sum over the points of |v_t| m_t
+  float fastest_slip = 0.0f;  // m/s
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    if (contact.recycled) {
+      set_recycled_anchors(a, b, contact, point);
+    } else {
+      point.anchor_a = point.point - a.transform.position;
+      point.anchor_b = point.point - b.transform.position;
+      // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n.
+      const vec2 half_depth = normal * (0.5f * point.depth);
+      point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth);
+      point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
+    }
+    const vec2 velocity = relative_velocity(a, b, point);
+    const float slip = glm::dot(velocity, tangent);
+    slip_sum += slip;
+    point.caught = -glm::dot(velocity, normal) > context.catch_speed;
+    const float k_normal = inverse_effective_mass(contact.mass, point, normal);
+    const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
+    point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
+    point.tangent_mass = k_tangent > 0.0f ? 1.0f / k_tangent : 0.0f;
+    fastest_slip = std::max(fastest_slip, std::fabs(slip));
+    slip_need += std::fabs(slip) * point.tangent_mass;
+    carried_load += point.normal_impulse;
+    point.velocity_bias = 0.0f;
+    point.bouncing = false;
+    point.waiting = false;
+    point.bounce_speed = 0.0f;
+    if (!context.warm_starting) {
+      point.normal_impulse = 0.0f;
+      point.tangent_impulse = 0.0f;
+    }
+    if (!context.friction) point.tangent_impulse = 0.0f;
+    load_sum += point.normal_impulse;
+  }
+  contact.start_slip = slip_sum / static_cast<float>(contact.point_count);
+  contact.start_load = load_sum;
+  // Surfaces already slipping faster than static friction can stop within the step slide from
+  // its start, whatever set them moving (contact_friction_state.h).
+  const float count = static_cast<float>(contact.point_count);
+  if (context.friction_intervals > 0.0f && !contact.sliding && fastest_slip > sticking_speed &&
+      static_friction_cannot_stop(slip_need / count, carried_load, contact.static_friction,
+                                  context.friction_intervals)) {
+    break_loose(contact);
+  }
+}
+
+void prepare_contacts(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                      const SolverContext& context) {
+  for (Contact& contact : contacts) {
+    if (!contact.enabled) continue;
+    prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
+  }
+}
+
+void warm_start_contacts(const std::vector<Contact>& contacts, std::vector<Body>& bodies) {
+  for (const Contact& contact : contacts) {
+    if (!is_solvable(contact)) continue;
+    Body& a = bodies[contact.body_a.index];
+    Body& b = bodies[contact.body_b.index];
+    const vec2 tangent = tangent_of(contact.normal);
+    for (int i = 0; i < contact.point_count; ++i) {
+      const ContactPoint& point = contact.points[i];
+      apply_impulse(a, b, contact.mass, point,
+                    contact.normal * point.normal_impulse + tangent * point.tangent_impulse);
+    }
+  }
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,95 @@
+#include "core/solver/contact_recycle.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse2d {
+
+namespace {
+
+// Cosine of the largest turn a body may make before its manifold is computed afresh
+// (Box2D v3's 0.98: about 11.5 degrees).
+constexpr float min_turn_cosine = 0.98f;
+
+// Where the bodies stand now: B's centre in A's frame and both rotations.
+ManifoldPose pose_of(const Body& a, const Body& b) {
+  const Rotation& qa = a.transform.rotation;
+  ManifoldPose pose;
+  pose.relative_position = qa.inverse_rotate(b.transform.position - a.transform.position);
+  pose.rotation_a = qa;
+  pose.rotation_b = b.transform.rotation;
+  return pose;
+}
+
+// B's rotation relative to A's in `pose`.
+Rotation relative_rotation(const ManifoldPose& pose) {
+  const Rotation& qa = pose.rotation_a;
+  const Rotation& qb = pose.rotation_b;
+  return {qa.cosine * qb.cosine + qa.sine * qb.sine, qa.cosine * qb.sine - qa.sine * qb.cosine};
+}
+
+// Cosine of the angle between two rotations.
+float cosine_between(const Rotation& p, const Rotation& q) {
+  return p.cosine * q.cosine + p.sine * q.sine;
+}
+
+// Sine of the angle from rotation q to rotation p.
+float sine_between(const Rotation& p, const Rotation& q) {
+  return p.sine * q.cosine - p.cosine * q.sine;
+}
+
+// True when the body's contacts may keep their manifolds at all.
+bool allows_recycling(const Body& body) {
+  return body.speculative && !body.is_bullet;
+}
+
+}  // namespace
+
+void remember_manifold_pose(const Body& a, const Body& b, Contact& contact) {
+  contact.manifold_pose = pose_of(a, b);
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    point.recycle_anchor_a = a.transform.apply_inverse(point.point);
+    point.recycle_anchor_b = b.transform.apply_inverse(point.point);
+    point.base_separation = -point.depth;
+    point.stick_offset = 0.0f;
+  }
+}
+
+bool may_recycle(const Body& a, const Body& b, const Contact& contact, float recycle_distance,
+                 float apart_distance) {
+  if (!(recycle_distance > 0.0f) || !contact.enabled) return false;
+  if (!allows_recycling(a) || !allows_recycling(b)) return false;
+  const ManifoldPose& then = contact.manifold_pose;
+  const ManifoldPose now = pose_of(a, b);
+  const float turn_cosine = std::min(cosine_between(now.rotation_a, then.rotation_a),
+                                     cosine_between(now.rotation_b, then.rotation_b));
+  if (!(turn_cosine > min_turn_cosine)) return false;
+  bool touching = false;
+  for (int i = 0; i < contact.point_count; ++i) touching = touching || contact.points[i].depth >= 0.0f;
+  const float tolerance = touching ? recycle_distance : std::min(recycle_distance, apart_distance);
+  const float moved = std::sqrt(length_squared(now.relative_position - then.relative_position));
+  // The turn's share below is >= 0, so a shift alone at the tolerance already fails (and the
+  // shapes' extents need not be looked up).
+  if (!(moved < tolerance)) return false;
+  const float turned = std::fabs(sine_between(relative_rotation(now), relative_rotation(then)));
+  const float extent_a = a.type == BodyType::Static ? 0.0f : a.extent;
+  const float extent_b = b.type == BodyType::Static ? 0.0f : b.extent;
+  return moved + std::max(extent_a, extent_b) * turned < tolerance;
+}
+
+void recycle_manifold(const Body& a, const Body& b, Contact& contact) {
+  // Copies: the stores into `contact` below cannot then make the compiler reload them.
+  const Transform xa = a.transform;
+  const Transform xb = b.transform;
+  const vec2 normal = contact.normal;
+  for (int i = 0; i < contact.point_count; ++i) {
+    ContactPoint& point = contact.points[i];
+    const vec2 on_a = xa.apply(point.recycle_anchor_a);
+    const vec2 on_b = xb.apply(point.recycle_anchor_b);
+    point.point = 0.5f * (on_a + on_b);
+    point.depth = -(point.base_separation + glm::dot(on_b - on_a, normal));
+  }
+}
+
+}  // namespace impulse2d

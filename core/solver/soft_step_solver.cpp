@@ -1,0 +1,87 @@
+#include "core/solver/soft_step_solver.h"
+
+#include "core/solver/contact_bounce.h"
+#include "core/solver/contact_friction_state.h"
+#include "core/solver/contact_solver_internal.h"
+#include "core/solver/shock_propagation.h"
+#include "core/solver/wide_contact_solver.h"
+
+namespace impulse2d {
+
+using namespace contact_detail;
+
+void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) const {
+  const float h = context.substep;
+  std::vector<Body>& bodies = stages.solver_bodies();
+  WideContactSolver& wide = stages.solver_wide_contacts();
+  // Once: the sub-steps track each point's separation through its anchors. Each contact is
+  // prepared and coloured as the narrow phase finishes it, while it is in the cache.
+  wide.begin_step(bodies, context, context.solver_lanes);
+  stages.find_contacts(context.time_step, &wide);
+  std::vector<Contact>& contacts = stages.solver_contacts();
+  wide.finish_step(contacts);
+  const bool may_bounce = context.restitution && wide.has_elastic_contacts();
+  // Heavy bodies on light ones: a ground-up pass with the lower body held fixed after each
+  // sub-step's solve (as the accumulated solver does after its iterations), else one soft pass
+  // a sub-step lets a 1:1000 load squeeze through the light body.
+  const bool shock = context.shock_propagation && has_heavy_on_light(contacts, context.velocity_iterations);
+  // The sub-steps work on the compact body states; the bodies are written once at the end
+  // (and around the bounce stages, which work on them).
+  stages.begin_solver_bodies();
+  SolverBodies& states = stages.solver_body_states();
+  for (int substep = 0; substep < context.substeps; ++substep) {
+    stages.integrate_solver_velocities(h);
+    if (may_bounce) {
+      // The plan reads the points' impulses (and drops those of finished bounces).
+      wide.store_impulses(contacts);
+      states.store(bodies);
+      plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
+                          stages.solver_body_flags());
+      wide.load_points(contacts);
+    }
+    if (context.warm_starting) wide.warm_start(states.states());
+    for (int i = 0; i < context.velocity_iterations; ++i) {
+      wide.solve(context, /*use_bias=*/true, states.states());
+    }
+    if (shock) {
+      wide.store_impulses(contacts);
+      states.store(bodies);
+      SupportOrder& order = stages.solver_support_order();
+      build_support_order(contacts, bodies, context.gravity, context.velocity_iterations, order);
+      solve_shock_pass(contacts, bodies, order, context.block_solver, context.friction);
+      states.load(bodies);
+    }
+    stages.integrate_solver_positions(h);
+    for (int i = 0; i < context.velocity_iterations; ++i) {
+      wide.solve(context, /*use_bias=*/false, states.states());  // relax
+    }
+    if (may_bounce) {
+      wide.store_impulses(contacts);
+      states.store(bodies);
+      apply_bounces(contacts, bodies);
+      states.load(bodies);
+      wide.load_points(contacts);
+    }
+  }
+  states.store(bodies);
+  if (states.has_bullets()) stages.sweep_bullets(context.time_step);
+  // One walk in the list's order writes the impulses back and then, with friction, switches
+  // each contact between sticking and sliding (the switch reads them).
+  wide.store_impulses(contacts, [&](Contact& contact) {
+    if (!context.friction || !is_solvable(contact)) return;
+    Body& a = bodies[contact.body_a.index];
+    Body& b = bodies[contact.body_b.index];
+    const bool at_limit = contact.points[0].friction_at_limit;
+    update_friction_state(contact, a, b);
+    if (!contact.sliding && !at_limit) return;
+    // A sliding contact sticks, when it does, where it came to rest, and a sticking one whose
+    // friction was at its limit slipped for real: their points' drift so far is no longer
+    // taken back (only residual slip under a friction that held is). (The switch changes
+    // velocities only, the drift reads poses, so one walk does both.)
+    for (int i = 0; i < contact.point_count; ++i) {
+      contact.points[i].stick_offset += friction_drift(a, b, contact, contact.points[i]);
+    }
+  });
+}
+
+}  // namespace impulse2d

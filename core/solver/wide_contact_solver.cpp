@@ -1,0 +1,362 @@
+#include "core/solver/wide_contact_solver.h"
+
+#include "core/solver/contact_prepare.h"
+#include "core/solver/contact_solver_internal.h"
+#include "core/solver/wide_contact_kernels.h"
+
+#include <cstddef>
+
+namespace impulse2d {
+
+namespace {
+
+static_assert(max_manifold_points == 2, "ContactBlock has two point slots per lane");
+
+// How many contacts ahead of the one being copied the walks in colour order ask the cache for:
+// in colour order a contact's index is not predictable from the last one's, so without the
+// hint every ~300-byte contact is a run of cache misses.
+constexpr std::size_t prefetch_distance = 8;
+
+// Asks the cache for bytes [begin, end) of `contact` (no effect on results).
+void prefetch_contact(const Contact& contact, std::size_t begin = 0,
+                      std::size_t end = sizeof(Contact)) {
+  const char* bytes = reinterpret_cast<const char*>(&contact);
+  for (std::size_t offset = begin; offset < end; offset += 64) __builtin_prefetch(bytes + offset);
+  __builtin_prefetch(bytes + end - 1);
+}
+
+// The bytes of a contact that writing impulses back and reading bounce plans touch: its
+// points' solver state and the point count (the rest of its ~300 bytes need not be fetched).
+constexpr std::size_t point_state_begin = offsetof(Contact, points) +
+                                          offsetof(ContactPoint, normal_impulse);
+constexpr std::size_t point_state_end = offsetof(Contact, point_count) + sizeof(int);
+
+// Calls visit(block, its solve part, point slot index, lane, contact point) for every used
+// point of every lane of the blocks in `packed` (a `BlockStorage`); `contact_index` holds the
+// blocks' contact indices, lanes per block (-1: unused lane).
+template <class Storage, class Contacts, class Visit>
+void for_each_point(Storage& packed, const std::vector<std::int32_t>& contact_index,
+                    Contacts& contacts, Visit visit) {
+  constexpr int Lanes = Storage::lanes;
+  const std::size_t block_count = packed.blocks.size();
+  const std::size_t ahead = prefetch_distance / Lanes + 1;  // blocks
+  for (std::size_t b = 0; b < block_count; ++b) {
+    if (b + ahead < block_count) {
+      for (int lane = 0; lane < Lanes; ++lane) {
+        const std::int32_t index = contact_index[(b + ahead) * Lanes + lane];
+        if (index >= 0) {
+          prefetch_contact(contacts[static_cast<std::size_t>(index)], point_state_begin,
+                           point_state_end);
+        }
+      }
+    }
+    for (int lane = 0; lane < Lanes; ++lane) {
+      const std::int32_t index = contact_index[b * Lanes + lane];
+      if (index < 0) continue;
+      auto& contact = contacts[static_cast<std::size_t>(index)];
+      for (int i = 0; i < contact.point_count; ++i) {
+        visit(packed.blocks[b], packed.solves[b], i, lane, contact.points[i]);
+      }
+    }
+  }
+}
+
+// Point slot `slot` of lane `lane` left without a point: nothing to solve, no impulse to apply.
+template <int Lanes>
+void clear_point(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot, int lane) {
+  solve.points[slot].normal_mass[lane] = 0.0f;
+  solve.points[slot].tangent_mass[lane] = 0.0f;
+  block.points[slot].normal_impulse[lane] = 0.0f;
+  block.points[slot].tangent_impulse[lane] = 0.0f;
+}
+
+// No pair solve in lane `lane` (its lanes are still read, so they hold zeros).
+template <int Lanes>
+void clear_pair(ContactBlockSolve<Lanes>& solve, int lane) {
+  solve.pair_mass_00[lane] = 0.0f;
+  solve.pair_mass_01[lane] = 0.0f;
+  solve.pair_mass_11[lane] = 0.0f;
+}
+
+// An unused lane: no contact, no points, body slot 0 (never written: it moves nothing).
+template <int Lanes>
+void clear_lane(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int lane) {
+  block.body_a[lane] = 0;
+  block.body_b[lane] = 0;
+  block.flags[lane] = 0;
+  solve.friction_at_limit[lane] = 0;
+  clear_pair(solve, lane);
+  block.inverse_mass_a[lane] = 0.0f;
+  block.inverse_mass_b[lane] = 0.0f;
+  block.inverse_inertia_a[lane] = 0.0f;
+  block.inverse_inertia_b[lane] = 0.0f;
+  for (int slot = 0; slot < max_manifold_points; ++slot) clear_point(block, solve, slot, lane);
+}
+
+// The flag bits of point slot `slot` that the bounce stages may change: waiting and bouncing.
+std::int32_t bounce_flags(int slot, const ContactPoint& point) {
+  return (point.waiting ? block_point_waiting << slot : 0) |
+         (point.bouncing ? block_point_bouncing << slot : 0);
+}
+
+// What the bounce stages may change in point slot `slot`, but for its flags: its accumulated
+// impulses and speed target.
+template <int Lanes>
+void load_point_values(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot,
+                       int lane, const ContactPoint& point) {
+  block.points[slot].normal_impulse[lane] = point.normal_impulse;
+  block.points[slot].tangent_impulse[lane] = point.tangent_impulse;
+  solve.points[slot].velocity_bias[lane] = point.velocity_bias;
+}
+
+// What the bounce stages may change in point slot `slot`: its accumulated impulses and bounce
+// plan.
+template <int Lanes>
+void load_point_state(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot,
+                      int lane, const ContactPoint& point) {
+  load_point_values(block, solve, slot, lane, point);
+  const std::int32_t plan = (block_point_waiting | block_point_bouncing) << slot;
+  block.flags[lane] = (block.flags[lane] & ~plan) | bounce_flags(slot, point);
+}
+
+// A's point `on_a` and B's point `on_b` into lane `lane` of four lane arrays (x and y of each).
+void set_lane_points(float* ax, float* ay, float* bx, float* by, int lane, vec2 on_a, vec2 on_b) {
+  ax[lane] = on_a.x;
+  ay[lane] = on_a.y;
+  bx[lane] = on_b.x;
+  by[lane] = on_b.y;
+}
+
+// Largest condition number (Box2D v2's bound) of a two-point manifold's effective-mass matrix
+// solved as a pair; beyond it the points are nearly one, and are solved one after the other.
+constexpr float max_pair_condition = 1000.0f;
+
+// Writes the inverse of the two points' normal effective-mass matrix K into lane `lane`;
+// returns false (writing nothing) when K is ill-conditioned. K's diagonal is each point's own
+// 1/normal_mass; its off-diagonal couples them through the bodies' masses and inertias.
+template <int Lanes>
+bool pair_inverse(const Contact& contact, ContactBlockSolve<Lanes>& solve, int lane) {
+  const ContactPoint& first = contact.points[0];
+  const ContactPoint& second = contact.points[1];
+  if (!(first.normal_mass > 0.0f && second.normal_mass > 0.0f)) return false;
+  const PairMass& mass = contact.mass;
+  const vec2 normal = contact.normal;
+  const float k00 = 1.0f / first.normal_mass;
+  const float k11 = 1.0f / second.normal_mass;
+  const float k01 = mass.inverse_mass_a + mass.inverse_mass_b +
+                    mass.inverse_inertia_a * cross(first.anchor_a, normal) * cross(second.anchor_a, normal) +
+                    mass.inverse_inertia_b * cross(first.anchor_b, normal) * cross(second.anchor_b, normal);
+  const float determinant = k00 * k11 - k01 * k01;
+  if (!(k00 * k00 < max_pair_condition * determinant)) return false;
+  const float inverse_determinant = 1.0f / determinant;
+  solve.pair_mass_00[lane] = k11 * inverse_determinant;
+  solve.pair_mass_01[lane] = -k01 * inverse_determinant;
+  solve.pair_mass_11[lane] = k00 * inverse_determinant;
+  return true;
+}
+
+// Effective mass (kg) along the tangent at the middle of a two-point contact's points, where
+// the wide solver applies its friction (see solve_friction).
+float middle_tangent_mass(const Contact& contact) {
+  const vec2 tangent = contact_detail::tangent_of(contact.normal);
+  const float arm_a = cross(0.5f * (contact.points[0].anchor_a + contact.points[1].anchor_a), tangent);
+  const float arm_b = cross(0.5f * (contact.points[0].anchor_b + contact.points[1].anchor_b), tangent);
+  const PairMass& mass = contact.mass;
+  const float inverse = mass.inverse_mass_a + mass.inverse_mass_b +
+                        mass.inverse_inertia_a * arm_a * arm_a +
+                        mass.inverse_inertia_b * arm_b * arm_b;
+  return inverse > 0.0f ? 1.0f / inverse : 0.0f;
+}
+
+// One contact into lane `lane` of a block's three parts.
+template <int Lanes>
+void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
+                  ContactBlockSolve<Lanes>& solve, ContactBlockStick<Lanes>& stick, int lane) {
+  const PairMass& mass = contact.mass;
+  const bool against_fixed = mass.inverse_mass_a == 0.0f || mass.inverse_mass_b == 0.0f;
+  block.body_a[lane] = static_cast<std::int32_t>(contact.body_a.index);
+  block.body_b[lane] = static_cast<std::int32_t>(contact.body_b.index);
+  std::int32_t flags = 0;
+  if (contact_detail::moves_a(mass)) flags |= block_moves_a;
+  if (contact_detail::moves_b(mass)) flags |= block_moves_b;
+  if (contact.sliding) flags |= block_sliding;
+  if (against_fixed) flags |= block_against_fixed;
+  block.normal_x[lane] = contact.normal.x;
+  block.normal_y[lane] = contact.normal.y;
+  block.inverse_mass_a[lane] = mass.inverse_mass_a;
+  block.inverse_mass_b[lane] = mass.inverse_mass_b;
+  block.inverse_inertia_a[lane] = mass.inverse_inertia_a;
+  block.inverse_inertia_b[lane] = mass.inverse_inertia_b;
+  solve.friction_at_limit[lane] = 0;
+  solve.static_friction[lane] = contact.static_friction;
+  solve.dynamic_friction[lane] = contact.dynamic_friction;
+  for (int i = 0; i < contact.point_count; ++i) {
+    const ContactPoint& point = contact.points[i];
+    BlockPointImpulse<Lanes>& impulse = block.points[i];
+    set_lane_points(impulse.anchor_ax, impulse.anchor_ay, impulse.anchor_bx, impulse.anchor_by,
+                    lane, point.anchor_a, point.anchor_b);
+    BlockPointSolve<Lanes>& solved = solve.points[i];
+    set_lane_points(solved.surface_ax, solved.surface_ay, solved.surface_bx, solved.surface_by,
+                    lane, point.local_anchor_a, point.local_anchor_b);
+    solved.normal_mass[lane] = point.normal_mass;
+    solved.tangent_mass[lane] = point.tangent_mass;
+    BlockPointStick<Lanes>& stuck = stick.points[i];
+    set_lane_points(stuck.stick_ax, stuck.stick_ay, stuck.stick_bx, stuck.stick_by, lane,
+                    point.recycle_anchor_a, point.recycle_anchor_b);
+    stuck.stick_offset[lane] = point.stick_offset;
+    flags |= (block_point_present << i) | bounce_flags(i, point) |
+             (point.caught ? block_point_caught << i : 0);
+    load_point_values(block, solve, i, lane, point);
+  }
+  if (contact.point_count == 2) {
+    solve.points[0].tangent_mass[lane] = middle_tangent_mass(contact);
+    solve.points[1].tangent_mass[lane] = 0.0f;
+  }
+  if (contact.point_count == 2 && pair_inverse(contact, solve, lane)) {
+    flags |= block_point_pair;
+  } else {
+    clear_pair(solve, lane);
+  }
+  block.flags[lane] = flags;
+  for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block, solve, i, lane);
+}
+
+}  // namespace
+
+int WideContactSolver::widest_lanes() {
+#if defined(__x86_64__)
+  if (wide_contact_kernels_8_available()) return 8;
+#endif
+  return 4;
+}
+
+template <int Lanes>
+void WideContactSolver::pack(const std::vector<Contact>& contacts) {
+  // Each colour fills blocks of Lanes contacts in the list's order (its last block partly);
+  // the overflow goes one contact per block, as its contacts may share bodies. The contacts
+  // are read in the list's order, each written to its colour's open block: the list streams
+  // in, and the open blocks (one per colour) stay in the cache.
+  const int colours = colouring_.colour_count();
+  const int overflow = ContactColouring::max_colours;
+  std::size_t first_block[ContactColouring::max_colours + 1];
+  std::size_t block_count = 0;
+  for (int colour = 0; colour < colours; ++colour) {
+    first_block[colour] = block_count;
+    block_count += (colouring_.count(colour) + Lanes - 1) / Lanes;
+  }
+  first_block[overflow] = block_count;
+  block_count += colouring_.count(overflow);
+  BlockStorage<Lanes>& packed = storage<Lanes>();
+  // Every lane is written below: packed or cleared.
+  packed.blocks.resize(block_count);
+  packed.solves.resize(block_count);
+  packed.sticks.resize(block_count);
+  contact_index_.assign(block_count * Lanes, -1);
+  lane_of_contact_.assign(contacts.size(), -1);
+  std::size_t packed_count[ContactColouring::max_colours + 1] = {};
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const int colour = colouring_.colour_of(i);
+    if (colour < 0) continue;
+    const std::size_t rank = packed_count[colour]++;
+    const std::size_t per_block = colour == overflow ? 1 : Lanes;
+    const std::size_t block = first_block[colour] + rank / per_block;
+    const int lane = static_cast<int>(rank % per_block);
+    pack_contact(contacts[i], packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
+    contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(i);
+    lane_of_contact_[i] = static_cast<std::int32_t>(block * Lanes + lane);
+  }
+  // The lanes no contact took: each colour's last block after its last contact, and every
+  // overflow block's but the first.
+  for (int colour = 0; colour < colours; ++colour) {
+    const int used = static_cast<int>(colouring_.count(colour) % Lanes);
+    if (used == 0) continue;
+    const std::size_t last = first_block[colour] + colouring_.count(colour) / Lanes;
+    for (int lane = used; lane < Lanes; ++lane) {
+      clear_lane(packed.blocks[last], packed.solves[last], lane);
+    }
+  }
+  for (std::size_t block = first_block[overflow]; block < block_count; ++block) {
+    for (int lane = 1; lane < Lanes; ++lane) clear_lane(packed.blocks[block], packed.solves[block], lane);
+  }
+}
+
+void WideContactSolver::begin_step(const std::vector<Body>& bodies, const SolverContext& context,
+                                   int lanes) {
+  if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
+  lanes_ = lanes;
+  has_elastic_contacts_ = false;
+  bodies_ = &bodies;
+  context_ = &context;
+  colouring_.begin(bodies.size());
+}
+
+void WideContactSolver::visit(std::size_t /*index: the colouring counts them*/, Contact& contact) {
+  if (contact.enabled) {
+    const std::vector<Body>& bodies = *bodies_;
+    prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], *context_);
+  }
+  if (colouring_.add(contact) >= 0 && contact.restitution > 0.0f) has_elastic_contacts_ = true;
+}
+
+void WideContactSolver::finish_step(const std::vector<Contact>& contacts) {
+  if (lanes_ == 8) {
+    pack<8>(contacts);
+  } else {
+    pack<4>(contacts);
+  }
+  bodies_ = nullptr;
+  context_ = nullptr;
+}
+
+void WideContactSolver::load_points(const std::vector<Contact>& contacts) {
+  auto load = [](auto& block, auto& solve, int slot, int lane, const ContactPoint& point) {
+    load_point_state(block, solve, slot, lane, point);
+  };
+  if (lanes_ == 8) {
+    for_each_point(storage_8_, contact_index_, contacts, load);
+  } else {
+    for_each_point(storage_4_, contact_index_, contacts, load);
+  }
+}
+
+void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
+  auto store = [](const auto& block, const auto& solve, int slot, int lane, ContactPoint& point) {
+    point.normal_impulse = block.points[slot].normal_impulse[lane];
+    point.tangent_impulse = block.points[slot].tangent_impulse[lane];
+    point.friction_at_limit = (solve.friction_at_limit[lane] & (1 << slot)) != 0;
+  };
+  if (lanes_ == 8) {
+    for_each_point(storage_8_, contact_index_, contacts, store);
+  } else {
+    for_each_point(storage_4_, contact_index_, contacts, store);
+  }
+}
+
+void WideContactSolver::warm_start(SolverBody* bodies) {
+#if defined(__x86_64__)
+  if (lanes_ == 8) {
+    warm_start_contact_blocks_8(storage_8_.blocks.data(), storage_8_.blocks.size(), bodies);
+    return;
+  }
+#endif
+  warm_start_contact_blocks_4(storage_4_.blocks.data(), storage_4_.blocks.size(), bodies);
+}
+
+void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies) {
+  WidePassSettings pass;
+  pass.inverse_substep = 1.0f / context.substep;
+  pass.static_softness = context.static_softness;
+  pass.dynamic_softness = context.dynamic_softness;
+  pass.push_max_speed = context.push_max_speed;
+  pass.use_bias = use_bias;
+  pass.friction = context.friction;
+#if defined(__x86_64__)
+  if (lanes_ == 8) {
+    solve_contact_blocks_8(storage_8_.arrays(), bodies, pass);
+    return;
+  }
+#endif
+  solve_contact_blocks_4(storage_4_.arrays(), bodies, pass);
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,151 @@
+#pragma once
+/// @file wide_contact_solver.h
+/// The soft step's contact solve on compact arrays: a 32-byte `SolverBody` per body slot and
+/// the step's contacts coloured (`contact_colouring.h`) and packed into `ContactBlock`s of 4
+/// or 8 lanes, solved by the vector kernels (`wide_contact_kernels.h`). The lanes of a block
+/// share no moving body, so 4 and 8 lanes give bit-identical results.
+///
+/// Per step: `begin_step`, then each contact prepared (`contact_prepare.h`) and coloured as
+/// the narrow phase finishes it (the solver is the narrow phase's `ContactVisitor`), then
+/// `finish_step` packs them into blocks in colour order; the passes work on the step's
+/// `SolverBodies` (`solver_bodies.h`), and `store_impulses` writes the impulses back to the
+/// contacts (and `load_points` reads them in again after the bounce stages changed them).
+#include "core/body.h"
+#include "core/contact.h"
+#include "core/solver/contact_block.h"
+#include "core/solver/contact_colouring.h"
+#include "core/solver/contact_visitor.h"
+#include "core/solver/solver_body.h"
+#include "core/solver/solver_context.h"
+
+#include <vector>
+
+namespace impulse2d {
+
+/// The wide solver's arrays for one world (reused from step to step: no allocation once warm).
+class WideContactSolver final : public ContactVisitor {
+ public:
+  /// Lanes per block this CPU runs best: 8 with AVX2 (x86-64), else 4.
+  static int widest_lanes();
+
+  /// Starts a step between `bodies` in blocks of `lanes` (4 or 8, 8 only where
+  /// `widest_lanes()` is 8; 0: the widest). `bodies` and `context` are kept by reference until
+  /// `finish_step`.
+  void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes);
+  /// Prepares the step's next contact (as `prepare_contacts` does, if enabled) and colours it;
+  /// called for every contact of the list, in order, between `begin_step` and `finish_step`
+  /// (by the narrow phase).
+  void visit(std::size_t index, Contact& contact) override;
+  /// Packs the step's `contacts`, all visited, into blocks colour by colour.
+  void finish_step(const std::vector<Contact>& contacts);
+  /// Copies each point's accumulated impulses and bounce plan (`velocity_bias`, `bouncing`,
+  /// `waiting`) in, after the bounce stages changed them in the contacts.
+  void load_points(const std::vector<Contact>& contacts);
+  /// Copies each point's accumulated impulses and `friction_at_limit` out to the contacts.
+  void store_impulses(std::vector<Contact>& contacts) const;
+  /// The same in one walk over the list in its order that does other work too: each contact's
+  /// impulses are written back (if it was solved), then `then(contact)` is called on it.
+  template <class Then>
+  void store_impulses(std::vector<Contact>& contacts, Then then) const {
+    if (lanes_ == 8) {
+      store_impulses_in_order<8>(contacts, then);
+    } else {
+      store_impulses_in_order<4>(contacts, then);
+    }
+  }
+
+  /// Applies the accumulated impulses to `bodies` (one state per body slot: warm starting).
+  void warm_start(SolverBody* bodies);
+  /// One soft (`use_bias`) or relax pass over every block, colour by colour, on `bodies`.
+  void solve(const SolverContext& context, bool use_bias, SolverBody* bodies);
+
+  /// True when some contact of this step has restitution > 0: without one (and so in any
+  /// resting pile) the bounce stages change nothing and are skipped.
+  bool has_elastic_contacts() const { return has_elastic_contacts_; }
+  /// Lanes per block of this step (4 or 8).
+  int lanes() const { return lanes_; }
+  /// Colours of this step's contacts (the overflow not counted).
+  int colour_count() const { return colouring_.colour_count(); }
+
+ private:
+  /// A step's blocks of `Lanes` lanes, in their three parts (`contact_block.h`).
+  template <int Lanes>
+  struct BlockStorage {
+    static constexpr int lanes = Lanes;  ///< contacts side by side
+    std::vector<ContactBlock<Lanes>> blocks;       ///< read by every pass
+    std::vector<ContactBlockSolve<Lanes>> solves;  ///< read by both solve passes
+    std::vector<ContactBlockStick<Lanes>> sticks;  ///< read by the biased pass
+    /// The three arrays as the kernels take them.
+    ContactBlockArrays<Lanes> arrays() {
+      return {blocks.data(), solves.data(), sticks.data(), blocks.size()};
+    }
+  };
+
+  template <int Lanes>
+  BlockStorage<Lanes>& storage() {
+    if constexpr (Lanes == 8) {
+      return storage_8_;
+    } else {
+      return storage_4_;
+    }
+  }
+  template <int Lanes>
+  const BlockStorage<Lanes>& storage() const {
+    if constexpr (Lanes == 8) {
+      return storage_8_;
+    } else {
+      return storage_4_;
+    }
+  }
+  template <int Lanes>
+  void pack(const std::vector<Contact>& contacts);
+  template <int Lanes, class Then>
+  void store_impulses_in_order(std::vector<Contact>& contacts, Then then) const;
+
+  int lanes_ = 4;
+  bool has_elastic_contacts_ = false;
+  const std::vector<Body>* bodies_ = nullptr;  // between begin_step and finish_step
+  const SolverContext* context_ = nullptr;     // between begin_step and finish_step
+  ContactColouring colouring_;
+  BlockStorage<4> storage_4_;
+  BlockStorage<8> storage_8_;
+  /// Per lane of the blocks, in order: the index of its contact in the list, -1 when unused.
+  std::vector<std::int32_t> contact_index_;
+  /// Per contact of the list: its lane among all blocks' lanes (block * lanes + lane), -1
+  /// when it is not solved.
+  std::vector<std::int32_t> lane_of_contact_;
+};
+
+template <int Lanes, class Then>
+void WideContactSolver::store_impulses_in_order(std::vector<Contact>& contacts, Then then) const {
+  // The blocks are in colour order, not the list's: each contact's lanes are asked for
+  // `ahead` contacts before they are read.
+  constexpr std::size_t ahead = 8;
+  const BlockStorage<Lanes>& packed = storage<Lanes>();
+  const std::size_t count = contacts.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    if (i + ahead < count && lane_of_contact_[i + ahead] >= 0) {
+      const auto next = static_cast<std::size_t>(lane_of_contact_[i + ahead]);
+      for (const BlockPointImpulse<Lanes>& point : packed.blocks[next / Lanes].points) {
+        __builtin_prefetch(&point.normal_impulse[next % Lanes]);
+        __builtin_prefetch(&point.tangent_impulse[next % Lanes]);
+      }
+      __builtin_prefetch(&packed.solves[next / Lanes].friction_at_limit[next % Lanes]);
+    }
+    Contact& contact = contacts[i];
+    if (lane_of_contact_[i] >= 0) {
+      const auto block = static_cast<std::size_t>(lane_of_contact_[i]) / Lanes;
+      const auto lane = static_cast<std::size_t>(lane_of_contact_[i]) % Lanes;
+      const std::int32_t at_limit = packed.solves[block].friction_at_limit[lane];
+      for (int p = 0; p < contact.point_count; ++p) {
+        ContactPoint& point = contact.points[p];
+        point.normal_impulse = packed.blocks[block].points[p].normal_impulse[lane];
+        point.tangent_impulse = packed.blocks[block].points[p].tangent_impulse[lane];
+        point.friction_at_limit = (at_limit & (1 << p)) != 0;
+      }
+    }
+    then(contact);
+  }
+}
+
+}  // namespace impulse2d

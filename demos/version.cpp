@@ -1,8 +1,0 @@
-/// @file version.cpp
-#include "demos/version.h"
-
-namespace impulse2d::demos {
-
-std::string program_version() { return IMPULSE2D_VERSION; }
-
-}  // namespace impulse2d::demos

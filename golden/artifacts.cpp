@@ -1,0 +1,118 @@
+/// @file artifacts.cpp
+#include "golden/artifacts.h"
+
+#include "golden/compare_json.h"
+#include "golden/diff_images.h"
+#include "golden/error.h"
+#include "golden/file_io.h"
+#include "golden/hex_hash.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+
+namespace impulse2d::golden {
+
+namespace {
+
+using nlohmann::json;
+
+json check_to_json(const GoldenCheck& check, const json& files) {
+  const FailureClass failure_class = classify_failure(check);
+  json drifts = json::array();
+  for (const BodyDrift& drift : check.moved_bodies) {
+    drifts.push_back({{"name", drift.name},
+                      {"distance", drift.distance},
+                      {"rotation", drift.rotation},
+                      {"note", drift.note}});
+  }
+  json noise = nullptr;
+  if (check.noise) {
+    json escapes = json::array();
+    for (const EnvelopeEscape& escape : check.noise->escapes) {
+      escapes.push_back({{"what", escape.what},
+                         {"measured", escape.measured},
+                         {"envelope", escape.envelope},
+                         {"unit", escape.unit}});
+    }
+    noise = {{"within", check.noise->within()},
+             {"compared", check.noise->compared},
+             {"escapes", std::move(escapes)}};
+  }
+  return {{"name", check.name},
+          {"class", failure_class_id(failure_class)},
+          {"class_name", failure_class_name(failure_class)},
+          {"message", failure_message(check)},
+          {"expected_state_hash", check.expected_state_hash
+                                      ? json(to_hex_hash(*check.expected_state_hash))
+                                      : json(nullptr)},
+          {"actual_state_hash", to_hex_hash(check.actual_state_hash)},
+          {"second_render_identical", check.second_render_identical},
+          {"other_process_identical", check.other_process_identical},
+          {"expected_renderer", check.expected_renderer.describe()},
+          {"actual_renderer", check.actual_renderer.describe()},
+          {"moved_bodies", drifts},
+          {"noise", noise},
+          {"comparison", check.comparison ? comparison_to_json(*check.comparison) : json(nullptr)},
+          {"files", files}};
+}
+
+/// <root>/<name>, refusing names that would escape the root.
+std::filesystem::path failure_directory(const std::filesystem::path& root,
+                                        const std::string& name) {
+  const std::filesystem::path relative(name);
+  bool valid = !name.empty() && relative.is_relative();
+  for (const auto& part : relative) {
+    if (part == ".." || part == ".") valid = false;
+  }
+  if (!valid) {
+    throw GoldenError("golden name '" + name +
+                      "' must be a relative path like 'scene/golden' without '.' or '..'");
+  }
+  return root / relative;
+}
+
+}  // namespace
+
+std::filesystem::path artifact_root_from_environment(const std::filesystem::path& fallback) {
+  const char* value = std::getenv("GOLDEN_ARTIFACT_DIR");
+  if (value != nullptr && value[0] != '\0') return std::filesystem::path(value);
+  return fallback;
+}
+
+std::filesystem::path write_failure_artifacts(const std::filesystem::path& root,
+                                              const GoldenCheck& check, const Image& actual,
+                                              const Image* expected,
+                                              const Sidecar* actual_sidecar) {
+  const std::filesystem::path directory = failure_directory(root, check.name);
+  // A previous failure of the same golden may have left files this one would not write.
+  for (const char* stale : {"actual.png", "actual.json", "expected.png", "diff.png",
+                            "heatmap.png", "metrics.json"}) {
+    std::error_code ignored;
+    std::filesystem::remove(directory / stale, ignored);
+  }
+  json files = json::object();
+  auto write_png = [&](const std::string& key, const Image& image) {
+    save_png(directory / (key + ".png"), image);
+    files[key] = key + ".png";
+  };
+  write_png("actual", actual);
+  if (actual_sidecar != nullptr) {
+    write_sidecar(directory / "actual.json", *actual_sidecar);
+    files["actual_sidecar"] = "actual.json";
+  }
+  if (expected != nullptr) {
+    write_png("expected", *expected);
+    if (expected->width == actual.width && expected->height == actual.height) {
+      const int max_channel_delta =
+          check.comparison ? check.comparison->tolerance.max_channel_delta : 0;
+      write_png("diff", diff_overlay(*expected, actual, max_channel_delta));
+      write_png("heatmap", diff_heatmap(*expected, actual));
+    }
+  }
+  write_text_file_atomically(directory / "metrics.json",
+                             check_to_json(check, files).dump(2) + "\n");
+  return directory;
+}
+
+}  // namespace impulse2d::golden

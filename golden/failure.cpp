@@ -1,0 +1,147 @@
+/// @file failure.cpp
+#include "golden/failure.h"
+
+#include "golden/hex_hash.h"
+
+#include <sstream>
+
+namespace impulse2d::golden {
+
+namespace {
+
+/// How many envelope escapes a message names.
+constexpr std::size_t kEscapesNamed = 5;
+
+/// "Image: <comparison>", or why the pixels were not compared.
+std::string image_text(const GoldenCheck& check) {
+  if (check.renderer_baseline_missing || !check.comparison) {
+    return "Image: not compared (no baseline for this renderer, " + check.renderer_baseline + ")";
+  }
+  return "Image: " + check.comparison->message();
+}
+
+/// ". Renderer differs: golden drawn by X, this run by Y" when the fingerprints differ.
+std::string renderer_note(const GoldenCheck& check) {
+  if (check.expected_renderer == check.actual_renderer) return "";
+  return ". Renderer differs: golden drawn by '" + check.expected_renderer.describe() +
+         "', this run by '" + check.actual_renderer.describe() + "'";
+}
+
+}  // namespace
+
+FailureClass classify_failure(const GoldenCheck& check) {
+  if (!check.second_render_identical || !check.other_process_identical) {
+    return FailureClass::Nondeterminism;
+  }
+  if (!check.golden_present) return FailureClass::MissingGolden;
+  if (!check.renderer_baseline_missing) {
+    if (!check.comparison) return FailureClass::MissingGolden;
+    if (check.comparison->outcome == CompareOutcome::SizeMismatch) {
+      return FailureClass::SizeMismatch;
+    }
+  }
+  if (check.expected_state_hash && *check.expected_state_hash != check.actual_state_hash) {
+    if (!check.noise) return FailureClass::SimulationDiverged;
+    return check.noise->within() ? FailureClass::NumericalNoise : FailureClass::BehaviourChanged;
+  }
+  if (check.renderer_baseline_missing) return FailureClass::NoRendererBaseline;
+  if (!check.comparison->passed()) return FailureClass::RasterisationDiffers;
+  return FailureClass::None;
+}
+
+std::string failure_class_name(FailureClass failure_class) {
+  switch (failure_class) {
+    case FailureClass::None: return "passed";
+    case FailureClass::Nondeterminism: return "nondeterminism";
+    case FailureClass::MissingGolden: return "missing golden";
+    case FailureClass::SizeMismatch: return "size mismatch";
+    case FailureClass::SimulationDiverged: return "simulation diverged";
+    case FailureClass::NumericalNoise: return "numerical noise";
+    case FailureClass::BehaviourChanged: return "behaviour changed";
+    case FailureClass::RasterisationDiffers: return "rasterisation differs";
+    case FailureClass::NoRendererBaseline: return "no baseline for this renderer";
+  }
+  return "unknown";
+}
+
+std::string failure_class_id(FailureClass failure_class) {
+  std::string id = failure_class_name(failure_class);
+  for (char& c : id) {
+    if (c == ' ') c = '_';
+  }
+  return id;
+}
+
+std::string failure_message(const GoldenCheck& check) {
+  const FailureClass failure_class = classify_failure(check);
+  std::ostringstream text;
+  text << "golden '" << check.name << "': " << failure_class_name(failure_class) << ": ";
+  switch (failure_class) {
+    case FailureClass::None:
+      text << check.comparison->message();
+      break;
+    case FailureClass::Nondeterminism:
+      if (!check.second_render_identical) {
+        text << "simulating and rendering the same frame twice in one process gave different "
+                "results; tolerance never absorbs this. Look for uninitialised memory, "
+                "unordered containers, thread-count-dependent reductions or time-dependent "
+                "input";
+      } else {
+        text << "the same frame simulated and rendered in two separate processes gave "
+                "different results (each process agrees with itself); tolerance never absorbs "
+                "this and no golden is written from it. Look for values that depend on the "
+                "process: addresses (pointer order or hashes under ASLR), the pid, the clock, "
+                "the environment";
+      }
+      break;
+    case FailureClass::MissingGolden:
+      text << "no golden image exists. The actual image and its sidecar were written to "
+              "the artifact directory; review them and promote with scripts/promote_goldens.sh";
+      break;
+    case FailureClass::SizeMismatch:
+      text << "golden is " << check.comparison->expected_width << "x"
+           << check.comparison->expected_height << ", actual is "
+           << check.comparison->actual_width << "x" << check.comparison->actual_height;
+      break;
+    case FailureClass::SimulationDiverged:
+      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+           << ". Bodies that moved most: " << describe_drifts(check.moved_bodies) << ". "
+           << image_text(check);
+      break;
+    case FailureClass::NumericalNoise:
+      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+           << ", but " << check.noise->describe(kEscapesNamed)
+           << ": a chaotic scene amplified a rounding change (reordered arithmetic, another "
+              "compiler or flag). Review the images and promote. Bodies that moved most: "
+           << describe_drifts(check.moved_bodies) << ". " << image_text(check);
+      break;
+    case FailureClass::BehaviourChanged:
+      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+           << ", and the run left the golden's noise envelope (what rounding-sized perturbations "
+              "do to this scene): "
+           << check.noise->describe(kEscapesNamed)
+           << ". A physics change, not rounding: fix it, or promote only if it was meant. "
+           << image_text(check);
+      break;
+    case FailureClass::NoRendererBaseline:
+      text << "physics checked and matches (state hash " << to_hex_hash(check.actual_state_hash)
+           << "); pixels not compared: the golden was drawn by '"
+           << check.expected_renderer.describe() << "', this run by '"
+           << check.actual_renderer.describe() << "', and there is no baseline for it. Add one "
+           << "(written as " << check.renderer_baseline
+           << ") with GOLDEN_UPDATE=missing ctest -R GoldenScenes (built-in goldens) or "
+              "impulse2d golden update <scene file>";
+      break;
+    case FailureClass::RasterisationDiffers:
+      text << "physics state matches (hash " << to_hex_hash(check.actual_state_hash)
+           << ") but the image does not: " << check.comparison->message()
+           << renderer_note(check);
+      break;
+  }
+  return text.str();
+}
+
+}  // namespace impulse2d::golden

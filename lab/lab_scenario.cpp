@@ -1,0 +1,132 @@
+/// @file lab_scenario.cpp
+#include "lab/lab_scenario.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene/json_cursor.h"
+#include "scene/scene_loader.h"
+#include "scene/usage_error.h"
+
+namespace impulse2d::lab {
+namespace {
+
+/// Creation index of the scene body called `name`.
+int body_index(const demos::JsonCursor& reference, const nlohmann::json& scene_bodies) {
+  const std::string name = reference.string();
+  for (std::size_t i = 0; i < scene_bodies.size(); ++i) {
+    const nlohmann::json& body = scene_bodies[i];
+    if (body.is_object() && body.contains("name") && body["name"] == name) {
+      return static_cast<int>(i);
+    }
+  }
+  reference.fail("no body named \"" + name + "\" in scene.bodies");
+}
+
+MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scene_bodies) {
+  node.allow_only({"kind", "body", "bodies", "surface", "rolls", "ground", "apexes",
+                   "rest_height", "unit", "threshold", "meaning"});
+  MetricSpec spec;
+  spec.kind = node.field("kind").choice<MetricKind>({{"free_flight", MetricKind::FreeFlight},
+                                                     {"slope_motion", MetricKind::SlopeMotion},
+                                                     {"bounce_apexes", MetricKind::BounceApexes},
+                                                     {"collision_1d", MetricKind::Collision1d},
+                                                     {"cradle", MetricKind::Cradle},
+                                                     {"energy", MetricKind::Energy},
+                                                     {"rest", MetricKind::Rest},
+                                                     {"tunnel", MetricKind::Tunnel},
+                                                     {"peak_speed", MetricKind::PeakSpeed}});
+  if (auto field = node.optional_field("body")) spec.bodies.push_back(body_index(*field, scene_bodies));
+  if (auto field = node.optional_field("bodies")) {
+    for (std::size_t i = 0; i < field->size(); ++i)
+      spec.bodies.push_back(body_index(field->element(i), scene_bodies));
+  }
+  if (auto field = node.optional_field("surface")) spec.surface = body_index(*field, scene_bodies);
+  if (auto field = node.optional_field("rolls")) spec.rolls = field->boolean();
+  if (auto field = node.optional_field("ground")) spec.bodies.push_back(body_index(*field, scene_bodies));
+  if (auto field = node.optional_field("apexes"))
+    spec.apex_count = static_cast<int>(field->integer(1, 100));
+  if (auto field = node.optional_field("rest_height")) spec.rest_height = field->real();
+  spec.unit = node.field("unit").string();
+  spec.threshold = node.field("threshold").positive();
+  spec.meaning = node.field("meaning").string();
+
+  const auto need = [&](std::size_t count, const char* what) {
+    if (spec.bodies.size() != count) node.fail(std::string("metric needs ") + what);
+  };
+  switch (spec.kind) {
+    case MetricKind::FreeFlight: need(1, "\"body\""); break;
+    case MetricKind::SlopeMotion:
+      need(1, "\"body\"");
+      if (spec.surface < 0) node.fail("metric needs \"surface\"");
+      break;
+    case MetricKind::BounceApexes: need(2, "\"body\" and \"ground\""); break;
+    case MetricKind::Collision1d: need(2, "\"bodies\" with two names"); break;
+    case MetricKind::Cradle:
+      if (spec.bodies.size() < 2) node.fail("metric needs \"bodies\": the row, at least two");
+      break;
+    case MetricKind::Tunnel:
+      need(1, "\"body\"");
+      if (spec.surface < 0) node.fail("metric needs \"surface\" (the wall)");
+      break;
+    case MetricKind::Energy:
+    case MetricKind::Rest:
+    case MetricKind::PeakSpeed: break;
+  }
+  return spec;
+}
+
+}  // namespace
+
+LabScenario load_lab_scenario(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw demos::UsageError(path + ": cannot read the scenario file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parse_lab_scenario(text.str(), path);
+}
+
+LabScenario parse_lab_scenario(const std::string& text, const std::string& path) {
+  const nlohmann::json document = demos::parse_json_document(text, path);
+  const demos::JsonCursor root(document, path);
+  root.expect_object();
+  root.allow_only({"description", "answer", "duration", "metric", "scene"});
+
+  LabScenario scenario;
+  scenario.source = path;
+  scenario.name = std::filesystem::path(path).stem().string();
+  scenario.description = root.field("description").string();
+  scenario.answer = root.field("answer").string();
+  scenario.duration = root.field("duration").positive();
+  const demos::JsonCursor scene = root.field("scene");
+  scene.expect_object();
+  const nlohmann::json bodies = scene.value().value("bodies", nlohmann::json::array());
+  scenario.metric = read_metric(root.field("metric"), bodies);
+  // The scene loader names the file in its messages; the embedded scene is reported as
+  // "<file> (scene)" so paths read "<file> (scene): bodies[2].shape...".
+  scenario.scene = demos::parse_scene(scene.value().dump(), path + " (scene)");
+  scenario.scene.name = scenario.name;
+  scenario.scene.source = path;
+  return scenario;
+}
+
+std::vector<LabScenario> load_lab_scenarios(const std::string& directory) {
+  std::error_code error;
+  std::vector<std::string> paths;
+  for (std::filesystem::directory_iterator it(directory, error), end; !error && it != end;
+       it.increment(error)) {
+    if (it->path().extension() == ".json") paths.push_back(it->path().string());
+  }
+  if (error) throw demos::UsageError(directory + ": cannot read the scenario directory: " + error.message());
+  if (paths.empty()) throw demos::UsageError(directory + ": no scenario files (*.json)");
+  std::sort(paths.begin(), paths.end());
+  std::vector<LabScenario> scenarios;
+  for (const std::string& path : paths) scenarios.push_back(load_lab_scenario(path));
+  return scenarios;
+}
+
+std::string default_scenario_directory() { return std::string(IMPULSE2D_LAB_DIR) + "/scenarios"; }
+
+}  // namespace impulse2d::lab

@@ -1,0 +1,216 @@
+/// @file scene_run.cpp
+#include "scene/scene_run.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "scene/interrupt.h"
+#include "scene/usage_error.h"
+
+namespace impulse2d::demos {
+namespace {
+
+WorldSettings settings_with_model(const Scene& scene) {
+  WorldSettings settings = scene.settings;
+  apply_model(scene.model, settings);
+  return settings;
+}
+
+}  // namespace
+
+SceneRun::SceneRun(const Scene& scene, const Params& params)
+    : scene_(scene), params_(params), world_(settings_with_model(scene)) {
+  if (scene.build) scene.build(world_, params_);
+  verify_model();
+  if (scene.script) script_ = scene.script(params_);
+
+  for (const SceneEvent& event : scene.events) events_.push_back(&event);
+  std::stable_sort(events_.begin(), events_.end(),
+                   [](const SceneEvent* a, const SceneEvent* b) { return a->step < b->step; });
+
+  created_ = world_.body_ids();
+  const std::vector<std::string> buttons =
+      script_ ? script_->buttons() : std::vector<std::string>{};
+  int bodies_so_far = static_cast<int>(created_.size());
+  for (const SceneEvent* event : events_) {
+    const bool pushes = event->kind == SceneEventKind::Impulse || event->kind == SceneEventKind::Force;
+    const bool names_body = pushes || event->kind == SceneEventKind::Remove;
+    if (names_body && (event->body < 0 || event->body >= bodies_so_far)) {
+      throw UsageError(scene.source + ": " + event->origin + ": body " +
+                       std::to_string(event->body) + " does not exist at step " +
+                       std::to_string(event->step) + " (" + std::to_string(bodies_so_far) +
+                       " bodies created by then)");
+    }
+    // The builder's bodies exist now: one an impulse or a force cannot move is an error before
+    // the run (a scene file's are rejected when it loads; a spawned one, when the event applies).
+    if (pushes && static_cast<std::size_t>(event->body) < created_.size()) {
+      check_movable(*event, world_.body(created_[static_cast<std::size_t>(event->body)]).type);
+    }
+    if (event->kind == SceneEventKind::Spawn) ++bodies_so_far;
+    if (event->kind == SceneEventKind::Button &&
+        std::find(buttons.begin(), buttons.end(), event->button) == buttons.end()) {
+      std::string known;
+      for (const std::string& name : buttons) known += (known.empty() ? "" : ", ") + name;
+      throw UsageError(scene.source + ": " + event->origin + ": scene " + scene.name +
+                       " has no button '" + event->button +
+                       "' (its buttons: " + (known.empty() ? std::string("none") : known) + ")");
+    }
+  }
+  bodies_in_run_ = bodies_so_far;
+}
+
+void SceneRun::verify_model() const {
+  try {
+    verify_shape_kinds(scene_.model, world_, scene_.name);
+  } catch (const UsageError& error) {
+    if (scene_.source == "built-in") throw;
+    throw UsageError(scene_.source + ": " + error.what() + " (at step " +
+                     std::to_string(world_.step_count()) + ")");
+  }
+}
+
+BodyId SceneRun::event_body(const SceneEvent& event) const {
+  const BodyId id = created_[static_cast<std::size_t>(event.body)];
+  if (!world_.is_valid(id)) {
+    throw UsageError(scene_.source + ": " + event.origin + ": body " + std::to_string(event.body) +
+                     " was already removed before step " + std::to_string(event.step));
+  }
+  return id;
+}
+
+void SceneRun::check_movable(const SceneEvent& event, BodyType type) const {
+  if (type == BodyType::Dynamic) return;
+  std::string label = "body " + std::to_string(event.body);
+  const auto name = scene_.body_names.find(event.body);
+  if (name != scene_.body_names.end()) label += " (\"" + name->second + "\")";
+  throw UsageError(scene_.source + ": " + event.origin + ": " +
+                   unmovable_body_reason(label, type, event.kind));
+}
+
+void SceneRun::apply_event(const SceneEvent& event) {
+  switch (event.kind) {
+    case SceneEventKind::Impulse: {
+      const BodyId id = event_body(event);
+      check_movable(event, world_.body(id).type);
+      const vec2 point = event.point ? *event.point : world_.body(id).transform.position;
+      world_.apply_linear_impulse(id, event.impulse, point);
+      if (event.angular_impulse != 0.0f) world_.apply_angular_impulse(id, event.angular_impulse);
+      break;
+    }
+    case SceneEventKind::Force: {
+      const BodyId id = event_body(event);
+      check_movable(event, world_.body(id).type);
+      // Where it acts, in the body's frame: it moves with the body for the whole window.
+      const Transform& transform = world_.body(id).transform;
+      const vec2 local_point =
+          event.point ? transform.apply_inverse(*event.point) : vec2(0.0f, 0.0f);
+      forces_.push_back(ActiveForce{&event, event.step + event.steps, local_point});
+      break;
+    }
+    case SceneEventKind::Spawn:
+      created_.push_back(world_.create_body(event.spawn.def, event.spawn.shape));
+      break;
+    case SceneEventKind::Remove:
+      world_.remove_body(event_body(event));
+      break;
+    case SceneEventKind::Button:
+      script_->button(world_, event.button, event.pressed);
+      break;
+  }
+}
+
+void SceneRun::step() {
+  const std::int64_t step = world_.step_count();
+  bool changed = false;
+  while (next_event_ < events_.size() && events_[next_event_]->step == step) {
+    apply_event(*events_[next_event_++]);
+    changed = true;
+  }
+  apply_forces(step);
+  if (script_) {
+    script_->before_step(world_, step);
+    changed = true;
+  }
+  if (changed) verify_model();
+  check_interrupt();
+  world_.step();
+  for (const BodyId id : world_.diverged_bodies()) {
+    const auto found = std::find(created_.begin(), created_.end(), id);
+    const int index = found == created_.end() ? -1 : static_cast<int>(found - created_.begin());
+    const auto name = scene_.body_names.find(index);
+    divergences_.push_back(Divergence{world_.step_count(), index,
+                                      name == scene_.body_names.end() ? "" : name->second});
+    if (strict_) {
+      throw std::runtime_error(describe_divergence(scene_, divergences_.back()) +
+                               " (--strict makes this an error)");
+    }
+  }
+}
+
+void SceneRun::apply_forces(std::int64_t step) {
+  // Forces are cleared after every world step, so each force event's is applied again before
+  // each step of its window [step, step + steps); finished ones are dropped.
+  forces_.erase(std::remove_if(forces_.begin(), forces_.end(),
+                               [step](const ActiveForce& force) { return step >= force.end; }),
+                forces_.end());
+  for (const ActiveForce& force : forces_) {
+    const SceneEvent& event = *force.event;
+    const BodyId id = created_[static_cast<std::size_t>(event.body)];
+    if (!world_.is_valid(id)) {
+      throw UsageError(scene_.source + ": " + event.origin + ": body " +
+                       std::to_string(event.body) + " was removed before step " +
+                       std::to_string(step) + ", within the force's steps " +
+                       std::to_string(event.step) + ".." + std::to_string(force.end - 1));
+    }
+    const vec2 point = world_.body(id).transform.apply(force.local_point);
+    world_.apply_force(id, event.force, point);
+    if (event.torque != 0.0f) world_.apply_torque(id, event.torque);
+  }
+}
+
+std::string describe_divergence(const Scene& scene, const Divergence& divergence) {
+  return scene.source + ": body " + std::to_string(divergence.body) +
+         (divergence.name.empty() ? "" : " (\"" + divergence.name + "\")") + " of scene " +
+         scene.name + " diverged in step " + std::to_string(divergence.step) +
+         " (its state became non-finite; the world restored its previous state and stopped it)";
+}
+
+std::optional<std::uint32_t> SceneRun::slot_of(int creation_index) const {
+  if (creation_index < 0 || static_cast<std::size_t>(creation_index) >= created_.size()) return std::nullopt;
+  const BodyId id = created_[static_cast<std::size_t>(creation_index)];
+  if (!world_.is_valid(id)) return std::nullopt;
+  return id.index;
+}
+
+std::function<std::string(std::uint32_t slot)> SceneRun::body_labels() const {
+  return [this](std::uint32_t slot) {
+    for (const auto& [index, name] : scene_.body_names) {
+      const std::optional<std::uint32_t> found = slot_of(index);
+      if (found && *found == slot) return name;
+    }
+    return std::string();
+  };
+}
+
+std::optional<vec2> SceneRun::followed_position() const {
+  const CameraSpec& camera = scene_.view.camera;
+  if (camera.mode != CameraSpec::Mode::Follow) return std::nullopt;
+  std::optional<BodyId> body = script_ ? script_->followed_body() : std::nullopt;
+  if (!body && camera.follow_body >= 0 &&
+      static_cast<std::size_t>(camera.follow_body) < created_.size()) {
+    body = created_[static_cast<std::size_t>(camera.follow_body)];
+  }
+  if (!body || !world_.is_valid(*body)) return std::nullopt;
+  return world_.body(*body).transform.position;
+}
+
+std::function<void(DebugDraw&, const DebugDrawOptions&)> SceneRun::script_overlays() const {
+  return [this](DebugDraw& draw, const DebugDrawOptions& options) {
+    if (script_ && (options.flags & ~std::uint32_t{draw_shapes}) != 0) {
+      script_->draw(world_, draw, options);
+    }
+  };
+}
+
+}  // namespace impulse2d::demos

@@ -1,0 +1,198 @@
+/// @file test_golden_command.cpp
+/// `impulse2d golden` on a copy of examples/golden_project, as a user's CI runs it: the
+/// committed goldens pass; a physics change fails as *behaviour changed*, a rounding-sized
+/// change of one body's position as *numerical noise*, a pixel change with the physics
+/// untouched as *rasterisation differs*, a missing golden as *missing golden* (exit 1 each,
+/// JUnit failure type named); update writes it; bad input exits 2 with nothing written;
+/// CI refuses update.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/golden/test_golden_temp_dir.h"
+#include "golden/file_io.h"
+#include "golden/image.h"
+
+namespace impulse2d::golden {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct Result {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+class GoldenCommand : public ::testing::Test {
+ protected:
+  GoldenCommand() {
+    fs::copy(IMPULSE2D_EXAMPLE_PROJECT, project_, fs::copy_options::recursive);
+  }
+
+  /// Runs `impulse2d golden <arguments>` in the project copy (`environment` prefixed).
+  Result run(const std::string& arguments, const std::string& environment = "CI=") const {
+    const fs::path out = temp_.path() / "stdout.txt";
+    const fs::path err = temp_.path() / "stderr.txt";
+    const std::string command = "cd '" + project_.string() + "' && " + environment + " '" +
+                                IMPULSE2D_CLI + "' golden " + arguments + " > '" + out.string() +
+                                "' 2> '" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    Result result;
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_text_file(out);
+    result.err = read_text_file(err);
+    return result;
+  }
+
+  Result check(const std::string& extra = "") const {
+    return run("check scenes/dominoes.json scenes/cannonball.json --junit junit.xml " + extra);
+  }
+
+  /// Edits the scene file `name` (in scenes/) as JSON.
+  void edit_scene(const std::string& name, const std::function<void(json&)>& change) const {
+    const fs::path file = project_ / "scenes" / name;
+    json scene = json::parse(read_text_file(file));
+    change(scene);
+    write_text_file_atomically(file, scene.dump(2));
+  }
+
+  std::string junit() const { return read_text_file(project_ / "junit.xml"); }
+
+  testing::TempDir temp_;
+  fs::path project_ = temp_.path() / "project";
+};
+
+TEST_F(GoldenCommand, CommittedGoldensPassWithJUnitAndReport) {
+  const Result result = check("--repeat 2");
+  EXPECT_EQ(result.status, 0) << result.out << result.err;
+  EXPECT_NE(result.out.find("6 of 6 goldens match"), std::string::npos) << result.out;
+  EXPECT_NE(junit().find("tests=\"6\" failures=\"0\""), std::string::npos) << junit();
+  EXPECT_TRUE(fs::exists(project_ / "golden_artifacts" / "index.html"));
+}
+
+TEST_F(GoldenCommand, PhysicsChangeIsBehaviourChanged) {
+  edit_scene("cannonball.json", [](json& scene) {
+    scene["bodies"][1]["linear_damping"] = 0.315;  // 5% more damping
+  });
+  const Result result = check();
+  EXPECT_EQ(result.status, 1) << result.out << result.err;
+  EXPECT_NE(result.out.find("golden 'cannonball/flight': behaviour changed"), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("3 of 6 goldens match"), std::string::npos) << result.out;
+  EXPECT_NE(junit().find("type=\"behaviour_changed\""), std::string::npos) << junit();
+}
+
+TEST_F(GoldenCommand, RoundingSizedChangeIsNumericalNoise) {
+  edit_scene("dominoes.json", [](json& scene) {
+    // Domino d3's x moved by one float ulp (-1.8 -> the next float towards zero).
+    scene["bodies"][4]["position"][0] = std::nextafter(-1.8f, 0.0f);
+  });
+  const Result result = run("check scenes/dominoes.json --junit junit.xml");
+  EXPECT_EQ(result.status, 1) << result.out << result.err;
+  EXPECT_NE(result.out.find("golden 'dominoes/down': numerical noise"), std::string::npos)
+      << result.out;
+  EXPECT_EQ(result.out.find("behaviour changed"), std::string::npos) << result.out;
+}
+
+TEST_F(GoldenCommand, PixelChangeWithTheSamePhysicsIsRasterisation) {
+  const fs::path golden = project_ / "scenes" / "goldens" / "dominoes" / "start.png";
+  Image image = load_png(golden);
+  Rgba pixel = get_pixel(image, 300, 150);
+  pixel.r = static_cast<std::uint8_t>(pixel.r ^ 0x40);
+  set_pixel(image, 300, 150, pixel);
+  save_png(golden, image);
+  const Result result = check();
+  EXPECT_EQ(result.status, 1) << result.out << result.err;
+  EXPECT_NE(result.out.find("golden 'dominoes/start': rasterisation differs"), std::string::npos)
+      << result.out;
+  EXPECT_NE(junit().find("type=\"rasterisation_differs\""), std::string::npos) << junit();
+}
+
+TEST_F(GoldenCommand, MissingGoldenFailsAndUpdateWritesIt) {
+  const fs::path golden = project_ / "scenes" / "goldens" / "cannonball" / "rest";
+  fs::remove(golden.string() + ".png");
+  fs::remove(golden.string() + ".json");
+  const Result missing = check();
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.out.find("golden 'cannonball/rest': missing golden"), std::string::npos)
+      << missing.out;
+  const Result refused = run("update scenes/cannonball.json", "CI=yes");
+  EXPECT_EQ(refused.status, 2) << refused.out << refused.err;
+  EXPECT_NE(refused.err.find("CI never writes its own goldens"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(golden.string() + ".png"));
+  const Result update = run("update scenes/cannonball.json");
+  EXPECT_EQ(update.status, 0) << update.out << update.err;
+  EXPECT_NE(update.out.find("WROTE cannonball/rest"), std::string::npos) << update.out;
+  EXPECT_EQ(check().status, 0);
+}
+
+TEST_F(GoldenCommand, AnotherRendererChecksThePhysicsUntilItHasItsOwnBaseline) {
+  const std::string softpipe = "CI= GALLIUM_DRIVER=softpipe";
+  const fs::path goldens = project_ / "scenes" / "goldens" / "dominoes";
+  const std::string primary = read_text_file(goldens / "start.png");
+  const Result physics_only = run("check scenes/dominoes.json --junit junit.xml", softpipe);
+  EXPECT_EQ(physics_only.status, 0) << physics_only.out << physics_only.err;
+  EXPECT_NE(physics_only.out.find("skip golden 'dominoes/start': no baseline for this renderer: "
+                                  "physics checked and matches"),
+            std::string::npos)
+      << physics_only.out;
+  EXPECT_NE(physics_only.out.find("impulse2d golden update"), std::string::npos);
+  EXPECT_NE(physics_only.out.find("(3 by their physics only"), std::string::npos);
+  EXPECT_NE(junit().find("skipped=\"3\""), std::string::npos) << junit();
+
+  // The physics is still checked on that renderer.
+  const fs::path scene = project_ / "scenes" / "dominoes.json";
+  const std::string original_scene = read_text_file(scene);
+  edit_scene("dominoes.json", [](json& file) { file["events"][0]["impulse"][0] = 0.42; });
+  const Result changed = run("check scenes/dominoes.json", softpipe);
+  EXPECT_EQ(changed.status, 1) << changed.out;
+  EXPECT_NE(changed.out.find("golden 'dominoes/falling': behaviour changed"), std::string::npos)
+      << changed.out;
+  EXPECT_NE(changed.out.find("Image: not compared (no baseline for this renderer"),
+            std::string::npos)
+      << changed.out;
+  write_text_file_atomically(scene, original_scene);
+
+  // update adds the renderer's baseline beside the golden, which stays as it was.
+  const Result update = run("update scenes/dominoes.json", softpipe);
+  EXPECT_EQ(update.status, 0) << update.out << update.err;
+  EXPECT_NE(update.out.find("WROTE dominoes/start"), std::string::npos) << update.out;
+  EXPECT_EQ(read_text_file(goldens / "start.png"), primary);
+  int baselines = 0;
+  for (const auto& entry : fs::directory_iterator(goldens)) {
+    baselines += entry.path().filename().string().rfind("start@softpipe-", 0) == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(baselines, 2) << "start@softpipe-<key>.png and its .json";
+  const Result pixels = run("check scenes/dominoes.json", softpipe);
+  EXPECT_EQ(pixels.status, 0) << pixels.out;
+  EXPECT_NE(pixels.out.find("ok   dominoes/start"), std::string::npos) << pixels.out;
+  EXPECT_EQ(check().status, 0) << "the default renderer still uses the golden itself";
+}
+
+TEST_F(GoldenCommand, BadBlockIsAnInputErrorWithNothingWritten) {
+  edit_scene("dominoes.json", [](json& scene) { scene["golden"]["frames"][1]["step"] = -3; });
+  const Result result = check();
+  EXPECT_EQ(result.status, 2) << result.out << result.err;
+  EXPECT_NE(result.err.find("scenes/dominoes.json: field 'golden.frames[1].step'"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(project_ / "golden_artifacts"));
+  EXPECT_FALSE(fs::exists(project_ / "junit.xml"));
+}
+
+TEST_F(GoldenCommand, ReportDirectoryOfSomethingElseIsNotEmptied) {
+  fs::create_directories(project_ / "mine");
+  write_text_file_atomically(project_ / "mine" / "notes.txt", "keep");
+  const Result result = check("--report mine");
+  EXPECT_EQ(result.status, 2) << result.out << result.err;
+  EXPECT_TRUE(fs::exists(project_ / "mine" / "notes.txt"));
+}
+
+}  // namespace
+}  // namespace impulse2d::golden

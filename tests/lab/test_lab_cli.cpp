@@ -1,0 +1,91 @@
+// `impulse2d lab`, `lab merge` and `tune` as subprocesses: a --quick run writes its CSV and
+// charts, two shards merged equal one run's configurations, and bad input exits 2 with a message
+// and leaves no file behind.
+#include "lab/lab_result.h"
+#include "tests/support/cli_test_support.h"
+
+namespace {
+
+using cli_test::read_file;
+using cli_test::Result;
+namespace fs = std::filesystem;
+
+/// The CLI fixture plus the lab's CSV read back.
+class LabCliTest : public cli_test::CliTest {
+ protected:
+  std::vector<impulse2d::lab::LabResult> csv(const std::string& name) const {
+    return impulse2d::lab::parse_csv(read_file(dir_ / name), name);
+  }
+};
+
+const char* const quick_subset =
+    "lab --quick --only projectile,elastic_collision,stack_10 --no-stability --repeats 1";
+
+TEST_F(LabCliTest, QuickRunWritesCsvAndOneChartPerScenario) {
+  const Result result = run(std::string(quick_subset) + " --out lab");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const auto rows = csv("lab/lab.csv");
+  EXPECT_GE(rows.size(), 3u * 19u);
+  int recommended = 0;
+  for (const auto& row : rows) recommended += row.recommended ? 1 : 0;
+  EXPECT_EQ(recommended, 3);  // every one of these scenarios has a passing method
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    for (const char* name : {"projectile", "elastic_collision", "stack_10"}) {
+      EXPECT_TRUE(fs::exists(dir_ / "lab" / "charts" / (std::string(name) + ".png"))) << name;
+    }
+  }
+  for (const auto& entry : fs::recursive_directory_iterator(dir_ / "lab")) {
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+  }
+}
+
+TEST_F(LabCliTest, TwoShardsMergedCoverEveryConfigurationOnce) {
+  ASSERT_EQ(run(std::string(quick_subset) + " --shard 1/2 --out a").status, 0);
+  ASSERT_EQ(run(std::string(quick_subset) + " --shard 2/2 --out b").status, 0);
+  ASSERT_EQ(run(std::string(quick_subset) + " --no-charts --out whole").status, 0);
+  const Result merged =
+      run("lab merge a/lab_shard_1_of_2.csv b/lab_shard_2_of_2.csv --no-charts --out merged");
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  const auto joined = csv("merged/lab.csv");
+  const auto whole = csv("whole/lab.csv");
+  ASSERT_EQ(joined.size(), whole.size());
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(joined[i].job, whole[i].job);
+    EXPECT_EQ(joined[i].scenario, whole[i].scenario);
+    EXPECT_EQ(joined[i].error, whole[i].error);  // errors are deterministic; only times differ
+  }
+  const Result twice = run("lab merge a/lab_shard_1_of_2.csv a/lab_shard_1_of_2.csv --out again");
+  EXPECT_EQ(twice.status, 2);
+  EXPECT_NE(twice.err.find("appears twice"), std::string::npos) << twice.err;
+  EXPECT_FALSE(fs::exists(dir_ / "again"));
+}
+
+TEST_F(LabCliTest, BadInputExitsTwoWithAMessageAndWritesNothing) {
+  const Result shard = run("lab --shard 3/2 --out out");
+  EXPECT_EQ(shard.status, 2);
+  EXPECT_NE(shard.err.find("--shard '3/2'"), std::string::npos) << shard.err;
+  const Result only = run("lab --only nosuch --out out");
+  EXPECT_EQ(only.status, 2);
+  EXPECT_NE(only.err.find("--only nosuch: no such scenario"), std::string::npos) << only.err;
+  const Result tune = run("tune pyramid --max-error -1");
+  EXPECT_EQ(tune.status, 2);
+  EXPECT_NE(tune.err.find("--max-error must be > 0"), std::string::npos) << tune.err;
+  const Result metric = run("tune pyramid --max-error 0.1 --metric nope");
+  EXPECT_EQ(metric.status, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(LabCliTest, TunePrintsJsonSettingsThatTheSceneLoaderAccepts) {
+  const Result result = run("tune pyramid --param rows=6 --max-error 0.05 --duration 3 --quick --repeats 1");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const std::size_t open = result.out.find("{\n\"settings\"");
+  ASSERT_NE(open, std::string::npos) << result.out;
+  // Paste the printed settings into a scene file and load it.
+  std::string scene = result.out.substr(open);
+  scene.insert(scene.rfind('}'), R"(, "bodies": [{"shape": {"type": "box", "half_extents": [1, 1]}, "position": [0, 0]}])");
+  std::ofstream(dir_ / "tuned.json") << scene;
+  const Result trace = run("trace tuned.json --steps 2");
+  EXPECT_EQ(trace.status, 0) << trace.err << scene;
+}
+
+}  // namespace

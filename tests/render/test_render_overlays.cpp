@@ -1,0 +1,297 @@
+// Overlays that read at any size: contact arrows cut at their maximum length with a break
+// mark, normals and impulses side by side, penetration bars visible at resting depths, text
+// and lines scaled with the frame, and a legend that never covers the HUD (320x240 .. 4K).
+#include "render/contact_overlay.h"
+#include "render/easy_font.h"
+#include "render/frame_renderer.h"
+#include "render/frame_scale.h"
+#include "render/hud.h"
+#include "render/hud_layout.h"
+#include "render/island_overlay.h"
+#include "tests/support/test_render_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include <string>
+#include <vector>
+
+using namespace impulse2d;
+using namespace impulse2d::render;
+namespace support = impulse2d::render::testing;
+
+namespace {
+
+constexpr Color kArrow{0.8f, 0.3f, 0.1f, 1.0f};
+constexpr Color kWhite{1.0f, 1.0f, 1.0f, 1.0f};
+
+// Rows of column `column` that are not the white background.
+int inked_rows(const Frame& frame, int column) {
+  int count = 0;
+  for (int y = 0; y < frame.height; ++y) count += frame.pixel(column, y) != support::to_pixel(kWhite) ? 1 : 0;
+  return count;
+}
+
+// The rightmost inked column of row `row`, -1 when none.
+int last_inked_column(const Frame& frame, int row) {
+  int last = -1;
+  for (int x = 0; x < frame.width; ++x) {
+    if (frame.pixel(x, row) != support::to_pixel(kWhite)) last = x;
+  }
+  return last;
+}
+
+// Every HUD line a frame can have: long scene name, big counts, the settings and timings lines.
+std::vector<std::string> worst_hud_lines() {
+  HudInfo info = support::hud("random_polygons - 5 kinds, 40 bodies", 99999);
+  info.extra_lines = {"accumulated  dt 0.01667 s x1  iterations 16/3  warm on  sleep on",
+                      "ms: broad 0.12 narrow 0.34 solve 1.20 integ 0.05 pos 0.30 = 2.01"};
+  HudCounts counts;
+  counts.simulated_time = 999.999;
+  counts.body_count = 1000;
+  counts.contact_count = 2000;
+  counts.contact_point_count = 4000;
+  return hud_lines(info, counts);
+}
+
+}  // namespace
+
+TEST(RenderOverlays, FrameScaleGrowsWithTheShorterSide) {
+  EXPECT_EQ(frame_scale(320, 240), 1);
+  EXPECT_EQ(frame_scale(800, 600), 1);
+  EXPECT_EQ(frame_scale(1920, 1080), 2);
+  EXPECT_EQ(frame_scale(4000, 3000), 6);
+  EXPECT_EQ(frame_scale(16, 16), 1);
+}
+
+TEST(RenderOverlays, LongArrowIsCutAtItsMaximumWithABreakMark) {
+  FrameRenderer renderer(400, 100);
+  const Camera camera = Camera::centered(vec2(0.0f), 10.0f, 400, 100);  // x = -20 m at column 0
+  Frame cut;
+  bool was_cut = false;
+  renderer.render_primitives(camera, kWhite, [&](PrimitiveRenderer& draw) {
+    was_cut = draw_clamped_arrow(draw, vec2(-15.0f, 0.0f), vec2(15.0f, 0.0f), kArrow, 100.0f);
+  }, cut);
+  EXPECT_TRUE(was_cut);
+  // The 300-pixel arrow starts at column 50 and stops at 150 (100 px), not at 350.
+  const int tip = last_inked_column(cut, 50);
+  EXPECT_GE(tip, 148);
+  EXPECT_LE(tip, 151);
+  // The break mark: strokes across the shaft around column 50 + 60 = 110 reach well above it.
+  EXPECT_GT(inked_rows(cut, 110), inked_rows(cut, 80) + 4);
+
+  Frame short_arrow;
+  renderer.render_primitives(camera, kWhite, [&](PrimitiveRenderer& draw) {
+    was_cut = draw_clamped_arrow(draw, vec2(-15.0f, 0.0f), vec2(-10.0f, 0.0f), kArrow, 100.0f);
+  }, short_arrow);
+  EXPECT_FALSE(was_cut);
+  const int short_tip = last_inked_column(short_arrow, 50);
+  EXPECT_GE(short_tip, 98);
+  EXPECT_LE(short_tip, 101);
+}
+
+TEST(RenderOverlays, LinesAndTextGrowWithTheFrame) {
+  // The same 1-metre-wide segment (world) at scale 1 and at scale 4 (1920x1920).
+  const auto thickness = [](int side) {
+    FrameRenderer renderer(side, side);
+    const Camera camera = Camera::centered(vec2(0.0f), static_cast<float>(side) / 10.0f, side, side);
+    Frame frame;
+    renderer.render_primitives(camera, kWhite, [&](PrimitiveRenderer& draw) {
+      draw.draw_segment(vec2(-4.0f, 0.1f), vec2(4.0f, 0.1f), kArrow);
+    }, frame);
+    return inked_rows(frame, side / 2);
+  };
+  const int small = thickness(480);
+  const int large = thickness(1920);
+  EXPECT_GE(small, 2);
+  EXPECT_GE(large, 4 * small - 2);
+  // Text: the HUD panel of a 4000x3000 frame is 6 times that of a 320x240 one.
+  const std::vector<std::string> lines = {"frame 00001", "t = 0.000 s"};
+  const HudLayout small_hud = layout_hud(320, lines, {}, frame_scale(320, 240));
+  const HudLayout large_hud = layout_hud(4000, lines, {}, frame_scale(4000, 3000));
+  EXPECT_FLOAT_EQ(large_hud.hud.height, 6.0f * small_hud.hud.height);
+}
+
+TEST(RenderOverlays, LegendNeverCoversTheHudAt320x240AndLarger) {
+  DebugDrawOptions options;
+  options.flags = draw_all;
+  options.penetration_scale = 10.0f;
+  const std::vector<std::string> lines = worst_hud_lines();
+  const std::vector<std::pair<int, int>> sizes = {{320, 240}, {400, 300}, {640, 480}, {800, 600},
+                                                  {1024, 768}, {1920, 1080}, {3840, 2160}, {4000, 3000}};
+  for (const auto& [width, height] : sizes) {
+    const int scale = frame_scale(width, height);
+    const Camera camera = Camera::centered(vec2(0.0f), 40.0f, width, height);
+    for (const bool trails : {false, true}) {
+      const std::vector<LegendEntry> legend =
+          legend_entries(options, camera, trails, Color{}, 120.0f * static_cast<float>(scale),
+                         8.0f * static_cast<float>(scale));
+      for (std::size_t hud_lines = 2; hud_lines <= lines.size(); ++hud_lines) {
+        const std::vector<std::string> shown(lines.begin(), lines.begin() + static_cast<long>(hud_lines));
+        const HudLayout layout = layout_hud(width, shown, legend, scale);
+        const std::string where = std::to_string(width) + "x" + std::to_string(height) + " with " +
+                                  std::to_string(hud_lines) + " HUD lines";
+        EXPECT_FALSE(layout.hud.empty()) << where;
+        EXPECT_FALSE(layout.legend.empty()) << where;
+        EXPECT_FALSE(layout.hud.overlaps(layout.legend)) << where;
+        if (hud_lines == 2) {  // the default HUD: the legend fits on the frame too
+          EXPECT_LE(layout.legend.top + layout.legend.height, static_cast<float>(height)) << where;
+        }
+        EXPECT_LE(layout.hud.width, static_cast<float>(width)) << where;
+      }
+    }
+  }
+}
+
+TEST(RenderOverlays, HudLinesWrapAtSpacesToTheFrameWidth) {
+  const std::vector<std::string> wrapped =
+      wrap_lines({"aaaa bbbb  cccc", "dddd"}, text_width("aaaa bbbb") + 1.0f);
+  ASSERT_EQ(wrapped.size(), 3u);
+  EXPECT_EQ(wrapped[0], "aaaa bbbb");
+  EXPECT_EQ(wrapped[1], "cccc");
+  EXPECT_EQ(wrapped[2], "dddd");
+  EXPECT_EQ(wrap_lines({"averyveryverylongword"}, 12.0f), std::vector<std::string>{"averyveryverylongword"});
+  // The tutorial's title at 320x240 keeps its frame counter on screen.
+  const HudLayout layout = layout_hud(
+      320, {"tutorial - left: no friction | right: friction  frame 00300", "t = 5.000 s"}, {}, 1);
+  for (const std::string& line : layout.hud_lines) EXPECT_LE(text_width(line) + 12.0f, 320.0f) << line;
+  bool counter_whole = false;
+  for (const std::string& line : layout.hud_lines) counter_whole |= line.find("frame 00300") != std::string::npos;
+  EXPECT_TRUE(counter_whole);
+}
+
+TEST(RenderOverlays, LegendStaysTopRightWhenItFitsBesideTheHud) {
+  const std::vector<std::string> lines = {"scene  frame 00001", "t = 0.000 s"};
+  const std::vector<LegendEntry> legend = {{Color{}, "contact points"}};
+  const HudLayout layout = layout_hud(800, lines, legend, 1);
+  EXPECT_EQ(layout.legend.top, 0.0f);
+  EXPECT_FLOAT_EQ(layout.legend.left + layout.legend.width, 800.0f);
+}
+
+TEST(RenderOverlays, ContactMarksDrawNormalsBesideImpulsesAndRestingPenetration) {
+  const World world = support::make_overlay_scene(60);  // resting contacts, ~1 cm overlaps
+  FrameRenderer renderer(640, 480);
+  const Camera camera = Camera::fit(world_bounds(world), 640, 480, 8.0f);
+  FrameOptions options;
+  options.show_hud = false;
+  options.show_legend = false;
+  options.draw.flags = draw_shapes;
+  const Frame shapes = renderer.render(world, camera, options, HudInfo{});
+  options.draw.flags = draw_shapes | draw_penetration;
+  options.draw.penetration_scale = 1.0f;  // true length: sub-pixel, the bar's minimum shows it
+  const Frame penetration = renderer.render(world, camera, options, HudInfo{});
+  EXPECT_NE(shapes.hash(), penetration.hash());
+  options.draw.flags = draw_shapes | draw_contact_normals;
+  const Frame normals = renderer.render(world, camera, options, HudInfo{});
+  options.draw.flags = draw_shapes | draw_contact_normals | draw_normal_impulses;
+  const Frame both = renderer.render(world, camera, options, HudInfo{});
+  // Normals stay visible under impulses: every normal pixel of `normals` that differs from
+  // `shapes` is still normal-coloured (not covered) in `both` for most of them.
+  const Pixel normal_colour = support::to_pixel(theme_palette(Theme::Light).debug.contact_normal);
+  int normal_pixels = 0;
+  int still_visible = 0;
+  for (int y = 0; y < normals.height; ++y) {
+    for (int x = 0; x < normals.width; ++x) {
+      if (normals.pixel(x, y) != normal_colour) continue;
+      ++normal_pixels;
+      still_visible += both.pixel(x, y) == normal_colour ? 1 : 0;
+    }
+  }
+  ASSERT_GT(normal_pixels, 20);
+  EXPECT_GT(still_visible, normal_pixels * 8 / 10);
+}
+
+TEST(RenderOverlays, IslandsJoinDynamicBodiesThroughContactsOnly) {
+  const World world = support::make_overlay_scene(60);
+  const std::vector<int> island = island_of_slots(world);
+  ASSERT_EQ(island.size(), world.body_slots().size());
+  int joined = 0;
+  for (const Contact& contact : world.contacts()) {
+    const Body& a = world.body_slots()[contact.body_a.index];
+    const Body& b = world.body_slots()[contact.body_b.index];
+    if (a.type == BodyType::Dynamic && b.type == BodyType::Dynamic && contact.enabled) {
+      EXPECT_EQ(island[contact.body_a.index], island[contact.body_b.index]);
+      ++joined;
+    }
+  }
+  EXPECT_GT(joined, 0) << "the overlay scene's stack has dynamic-dynamic contacts";
+  for (std::uint32_t slot = 0; slot < island.size(); ++slot) {
+    if (world.body_slots()[slot].type != BodyType::Dynamic) {
+      EXPECT_EQ(island[slot], -1);
+    }
+  }
+  EXPECT_EQ(*std::max_element(island.begin(), island.end()) + 1,
+            static_cast<int>(std::set<int>(island.begin(), island.end()).size()) - 1)
+      << "islands are numbered 0, 1, ... without gaps";
+}
+
+TEST(RenderOverlays, IslandsAndFeatureIdsDrawOnlyWhenAsked) {
+  const World world = support::make_overlay_scene(60);
+  FrameRenderer renderer(320, 240);
+  const Camera camera = Camera::fit(world_bounds(world), 320, 240, 8.0f);
+  FrameOptions options;
+  options.show_hud = false;
+  options.show_legend = false;
+  const Frame plain = renderer.render(world, camera, options, HudInfo{});
+  options.islands = true;
+  const Frame islands = renderer.render(world, camera, options, HudInfo{});
+  options.islands = false;
+  options.contacts.feature_ids = true;
+  const Frame ids = renderer.render(world, camera, options, HudInfo{});
+  EXPECT_NE(plain.hash(), islands.hash());
+  EXPECT_NE(plain.hash(), ids.hash());
+  EXPECT_NE(islands.hash(), ids.hash());
+}
+
+TEST(RenderOverlays, SleepingContactsAreDrawnDimmedAndCountedInTheHud) {
+  WorldSettings settings;
+  settings.enable_sleeping = true;
+  World world(settings);
+  BodyDef ground;
+  ground.type = BodyType::Static;
+  ground.position = {0.0f, -0.5f};
+  world.create_body(ground, make_box({4.0f, 0.5f}));
+  BodyDef crate;
+  crate.position = {0.0f, 0.5f};
+  const BodyId box = world.create_body(crate, make_oriented_box({0.5f, 0.5f}));
+  for (int i = 0; i < 600 && world.body(box).awake; ++i) world.step();
+  ASSERT_FALSE(world.body(box).awake);
+  world.step();  // the asleep pair's contact is set aside at the next step
+  ASSERT_TRUE(world.contacts().empty());
+  ASSERT_EQ(world.sleeping_contacts().size(), 1u);
+
+  FrameRenderer renderer(320, 240);
+  const Camera camera = Camera::fit(world_bounds(world), 320, 240, 8.0f);
+  FrameOptions options;
+  options.show_hud = false;
+  options.show_legend = false;
+  options.draw.flags = draw_shapes;
+  const Frame shapes = renderer.render(world, camera, options, HudInfo{});
+  options.draw.flags = draw_shapes | draw_contact_points;
+  const Frame asleep = renderer.render(world, camera, options, HudInfo{});
+  const Pixel full = support::to_pixel(theme_palette(Theme::Light).debug.contact_point);
+  auto full_colour_pixels = [&full](const Frame& frame) {
+    int count = 0;
+    for (int y = 0; y < frame.height; ++y) {
+      for (int x = 0; x < frame.width; ++x) count += frame.pixel(x, y) == full ? 1 : 0;
+    }
+    return count;
+  };
+  EXPECT_NE(asleep.hash(), shapes.hash()) << "the sleeping contact was not drawn";
+  EXPECT_EQ(full_colour_pixels(asleep), 0) << "the sleeping contact was not dimmed";
+
+  world.set_awake(box, true);
+  world.step();
+  ASSERT_EQ(world.contacts().size(), 1u);
+  const Frame awake = renderer.render(world, camera, options, HudInfo{});
+  EXPECT_GT(full_colour_pixels(awake), 4) << "an awake contact is drawn at full colour";
+
+  HudCounts counts;
+  counts.contact_count = 0;
+  counts.sleeping_contact_count = 3;
+  EXPECT_NE(hud_lines(support::hud("s", 0), counts)[1].find("+ 3 sleeping"), std::string::npos);
+  counts.sleeping_contact_count = 0;
+  EXPECT_EQ(hud_lines(support::hud("s", 0), counts)[1].find("sleeping"), std::string::npos);
+}
