@@ -23,7 +23,7 @@
 #include "render/camera.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
-#include "render/png_encoder.h"
+#include "image/png.h"
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -156,7 +156,7 @@ Arguments parse_arguments(int argc, char** argv) {
 // Saves `frame` to `path`: a PNG when the name ends in .png, else raw RGBA.
 void dump_frame(const Frame& frame, const std::string& path) {
   if (fs::path(path).extension() == ".png") {
-    write_png(path, frame);
+    image::save_png(path, frame);
     return;
   }
   std::ofstream(path, std::ios::binary)
@@ -168,10 +168,10 @@ struct EncodeResult {
   double kilobytes = 0.0;     // per frame
 };
 
-EncodeResult measure_encode(const std::vector<Frame>& frames, PngEncoding encoding) {
+EncodeResult measure_encode(const std::vector<Frame>& frames, image::PngCompression encoding) {
   EncodeResult result;
   const Clock::time_point start = Clock::now();
-  for (const Frame& frame : frames) result.kilobytes += static_cast<double>(encode_png(frame, encoding).size()) / 1024.0;
+  for (const Frame& frame : frames) result.kilobytes += static_cast<double>(image::encode_png(frame, encoding).size()) / 1024.0;
   result.milliseconds = milliseconds_since(start) / static_cast<double>(frames.size());
   result.kilobytes /= static_cast<double>(frames.size());
   return result;
@@ -180,13 +180,13 @@ EncodeResult measure_encode(const std::vector<Frame>& frames, PngEncoding encodi
 // Simulate, render, encode and write `frames` frames on this thread; frames/s.
 double end_to_end_synchronous(World world, FrameRenderer& renderer, const Camera& camera,
                               const FrameOptions& options, int frames, const fs::path& directory,
-                              PngEncoding encoding) {
+                              image::PngCompression encoding) {
   Frame frame;
   const Clock::time_point start = Clock::now();
   for (int i = 0; i < frames; ++i) {
     world.step();
     renderer.render(world, camera, options, hud_for(i), frame);
-    write_png(frame_file_path(directory, "bin1000", i), frame, encoding);
+    image::save_png(frame_file_path(directory, "bin1000", i), frame, encoding);
   }
   return 1000.0 * frames / milliseconds_since(start);
 }
@@ -291,10 +291,10 @@ int main(int argc, char** argv) {
     m.render_ms /= args.frames;
     m.render_cpu_ms /= args.frames;
     if (!args.dump_frame.empty() && flags == draw_all) dump_frame(frames.back(), args.dump_frame);
-    m.stb = measure_encode(frames, PngEncoding::StbDefault);
-    m.fast = measure_encode(frames, PngEncoding::Fast);
-    m.baseline_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, PngEncoding::StbDefault);
-    m.fast_sync_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, PngEncoding::Fast);
+    m.stb = measure_encode(frames, image::PngCompression::Small);
+    m.fast = measure_encode(frames, image::PngCompression::Fast);
+    m.baseline_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, image::PngCompression::Small);
+    m.fast_sync_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, image::PngCompression::Fast);
     m.async1 = end_to_end_async(world, renderer, camera, options, args.frames, out, 1);
     m.async2 = end_to_end_async(world, renderer, camera, options, args.frames, out, 2);
     results.push_back(m);

@@ -7,7 +7,7 @@
 #include "render/frame_renderer.h"
 #include "render/motion_trails.h"
 #include "render/palette.h"
-#include "render/png_encoder.h"
+#include "image/png.h"
 #include "render/render_error.h"
 
 #include <cstdio>
@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
     HudInfo hud;
     hud.scene_name = "overlays";
     hud.frame = kSteps;
-    write_png(output, renderer.render(world, camera, options, hud));
+    image::save_png(output, renderer.render(world, camera, options, hud));
   } catch (const std::exception& error) {
     std::fprintf(stderr, "render_example: %s\n", error.what());
     return 1;

@@ -17,7 +17,7 @@ install(FILES ${PROJECT_BINARY_DIR}/impulse2dConfig.cmake
 
 # pkg-config: one module for the libraries built (static, so their dependencies are public).
 if(IMPULSE2D_BUILD_RENDER)
-  set(IMPULSE2D_PC_LIBS "-limpulse2d_render -limpulse2d_scene -limpulse2d_gameplay -limpulse2d_core")
+  set(IMPULSE2D_PC_LIBS "-limpulse2d_render -limpulse2d_image -limpulse2d_scene -limpulse2d_gameplay -limpulse2d_core")
   if(IMPULSE2D_OSMESA)
     set(IMPULSE2D_PC_REQUIRES "glm nlohmann_json osmesa egl libdeflate")
   else()

@@ -1,7 +1,7 @@
 # cmake -DSOURCE_DIR=<folder> -DOUTPUT_DIR=<dir> -DHEADERS=<a.h;sub/b.h> -P prefix_includes.cmake
 # Copies the listed public headers of SOURCE_DIR into OUTPUT_DIR (keeping their sub-folders),
 # turning the project's own includes ("core/world.h", "gameplay/...", "scene/...",
-# "render/...") into "impulse2d/core/world.h" so that the copies resolve against the
+# "image/...", "render/...") into "impulse2d/core/world.h" so that the copies resolve against the
 # consumers' include tree. Called by impulse2d_library().
 cmake_minimum_required(VERSION 3.20)
 file(MAKE_DIRECTORY ${OUTPUT_DIR})
@@ -14,7 +14,7 @@ foreach(name ${staged})
 endforeach()
 foreach(name ${HEADERS})
   file(READ ${SOURCE_DIR}/${name} text)
-  string(REGEX REPLACE "#include \"(core|gameplay|scene|render)/" "#include \"impulse2d/\\1/"
+  string(REGEX REPLACE "#include \"(core|gameplay|scene|image|render)/" "#include \"impulse2d/\\1/"
          text "${text}")
   file(WRITE ${OUTPUT_DIR}/${name} "${text}")
 endforeach()

@@ -18,7 +18,7 @@
 #include "frames/view_frame_options.h"
 #include "render/frame_renderer.h"
 #include "render/motion_trails.h"
-#include "render/png_encoder.h"
+#include "image/png.h"
 #include "scene/overlays.h"
 #include "scene/usage_error.h"
 
@@ -231,7 +231,7 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
     guard.will_create_directory(output.parent_path());
     std::filesystem::create_directories(output.parent_path());
   }
-  render::write_png(output, sheet);
+  image::save_png(output, sheet);
   guard.commit();
   return {width, height};
 }

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <algorithm>
 
-#include "render/png_encoder.h"
+#include "image/file_io.h"
 
 namespace impulse2d::demos {
 
@@ -27,7 +27,7 @@ void write_frame_index(const std::filesystem::path& path, const std::vector<Fram
     text << row.frame << "," << row.step << "," << row.time << "," << row.file << "\n";
   }
   const std::string bytes = text.str();
-  render::write_file_atomically(path, std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+  image::write_file_atomically(path, std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
 }
 
 }  // namespace impulse2d::demos

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "golden/png_text.h"
+#include "image/png_text.h"
 
 namespace impulse2d {
 class World;
@@ -18,7 +18,7 @@ namespace impulse2d::demos {
 /// drawn from `world`'s current state. `parameters` is the overrides as "rows=8 seed=3"
 /// (empty: "defaults"); `renderer` describes the renderer
 /// (`golden::RendererFingerprint::describe`: "GL_RENDERER / GL_VERSION").
-golden::PngText frame_metadata(const std::string& scene, const std::string& parameters,
+image::PngText frame_metadata(const std::string& scene, const std::string& parameters,
                                const World& world, const std::string& renderer);
 
 }  // namespace impulse2d::demos

@@ -24,7 +24,7 @@
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
 #include "render/motion_trails.h"
-#include "golden/png_text.h"
+#include "image/png_text.h"
 #include "golden/sidecar.h"
 
 namespace impulse2d::demos {
@@ -51,13 +51,13 @@ namespace {
 class PendingMetadata {
  public:
   /// Keeps `text` for frame `frame_number`.
-  void put(std::int64_t frame_number, golden::PngText text) {
+  void put(std::int64_t frame_number, image::PngText text) {
     std::lock_guard<std::mutex> lock(mutex_);
     texts_[frame_number] = std::move(text);
   }
   /// `png` with frame `frame_number`'s metadata inserted (and forgotten).
   std::vector<std::uint8_t> annotate(std::int64_t frame_number, std::vector<std::uint8_t> png) {
-    golden::PngText text;
+    image::PngText text;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       const auto found = texts_.find(frame_number);
@@ -65,12 +65,12 @@ class PendingMetadata {
       text = std::move(found->second);
       texts_.erase(found);
     }
-    return golden::with_png_text(png, text);
+    return image::with_png_text(png, text);
   }
 
  private:
   std::mutex mutex_;
-  std::map<std::int64_t, golden::PngText> texts_;
+  std::map<std::int64_t, image::PngText> texts_;
 };
 
 /// The rendering itself: frames into `staging` (when given), the video, then publishes.

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/png_encoder.h"
+#include "image/file_io.h"
 #include "golden/report.h"
 
 namespace impulse2d::demos {
@@ -254,7 +254,7 @@ std::string html_viewer_page(const ViewerPage& page) {
 
 void write_html_viewer(const std::filesystem::path& path, const ViewerPage& page) {
   const std::string html = html_viewer_page(page);
-  render::write_file_atomically(path, std::vector<std::uint8_t>(html.begin(), html.end()));
+  image::write_file_atomically(path, std::vector<std::uint8_t>(html.begin(), html.end()));
 }
 
 }  // namespace impulse2d::demos

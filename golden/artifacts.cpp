@@ -1,11 +1,12 @@
 /// @file artifacts.cpp
+#include "image/png.h"
 #include "golden/artifacts.h"
 
 #include "golden/compare_json.h"
 #include "golden/diff_images.h"
 #include "golden/error.h"
-#include "golden/file_io.h"
-#include "golden/hex_hash.h"
+#include "image/file_io.h"
+#include "image/hex_hash.h"
 
 #include <nlohmann/json.hpp>
 
@@ -44,9 +45,9 @@ json check_to_json(const GoldenCheck& check, const json& files) {
           {"class_name", failure_class_name(failure_class)},
           {"message", failure_message(check)},
           {"expected_state_hash", check.expected_state_hash
-                                      ? json(to_hex_hash(*check.expected_state_hash))
+                                      ? json(image::to_hex_hash(*check.expected_state_hash))
                                       : json(nullptr)},
-          {"actual_state_hash", to_hex_hash(check.actual_state_hash)},
+          {"actual_state_hash", image::to_hex_hash(check.actual_state_hash)},
           {"second_render_identical", check.second_render_identical},
           {"other_process_identical", check.other_process_identical},
           {"expected_renderer", check.expected_renderer.describe()},
@@ -81,8 +82,8 @@ std::filesystem::path artifact_root_from_environment(const std::filesystem::path
 }
 
 std::filesystem::path write_failure_artifacts(const std::filesystem::path& root,
-                                              const GoldenCheck& check, const Image& actual,
-                                              const Image* expected,
+                                              const GoldenCheck& check, const image::Image& actual,
+                                              const image::Image* expected,
                                               const Sidecar* actual_sidecar) {
   const std::filesystem::path directory = failure_directory(root, check.name);
   // A previous failure of the same golden may have left files this one would not write.
@@ -92,25 +93,25 @@ std::filesystem::path write_failure_artifacts(const std::filesystem::path& root,
     std::filesystem::remove(directory / stale, ignored);
   }
   json files = json::object();
-  auto write_png = [&](const std::string& key, const Image& image) {
-    save_png(directory / (key + ".png"), image);
+  auto write_artifact = [&](const std::string& key, const image::Image& image) {
+    image::save_png(directory / (key + ".png"), image);
     files[key] = key + ".png";
   };
-  write_png("actual", actual);
+  write_artifact("actual", actual);
   if (actual_sidecar != nullptr) {
     write_sidecar(directory / "actual.json", *actual_sidecar);
     files["actual_sidecar"] = "actual.json";
   }
   if (expected != nullptr) {
-    write_png("expected", *expected);
+    write_artifact("expected", *expected);
     if (expected->width == actual.width && expected->height == actual.height) {
       const int max_channel_delta =
           check.comparison ? check.comparison->tolerance.max_channel_delta : 0;
-      write_png("diff", diff_overlay(*expected, actual, max_channel_delta));
-      write_png("heatmap", diff_heatmap(*expected, actual));
+      write_artifact("diff", diff_overlay(*expected, actual, max_channel_delta));
+      write_artifact("heatmap", diff_heatmap(*expected, actual));
     }
   }
-  write_text_file_atomically(directory / "metrics.json",
+  image::write_text_file_atomically(directory / "metrics.json",
                              check_to_json(check, files).dump(2) + "\n");
   return directory;
 }

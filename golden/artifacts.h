@@ -9,7 +9,7 @@
 ///                  the noise-envelope judgement (when there was one)
 
 #include "golden/failure.h"
-#include "golden/image.h"
+#include "image/image.h"
 #include "golden/sidecar.h"
 
 #include <filesystem>
@@ -26,8 +26,8 @@ std::filesystem::path artifact_root_from_environment(const std::filesystem::path
 /// nothing to promote. Returns that directory. Throws `GoldenError` when the name is not
 /// a relative path without "..", or a write fails.
 std::filesystem::path write_failure_artifacts(const std::filesystem::path& root,
-                                              const GoldenCheck& check, const Image& actual,
-                                              const Image* expected,
+                                              const GoldenCheck& check, const image::Image& actual,
+                                              const image::Image* expected,
                                               const Sidecar* actual_sidecar);
 
 }  // namespace impulse2d::golden

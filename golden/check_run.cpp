@@ -1,4 +1,5 @@
 /// @file check_run.cpp
+#include "image/png.h"
 #include "golden/check_run.h"
 
 #include <fcntl.h>
@@ -62,7 +63,7 @@ Sidecar sidecar_for(const std::string& scene, int frame, const ProducedFrame& pr
 /// True when two productions of a frame have the same state hash and the same pixels.
 bool same_production(const ProducedFrame& a, const ProducedFrame& b) {
   return a.state_hash == b.state_hash && a.image.width == b.image.width &&
-         a.image.height == b.image.height && rgba_hash(a.image) == rgba_hash(b.image);
+         a.image.height == b.image.height && a.image.hash() == b.image.hash();
 }
 
 /// True when the first production already settles the check as a pass.
@@ -119,7 +120,7 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
   check.name = name;
   check.golden_present = fs::exists(png) && fs::exists(sidecar_file);
 
-  std::optional<Image> expected;
+  std::optional<image::Image> expected;
   std::optional<Sidecar> golden_sidecar;
   if (check.golden_present) {
     golden_sidecar = read_sidecar(sidecar_file, name + ".json");
@@ -146,12 +147,12 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
           read_sidecar(sidecar_path_for(pixel_png), check.renderer_baseline);
       check.expected_renderer = baseline.renderer;
       tolerance = baseline.tolerance;
-      expected = load_png(pixel_png);
+      expected = image::load_png(pixel_png);
     } else {
       check.renderer_baseline_missing = true;
     }
   } else if (check.golden_present) {
-    expected = load_png(png);
+    expected = image::load_png(png);
   }
   if (settings.tolerance) tolerance = *settings.tolerance;
   if (expected) check.comparison = compare_images(*expected, actual.image, tolerance);
@@ -193,7 +194,7 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
     actual_sidecar.noise = measure_noise();
   }
   if (write_golden) {
-    save_png(pixel_png, actual.image);
+    image::save_png(pixel_png, actual.image);
     write_sidecar(sidecar_path_for(pixel_png), actual_sidecar);
     outcome.golden_written = true;
   }

@@ -15,7 +15,7 @@
 
 #include "golden/body_drift.h"
 #include "golden/failure.h"
-#include "golden/image.h"
+#include "image/image.h"
 #include "golden/sidecar.h"
 #include "golden/update_mode.h"
 
@@ -23,7 +23,7 @@ namespace impulse2d::golden {
 
 /// One production of a golden's frame: the pixels and the physics state behind them.
 struct ProducedFrame {
-  Image image;                   ///< the rendered frame
+  image::Image image;                   ///< the rendered frame
   std::uint64_t state_hash = 0;  ///< the world's state hash at that frame
   std::vector<BodyPose> bodies;  ///< every body's pose at that frame, for drift reports
   /// Whole-world quantities at `noise_checkpoint_steps(frame)`, judged against the golden's

@@ -2,7 +2,7 @@
 #include "golden/compare.h"
 
 #include "golden/error.h"
-#include "golden/hex_hash.h"
+#include "image/hex_hash.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -50,7 +50,7 @@ void find_worst_window(const std::vector<std::uint8_t>& mask, int width, int hei
   }
 }
 
-DiffMetrics measure(const Image& expected, const Image& actual, const Tolerance& tolerance) {
+DiffMetrics measure(const image::Image& expected, const image::Image& actual, const Tolerance& tolerance) {
   DiffMetrics metrics;
   const int width = expected.width;
   const int height = expected.height;
@@ -67,9 +67,9 @@ DiffMetrics measure(const Image& expected, const Image& actual, const Tolerance&
         continue;
       }
       int pixel_delta = 0;
-      for (int channel = 0; channel < kChannels; ++channel) {
-        const int delta = std::abs(int{expected.pixels[offset + channel]} -
-                                   int{actual.pixels[offset + channel]});
+      for (int channel = 0; channel < image::kChannels; ++channel) {
+        const int delta = std::abs(int{expected.rgba[offset + channel]} -
+                                   int{actual.rgba[offset + channel]});
         metrics.channel_max_delta[channel] = std::max(metrics.channel_max_delta[channel], delta);
         if (channel < 3 && delta > 0) any_rgb_change = true;
         pixel_delta = std::max(pixel_delta, delta);
@@ -78,7 +78,7 @@ DiffMetrics measure(const Image& expected, const Image& actual, const Tolerance&
       ++metrics.changed_pixels;
       if (pixel_delta <= tolerance.max_channel_delta) continue;
       ++metrics.differing_pixels;
-      mask[offset / kChannels] = 1;
+      mask[offset / image::kChannels] = 1;
       box.min_x = std::min(box.min_x, x);
       box.min_y = std::min(box.min_y, y);
       box.max_x = std::max(box.max_x, x);
@@ -129,25 +129,25 @@ std::vector<RuleViolation> check_rules(const DiffMetrics& metrics, const Toleran
 
 }  // namespace
 
-int max_channel_delta_at(const Image& expected, const Image& actual, int x, int y) {
+int max_channel_delta_at(const image::Image& expected, const image::Image& actual, int x, int y) {
   const std::size_t offset = expected.offset(x, y);
   int largest = 0;
-  for (int channel = 0; channel < kChannels; ++channel) {
-    largest = std::max(largest, std::abs(int{expected.pixels[offset + channel]} -
-                                         int{actual.pixels[offset + channel]}));
+  for (int channel = 0; channel < image::kChannels; ++channel) {
+    largest = std::max(largest, std::abs(int{expected.rgba[offset + channel]} -
+                                         int{actual.rgba[offset + channel]}));
   }
   return largest;
 }
 
-CompareResult compare_images(const Image& expected, const Image& actual,
+CompareResult compare_images(const image::Image& expected, const image::Image& actual,
                              const Tolerance& tolerance) {
-  for (const Image* image : {&expected, &actual}) {
+  for (const image::Image* image : {&expected, &actual}) {
     if (image->width < 0 || image->height < 0 ||
-        image->pixels.size() != image->pixel_count() * kChannels) {
+        image->rgba.size() != image->pixel_count() * image::kChannels) {
       throw GoldenError("compare_images: " + std::string(image == &expected ? "golden" : "actual") +
                         " image " + std::to_string(image->width) + "x" +
                         std::to_string(image->height) + " holds " +
-                        std::to_string(image->pixels.size()) + " bytes, not width*height*4");
+                        std::to_string(image->rgba.size()) + " bytes, not width*height*4");
     }
   }
   CompareResult result;
@@ -155,8 +155,8 @@ CompareResult compare_images(const Image& expected, const Image& actual,
   result.expected_height = expected.height;
   result.actual_width = actual.width;
   result.actual_height = actual.height;
-  result.expected_hash = rgba_hash(expected);
-  result.actual_hash = rgba_hash(actual);
+  result.expected_hash = expected.hash();
+  result.actual_hash = actual.hash();
   result.tolerance = tolerance;
   if (expected.width != actual.width || expected.height != actual.height) {
     result.outcome = CompareOutcome::SizeMismatch;
@@ -181,7 +181,7 @@ std::string CompareResult::message() const {
   std::ostringstream text;
   switch (outcome) {
     case CompareOutcome::ExactMatch:
-      text << "exact match (RGBA hash " << to_hex_hash(actual_hash) << ")";
+      text << "exact match (RGBA hash " << image::to_hex_hash(actual_hash) << ")";
       return text.str();
     case CompareOutcome::SizeMismatch:
       text << "size mismatch: golden is " << expected_width << "x" << expected_height

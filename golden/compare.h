@@ -3,7 +3,7 @@
 /// Golden vs actual: exact match on the decoded RGBA hash first; metrics and the tolerance
 /// rules only when the hashes differ.
 
-#include "golden/image.h"
+#include "image/image.h"
 #include "golden/tolerance.h"
 
 #include <array>
@@ -74,8 +74,8 @@ struct CompareResult {
   int expected_height = 0;          ///< golden height
   int actual_width = 0;             ///< actual width
   int actual_height = 0;            ///< actual height
-  std::uint64_t expected_hash = 0;  ///< `rgba_hash` of the golden
-  std::uint64_t actual_hash = 0;    ///< `rgba_hash` of the actual image
+  std::uint64_t expected_hash = 0;  ///< `Image::hash()` of the golden
+  std::uint64_t actual_hash = 0;    ///< `Image::hash()` of the actual image
   DiffMetrics metrics;  ///< filled when the sizes agree and the hashes differ
   std::vector<RuleViolation> violations;  ///< failed rules, in ToleranceRule order
   Tolerance tolerance;  ///< the limits applied
@@ -88,11 +88,11 @@ struct CompareResult {
 };
 
 /// Largest of the four channel deltas of pixel (x, y); both images must hold that pixel.
-int max_channel_delta_at(const Image& expected, const Image& actual, int x, int y);
+int max_channel_delta_at(const image::Image& expected, const image::Image& actual, int x, int y);
 
 /// Compares an actual image with its golden under `tolerance`. Throws `GoldenError` when
 /// either image's pixel buffer does not hold width * height * 4 bytes.
-CompareResult compare_images(const Image& expected, const Image& actual,
+CompareResult compare_images(const image::Image& expected, const image::Image& actual,
                              const Tolerance& tolerance = Tolerance{});
 
 }  // namespace impulse2d::golden

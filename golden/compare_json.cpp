@@ -1,7 +1,7 @@
 /// @file compare_json.cpp
 #include "golden/compare_json.h"
 
-#include "golden/hex_hash.h"
+#include "image/hex_hash.h"
 
 namespace impulse2d::golden {
 
@@ -52,8 +52,8 @@ json comparison_to_json(const CompareResult& result) {
   return {{"outcome", outcome_id(result.outcome)},
           {"expected_size", {result.expected_width, result.expected_height}},
           {"actual_size", {result.actual_width, result.actual_height}},
-          {"expected_rgba_hash", to_hex_hash(result.expected_hash)},
-          {"actual_rgba_hash", to_hex_hash(result.actual_hash)},
+          {"expected_rgba_hash", image::to_hex_hash(result.expected_hash)},
+          {"actual_rgba_hash", image::to_hex_hash(result.actual_hash)},
           {"metrics",
            {{"changed_pixels", metrics.changed_pixels},
             {"masked_pixels", metrics.masked_pixels},

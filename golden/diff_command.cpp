@@ -11,8 +11,9 @@
 #include "golden/compare_json.h"
 #include "golden/diff_images.h"
 #include "golden/error.h"
-#include "golden/file_io.h"
-#include "golden/image.h"
+#include "image/file_io.h"
+#include "image/image.h"
+#include "image/png.h"
 #include "golden/report.h"
 
 namespace impulse2d::golden {
@@ -24,28 +25,28 @@ using nlohmann::json;
 
 /// What the two frames' PNG metadata says about why they differ; empty when either lacks
 /// a state hash (a PNG not written by the golden tools).
-std::string metadata_verdict(const Image& expected, const Image& actual) {
-  const auto value = [](const Image& image, const char* key) {
+std::string metadata_verdict(const image::Image& expected, const image::Image& actual) {
+  const auto value = [](const image::Image& image, const char* key) {
     const auto found = image.text.find(key);
     return found == image.text.end() ? std::string() : found->second;
   };
-  const std::string hash_a = value(expected, png_keys::kStateHash);
-  const std::string hash_b = value(actual, png_keys::kStateHash);
+  const std::string hash_a = value(expected, image::png_keys::kStateHash);
+  const std::string hash_b = value(actual, image::png_keys::kStateHash);
   if (hash_a.empty() || hash_b.empty()) return "";
-  const auto describe = [&](const Image& image) {
-    return value(image, png_keys::kScene) + " step " + value(image, png_keys::kStep) + " (" +
-           value(image, png_keys::kTime) + " s), state " + value(image, png_keys::kStateHash) +
-           ", " + value(image, png_keys::kRenderer) + ", " + value(image, png_keys::kSoftware);
+  const auto describe = [&](const image::Image& image) {
+    return value(image, image::png_keys::kScene) + " step " + value(image, image::png_keys::kStep) + " (" +
+           value(image, image::png_keys::kTime) + " s), state " + value(image, image::png_keys::kStateHash) +
+           ", " + value(image, image::png_keys::kRenderer) + ", " + value(image, image::png_keys::kSoftware);
   };
   std::string verdict = "metadata: a is " + describe(expected) + "; b is " + describe(actual) +
                         ". ";
-  if (value(expected, png_keys::kScene) != value(actual, png_keys::kScene) ||
-      value(expected, png_keys::kStep) != value(actual, png_keys::kStep) ||
-      value(expected, png_keys::kParameters) != value(actual, png_keys::kParameters)) {
+  if (value(expected, image::png_keys::kScene) != value(actual, image::png_keys::kScene) ||
+      value(expected, image::png_keys::kStep) != value(actual, image::png_keys::kStep) ||
+      value(expected, image::png_keys::kParameters) != value(actual, image::png_keys::kParameters)) {
     return verdict + "They are frames of different scenes, steps or parameters";
   }
   if (hash_a != hash_b) return verdict + "Physics state differs: simulation diverged";
-  if (value(expected, png_keys::kRenderer) != value(actual, png_keys::kRenderer)) {
+  if (value(expected, image::png_keys::kRenderer) != value(actual, image::png_keys::kRenderer)) {
     return verdict + "Same physics state, different renderers: any pixel difference is theirs";
   }
   return verdict + "Same physics state and renderer: any pixel difference is rasterisation";
@@ -54,18 +55,18 @@ std::string metadata_verdict(const Image& expected, const Image& actual) {
 /// Writes the images, metrics.json and index.html of a mismatch into `directory`; returns
 /// the report's path.
 fs::path write_diff_artifacts(const fs::path& directory, const std::string& title,
-                              const CompareResult& result, const Image& expected,
-                              const Image& actual) {
+                              const CompareResult& result, const image::Image& expected,
+                              const image::Image& actual) {
   json files = json::object();
-  auto write_png = [&](const std::string& key, const Image& image) {
-    save_png(directory / (key + ".png"), image);
+  auto write_artifact = [&](const std::string& key, const image::Image& image) {
+    image::save_png(directory / (key + ".png"), image);
     files[key] = key + ".png";
   };
-  write_png("expected", expected);
-  write_png("actual", actual);
+  write_artifact("expected", expected);
+  write_artifact("actual", actual);
   if (result.outcome != CompareOutcome::SizeMismatch) {
-    write_png("diff", diff_overlay(expected, actual, result.tolerance.max_channel_delta));
-    write_png("heatmap", diff_heatmap(expected, actual));
+    write_artifact("diff", diff_overlay(expected, actual, result.tolerance.max_channel_delta));
+    write_artifact("heatmap", diff_heatmap(expected, actual));
   }
   const bool size_mismatch = result.outcome == CompareOutcome::SizeMismatch;
   const std::string class_name = result.passed() ? "within tolerance"
@@ -80,7 +81,7 @@ fs::path write_diff_artifacts(const fs::path& directory, const std::string& titl
                         {"metadata", metadata_verdict(expected, actual)},
                         {"comparison", comparison_to_json(result)},
                         {"files", files}};
-  write_text_file_atomically(directory / "metrics.json", metrics.dump(2) + "\n");
+  image::write_text_file_atomically(directory / "metrics.json", metrics.dump(2) + "\n");
   write_html_report(directory);
   return directory / "index.html";
 }
@@ -88,8 +89,8 @@ fs::path write_diff_artifacts(const fs::path& directory, const std::string& titl
 /// `write_diff_artifacts`, all or nothing: on failure (a full disk) the artifacts that did
 /// not exist before and the directory if it was created are removed before rethrowing.
 fs::path write_artifacts_or_nothing(const fs::path& directory, const std::string& title,
-                                    const CompareResult& result, const Image& expected,
-                                    const Image& actual) {
+                                    const CompareResult& result, const image::Image& expected,
+                                    const image::Image& actual) {
   std::error_code error;
   const bool directory_existed = fs::exists(directory, error);
   std::vector<fs::path> new_files;
@@ -113,8 +114,8 @@ int run_diff_command(const std::string& expected_png, const std::string& actual_
                      const DiffLimits& limits) {
   try {
     const Tolerance tolerance = tolerance_from_limits(limits, "command-line limits");
-    const Image expected = load_png(expected_png);
-    const Image actual = load_png(actual_png);
+    const image::Image expected = image::load_png(expected_png);
+    const image::Image actual = image::load_png(actual_png);
     const CompareResult result = compare_images(expected, actual, tolerance);
     out << expected_png << " vs " << actual_png << ": " << result.message() << "\n";
     const std::string metadata = metadata_verdict(expected, actual);

@@ -1,19 +1,15 @@
 #pragma once
 /// @file error.h
-/// The single exception type the golden-image library throws.
+/// The exception the golden-image library throws: the image library's, since the golden tools'
+/// failures (unreadable PNG files, sidecars, tolerance objects, environment variables, failed
+/// writes) and the image library's are reported alike.
 
-#include <stdexcept>
-#include <string>
+#include "image/error.h"
 
 namespace impulse2d::golden {
 
-/// Thrown for unreadable or invalid inputs (PNG files, sidecars, tolerance objects,
-/// environment variables) and failed writes. The message names the file or variable, the
-/// field where there is one, and the reason.
-class GoldenError : public std::runtime_error {
- public:
-  /// Creates an error with a message that says what was wrong and where.
-  explicit GoldenError(const std::string& message) : std::runtime_error(message) {}
-};
+/// Thrown for unreadable or invalid inputs and failed writes. The message names the file or
+/// variable, the field where there is one, and the reason.
+using GoldenError = image::ImageError;
 
 }  // namespace impulse2d::golden

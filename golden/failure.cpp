@@ -1,7 +1,7 @@
 /// @file failure.cpp
 #include "golden/failure.h"
 
-#include "golden/hex_hash.h"
+#include "image/hex_hash.h"
 
 #include <sstream>
 
@@ -104,22 +104,22 @@ std::string failure_message(const GoldenCheck& check) {
            << check.comparison->actual_width << "x" << check.comparison->actual_height;
       break;
     case FailureClass::SimulationDiverged:
-      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
-           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+      text << "physics state hash is " << image::to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << image::to_hex_hash(*check.expected_state_hash)
            << ". Bodies that moved most: " << describe_drifts(check.moved_bodies) << ". "
            << image_text(check);
       break;
     case FailureClass::NumericalNoise:
-      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
-           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+      text << "physics state hash is " << image::to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << image::to_hex_hash(*check.expected_state_hash)
            << ", but " << check.noise->describe(kEscapesNamed)
            << ": a chaotic scene amplified a rounding change (reordered arithmetic, another "
               "compiler or flag). Review the images and promote. Bodies that moved most: "
            << describe_drifts(check.moved_bodies) << ". " << image_text(check);
       break;
     case FailureClass::BehaviourChanged:
-      text << "physics state hash is " << to_hex_hash(check.actual_state_hash)
-           << ", the golden's sidecar has " << to_hex_hash(*check.expected_state_hash)
+      text << "physics state hash is " << image::to_hex_hash(check.actual_state_hash)
+           << ", the golden's sidecar has " << image::to_hex_hash(*check.expected_state_hash)
            << ", and the run left the golden's noise envelope (what rounding-sized perturbations "
               "do to this scene): "
            << check.noise->describe(kEscapesNamed)
@@ -127,7 +127,7 @@ std::string failure_message(const GoldenCheck& check) {
            << image_text(check);
       break;
     case FailureClass::NoRendererBaseline:
-      text << "physics checked and matches (state hash " << to_hex_hash(check.actual_state_hash)
+      text << "physics checked and matches (state hash " << image::to_hex_hash(check.actual_state_hash)
            << "); pixels not compared: the golden was drawn by '"
            << check.expected_renderer.describe() << "', this run by '"
            << check.actual_renderer.describe() << "', and there is no baseline for it. Add one "
@@ -136,7 +136,7 @@ std::string failure_message(const GoldenCheck& check) {
               "impulse2d golden update <scene file>";
       break;
     case FailureClass::RasterisationDiffers:
-      text << "physics state matches (hash " << to_hex_hash(check.actual_state_hash)
+      text << "physics state matches (hash " << image::to_hex_hash(check.actual_state_hash)
            << ") but the image does not: " << check.comparison->message()
            << renderer_note(check);
       break;

@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "golden/file_io.h"
+#include "image/file_io.h"
 #include "golden/report.h"
 
 namespace impulse2d::golden {
@@ -39,7 +39,7 @@ void write_junit(const std::filesystem::path& file, const std::string& suite,
         << "</failure>\n    </testcase>\n";
   }
   xml << "  </testsuite>\n</testsuites>\n";
-  write_text_file_atomically(file, xml.str());
+  image::write_text_file_atomically(file, xml.str());
 }
 
 }  // namespace impulse2d::golden

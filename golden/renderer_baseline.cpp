@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cstdint>
 
-#include "golden/hex_hash.h"
+#include "image/hex_hash.h"
 
 namespace impulse2d::golden {
 
@@ -25,7 +25,7 @@ std::string renderer_key(const RendererFingerprint& renderer) {
     hash ^= static_cast<unsigned char>(c);
     hash *= 1099511628211ull;
   }
-  return word + "-" + to_hex_hash(hash).substr(0, 8);
+  return word + "-" + image::to_hex_hash(hash).substr(0, 8);
 }
 
 std::filesystem::path renderer_baseline_png(const std::filesystem::path& golden_dir,

@@ -3,7 +3,7 @@
 
 #include "golden/base64.h"
 #include "golden/error.h"
-#include "golden/file_io.h"
+#include "image/file_io.h"
 
 #include <nlohmann/json.hpp>
 
@@ -102,7 +102,7 @@ std::string image_figure(const Entry& entry, const std::string& key, const std::
   const std::filesystem::path file = entry.directory / files[key].get<std::string>();
   std::string source;
   try {
-    source = "data:image/png;base64," + base64_encode(read_file_bytes(file));
+    source = "data:image/png;base64," + base64_encode(image::read_file_bytes(file));
   } catch (const GoldenError& error) {
     return "<figure><figcaption>" + escape_html(caption) + ": " + escape_html(error.what()) +
            "</figcaption></figure>\n";
@@ -180,7 +180,7 @@ std::vector<Entry> collect_entries(const std::filesystem::path& root) {
     entry.directory = it->path().parent_path();
     entry.relative = entry.directory.lexically_relative(root).generic_string();
     try {
-      entry.metrics = json::parse(read_text_file(it->path()));
+      entry.metrics = json::parse(image::read_text_file(it->path()));
       if (!entry.metrics.is_object()) throw GoldenError("not a JSON object");
     } catch (const std::exception& failure) {
       entry.metrics = nullptr;
@@ -201,7 +201,7 @@ std::string run_metadata(const std::filesystem::path& root) {
   if (!std::filesystem::exists(file, error)) return "";
   json run;
   try {
-    run = json::parse(read_text_file(file));
+    run = json::parse(image::read_text_file(file));
   } catch (const std::exception& failure) {
     return "<p>run.json unreadable: " + escape_html(failure.what()) + "</p>\n";
   }
@@ -290,7 +290,7 @@ int write_html_report(const std::filesystem::path& root) {
   html << "</ol>\n" << shared_changes(entries);
   for (const Entry& entry : entries) html << entry_section(entry);
   html << "<script>" << kScript << "</script>\n</body></html>\n";
-  write_text_file_atomically(root / "index.html", html.str());
+  image::write_text_file_atomically(root / "index.html", html.str());
   return static_cast<int>(entries.size());
 }
 

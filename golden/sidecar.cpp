@@ -2,8 +2,8 @@
 #include "golden/sidecar.h"
 
 #include "golden/error.h"
-#include "golden/file_io.h"
-#include "golden/hex_hash.h"
+#include "image/file_io.h"
+#include "image/hex_hash.h"
 #include "golden/json_fields.h"
 
 #include <nlohmann/json.hpp>
@@ -52,7 +52,7 @@ Sidecar sidecar_from_json(const json& object, const std::string& origin) {
   sidecar.width = top.integer("width", 1);
   sidecar.height = top.integer("height", 1);
   const std::string hash_text = top.string("state_hash", false);
-  const std::optional<std::uint64_t> hash = parse_hex_hash(hash_text);
+  const std::optional<std::uint64_t> hash = image::parse_hex_hash(hash_text);
   if (!hash) top.fail("state_hash", "expected 16 hex digits, got \"" + hash_text + "\"");
   sidecar.state_hash = *hash;
 
@@ -87,7 +87,7 @@ json sidecar_to_json(const Sidecar& sidecar) {
                  {"frame", sidecar.frame},
                  {"width", sidecar.width},
                  {"height", sidecar.height},
-                 {"state_hash", to_hex_hash(sidecar.state_hash)},
+                 {"state_hash", image::to_hex_hash(sidecar.state_hash)},
                  {"renderer",
                   {{"gl_renderer", sidecar.renderer.gl_renderer},
                    {"gl_version", sidecar.renderer.gl_version}}},
@@ -100,7 +100,7 @@ json sidecar_to_json(const Sidecar& sidecar) {
 Sidecar read_sidecar(const std::filesystem::path& file, const std::string& display_name) {
   const std::string origin =
       "sidecar '" + (display_name.empty() ? file.string() : display_name) + "'";
-  const std::string text = read_text_file(file);
+  const std::string text = image::read_text_file(file);
   json object;
   try {
     object = json::parse(text);
@@ -113,7 +113,7 @@ Sidecar read_sidecar(const std::filesystem::path& file, const std::string& displ
 void write_sidecar(const std::filesystem::path& file, const Sidecar& sidecar) {
   const json object = sidecar_to_json(sidecar);
   sidecar_from_json(object, "sidecar '" + file.string() + "' (not written)");  // readable back
-  write_text_file_atomically(file, object.dump(2) + "\n");
+  image::write_text_file_atomically(file, object.dump(2) + "\n");
 }
 
 }  // namespace impulse2d::golden

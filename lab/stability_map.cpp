@@ -14,7 +14,7 @@
 #include "lab/lab_sweep.h"
 #include "render/camera.h"
 #include "render/frame_renderer.h"
-#include "render/png_encoder.h"
+#include "image/png.h"
 
 namespace impulse2d::lab {
 namespace {
@@ -233,7 +233,7 @@ void draw_boundary_sheet(const Stressor& stressor, const StabilityCell& cell,
                                         side * (tile_width + gap)) * 4);
     }
   }
-  render::write_png(png_path, sheet);
+  image::save_png(png_path, sheet);
 }
 
 }  // namespace impulse2d::lab

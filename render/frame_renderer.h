@@ -9,7 +9,7 @@
 ///   options.draw.flags = draw_all;
 ///   render::Frame frame;
 ///   renderer.render(world, camera, options, render::HudInfo{"pyramid", 0}, frame);
-///   render::write_png("out/pyramid_00000.png", frame);
+///   image::save_png("out/pyramid_00000.png", frame, image::PngCompression::Fast);
 /// \endcode
 
 #include "core/debug_draw.h"

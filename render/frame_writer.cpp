@@ -1,6 +1,9 @@
 /// @file frame_writer.cpp
 #include "render/frame_writer.h"
 
+#include "image/file_io.h"
+#include "image/png.h"
+
 #include "render/render_error.h"
 
 #include <fcntl.h>
@@ -143,11 +146,11 @@ void AsyncFrameWriter::work() {
     double write_seconds = 0.0;
     try {
       const Clock::time_point encode_start = Clock::now();
-      std::vector<std::uint8_t> png = encode_png(job.frame, options_.encoding);
+      std::vector<std::uint8_t> png = image::encode_png(job.frame, options_.encoding);
       if (options_.annotate) png = options_.annotate(job.frame_number, std::move(png));
       encode_seconds = seconds_since(encode_start);
       const Clock::time_point write_start = Clock::now();
-      write_file_atomically(path_for(job.frame_number), png);
+      image::write_file_atomically(path_for(job.frame_number), png);
       write_seconds = seconds_since(write_start);
       bytes = png.size();
     } catch (...) {

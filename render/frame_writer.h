@@ -4,7 +4,7 @@
 /// encoding overlaps with simulating and rendering the next frame.
 
 #include "render/frame.h"
-#include "render/png_encoder.h"
+#include "image/png.h"
 
 #include <condition_variable>
 #include <cstdint>
@@ -29,7 +29,7 @@ using PngAnnotator =
 struct FrameWriterOptions {
   std::filesystem::path directory;             ///< created if missing
   std::string scene_name;                      ///< file name prefix; no '/' and not empty
-  PngEncoding encoding = PngEncoding::Fast;    ///< PNG compression path
+  image::PngCompression encoding = image::PngCompression::Fast;    ///< PNG compression path
   int worker_threads = 1;                      ///< encoding threads, >= 1
   std::size_t queue_capacity = 4;              ///< frames waiting before `submit` blocks, >= 1
   int digits = 5;                              ///< frame numbers zero-padded to this width, 1..18

@@ -10,7 +10,7 @@
 #include "scene/usage_error.h"
 #include "golden/diff_limits.h"
 #include "golden/error.h"
-#include "golden/file_io.h"
+#include "image/file_io.h"
 #include "golden/json_fields.h"
 
 namespace impulse2d::golden {
@@ -64,7 +64,7 @@ SceneGoldens read_scene_goldens(const std::string& scene_file) {
   const demos::Scene scene = demos::load_scene_file(scene_file);
   json document;
   try {
-    document = json::parse(read_text_file(scene_file));
+    document = json::parse(image::read_text_file(scene_file));
   } catch (const json::parse_error& error) {
     throw GoldenError(scene_file + ": not valid JSON: " + error.what());
   }

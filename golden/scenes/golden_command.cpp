@@ -1,4 +1,5 @@
 /// @file golden_command.cpp
+#include "image/png.h"
 #include "golden/scenes/golden_command.h"
 
 #include <spawn.h>
@@ -17,8 +18,8 @@
 #include "scene/usage_error.h"
 #include "render/frame_renderer.h"
 #include "golden/error.h"
-#include "golden/file_io.h"
-#include "golden/hex_hash.h"
+#include "image/file_io.h"
+#include "image/hex_hash.h"
 #include "golden/junit.h"
 #include "golden/report.h"
 #include "golden/update_mode.h"
@@ -74,8 +75,8 @@ FrameProducer other_process_producer(const std::string& executable, const Golden
     ProducedFrame frame;
     std::optional<std::uint64_t> hash;
     if (status == 0 && fs::exists(png)) {
-      frame.image = load_png(png);
-      hash = parse_hex_hash(read_text_file(png.string() + ".hash"));
+      frame.image = image::load_png(png);
+      hash = image::parse_hex_hash(image::read_text_file(png.string() + ".hash"));
     }
     std::error_code ignored;
     fs::remove_all(directory, ignored);
@@ -101,7 +102,7 @@ void prepare_report(const fs::path& root, const GoldenCommandArguments& argument
     fs::remove_all(root);
   }
   fs::create_directories(root);
-  write_text_file_atomically(root / kReportMarker, "");
+  image::write_text_file_atomically(root / kReportMarker, "");
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
@@ -112,7 +113,7 @@ void prepare_report(const fs::path& root, const GoldenCommandArguments& argument
                                            : "check, repeat " + std::to_string(arguments.repeat)},
                               {"date", date},
                               {"scene_files", files}};
-  write_text_file_atomically(root / "run.json", run.dump(2) + "\n");
+  image::write_text_file_atomically(root / "run.json", run.dump(2) + "\n");
 }
 
 /// `read_scene_goldens`, its errors as usage errors (bad input, exit status 2).
@@ -133,8 +134,8 @@ int render_one_frame(const GoldenCommandArguments& arguments) {
     if (spec.name != arguments.frame) continue;
     Renderers renderers;
     const ProducedFrame frame = produce_scene_frame(spec, renderers.of(spec.width, spec.height));
-    save_png(arguments.out, frame.image);
-    write_text_file_atomically(arguments.out + ".hash", to_hex_hash(frame.state_hash));
+    image::save_png(arguments.out, frame.image);
+    image::write_text_file_atomically(arguments.out + ".hash", image::to_hex_hash(frame.state_hash));
     return kGoldenPassed;
   }
   throw demos::UsageError(arguments.files[0] + ": no golden frame named '" + arguments.frame +

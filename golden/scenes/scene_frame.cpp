@@ -15,7 +15,7 @@
 
 namespace impulse2d::golden {
 
-PngText frame_metadata(const GoldenSpec& spec, const World& world,
+image::PngText frame_metadata(const GoldenSpec& spec, const World& world,
                        const RendererFingerprint& renderer) {
   std::string parameters;
   for (const auto& [name, value] : spec.params) {
@@ -60,7 +60,7 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
   const render::Frame frame =
       renderer.render(run.world(), demos::frame_camera(camera, run), options, hud);
 
-  produced.image = Image{frame.width, frame.height, frame.rgba, {}};
+  produced.image = image::Image{frame.width, frame.height, frame.rgba, {}};
   produced.state_hash = run.world().state_hash();
   produced.bodies = body_poses(run.world());
   produced.renderer = split_fingerprint(renderer.fingerprint());

@@ -25,7 +25,7 @@ namespace impulse2d::golden {
 
 /// What a golden frame's PNG says about itself (png_text.h): scene (and file), parameter
 /// overrides, step, simulated time, state hash, renderer and program version.
-PngText frame_metadata(const GoldenSpec& spec, const World& world,
+image::PngText frame_metadata(const GoldenSpec& spec, const World& world,
                        const RendererFingerprint& renderer);
 
 /// The renderer of this process at kGoldenWidth x kGoldenHeight, created on first use and

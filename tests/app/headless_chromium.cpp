@@ -5,7 +5,7 @@
 
 #include <cstdlib>
 
-#include "golden/file_io.h"
+#include "image/file_io.h"
 
 namespace impulse2d::testing {
 namespace {
@@ -59,7 +59,7 @@ std::string ChromiumResult::describe() const {
 
 ChromiumResult load_in_chromium(const ChromiumRun& run) {
   const std::filesystem::path fonts = run.work_dir / "fonts.conf";
-  golden::write_text_file_atomically(fonts, font_config(run.work_dir / "fontconfig-cache"));
+  image::write_text_file_atomically(fonts, font_config(run.work_dir / "fontconfig-cache"));
   ChromiumResult result;
   result.screenshot = run.work_dir / "screenshot.png";
   const std::filesystem::path dom = run.work_dir / "dom.html";
@@ -81,8 +81,8 @@ ChromiumResult load_in_chromium(const ChromiumRun& run) {
       std::system((result.command + " > " + quoted(dom.string()) + " 2> " + quoted(log.string()))
                       .c_str());
   result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.dom = golden::read_text_file(dom);
-  result.log = golden::read_text_file(log);
+  result.dom = image::read_text_file(dom);
+  result.log = image::read_text_file(log);
   return result;
 }
 

@@ -6,8 +6,9 @@
 #include "golden/compare.h"
 #include "golden/diff_images.h"
 #include "golden/error.h"
-#include "golden/file_io.h"
-#include "golden/image.h"
+#include "image/file_io.h"
+#include "image/image.h"
+#include "image/png.h"
 #include "golden/update_mode.h"
 
 namespace impulse2d::testing {
@@ -19,7 +20,7 @@ ScreenshotCheck check_screenshot(const std::string& name, const fs::path& screen
   const fs::path golden = golden_png_path(settings.golden_dir, name);
   const fs::path sidecar_file = fs::path(golden).replace_extension(".json");
   const nlohmann::json sidecar =
-      nlohmann::json::parse(read_text_file(sidecar_file), nullptr, false);
+      nlohmann::json::parse(image::read_text_file(sidecar_file), nullptr, false);
   if (!sidecar.is_object() || !sidecar.contains("tolerance") ||
       !sidecar.value("tolerance_reason", nlohmann::json()).is_string() ||
       !sidecar.value("description", nlohmann::json()).is_string()) {
@@ -28,12 +29,12 @@ ScreenshotCheck check_screenshot(const std::string& name, const fs::path& screen
   }
   const Tolerance tolerance =
       tolerance_from_json(sidecar["tolerance"], "sidecar '" + name + ".json'");
-  const Image actual = load_png(screenshot);
+  const image::Image actual = image::load_png(screenshot);
 
   ScreenshotCheck check;
   FailureClass outcome = FailureClass::MissingGolden;
   if (fs::exists(golden)) {
-    const Image expected = load_png(golden);
+    const image::Image expected = image::load_png(golden);
     const CompareResult compared = compare_images(expected, actual, tolerance);
     outcome = compared.passed() ? FailureClass::None
               : compared.outcome == CompareOutcome::SizeMismatch
@@ -43,10 +44,10 @@ ScreenshotCheck check_screenshot(const std::string& name, const fs::path& screen
                     compared.message();
     if (!compared.passed() && !settings.artifact_root.empty()) {
       const fs::path artifacts = settings.artifact_root / name;
-      save_png(artifacts / "actual.png", actual);
-      save_png(artifacts / "expected.png", expected);
+      image::save_png(artifacts / "actual.png", actual);
+      image::save_png(artifacts / "expected.png", expected);
       if (compared.outcome != CompareOutcome::SizeMismatch) {
-        save_png(artifacts / "diff.png", diff_overlay(expected, actual, tolerance.max_channel_delta));
+        image::save_png(artifacts / "diff.png", diff_overlay(expected, actual, tolerance.max_channel_delta));
       }
       check.message += "\nactual, expected and diff: " + artifacts.string();
     }
@@ -56,7 +57,7 @@ ScreenshotCheck check_screenshot(const std::string& name, const fs::path& screen
   }
   check.message += "\ntolerance: " + sidecar["tolerance_reason"].get<std::string>();
   if (should_write_golden(settings.update_mode, outcome)) {
-    save_png(golden, actual);
+    image::save_png(golden, actual);
     check.golden_written = true;
     check.message += "\nwritten as the golden (GOLDEN_UPDATE=" +
                      update_mode_name(settings.update_mode) + ")";

@@ -10,17 +10,17 @@
 #include <vector>
 
 #include "tests/support/cli_test_support.h"
-#include "golden/png_text.h"
+#include "image/png_text.h"
 
 using namespace cli_test;
-namespace keys = impulse2d::golden::png_keys;
+namespace keys = impulse2d::image::png_keys;
 
 namespace {
 
 /// The tEXt metadata of a PNG file.
-impulse2d::golden::PngText png_text_of(const fs::path& path) {
+impulse2d::image::PngText png_text_of(const fs::path& path) {
   const std::string bytes = read_file(path);
-  return impulse2d::golden::read_png_text(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+  return impulse2d::image::read_png_text(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
 }
 
 /// What `command` prints (its first line), or "" when it fails.
@@ -62,7 +62,7 @@ TEST_F(CliTest, FramesAreNumberedContiguouslyAndIndexed) {
 
 TEST_F(CliTest, EveryFrameCarriesItsMetadata) {
   ASSERT_EQ(run("render pyramid -p rows=3 --frames 0,30 --size 96x64 -o f").status, 0);
-  const impulse2d::golden::PngText text = png_text_of(dir_ / "f/pyramid_00001.png");
+  const impulse2d::image::PngText text = png_text_of(dir_ / "f/pyramid_00001.png");
   EXPECT_EQ(text.at(keys::kScene), "pyramid");
   EXPECT_EQ(text.at(keys::kParameters), "rows=3");
   EXPECT_EQ(text.at(keys::kStep), "30");

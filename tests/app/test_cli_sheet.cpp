@@ -10,16 +10,17 @@
 #include "frames/contact_sheet.h"
 #include "scene/overlays.h"
 #include "tests/support/cli_test_support.h"
-#include "golden/image.h"
+#include "image/image.h"
+#include "image/png.h"
 
 using namespace cli_test;
 
 namespace {
 
 /// The RGBA of pixel (x, y).
-std::array<std::uint8_t, 4> pixel(const impulse2d::golden::Image& image, int x, int y) {
+std::array<std::uint8_t, 4> pixel(const impulse2d::image::Image& image, int x, int y) {
   const std::size_t at = (static_cast<std::size_t>(y) * image.width + x) * 4;
-  return {image.pixels[at], image.pixels[at + 1], image.pixels[at + 2], image.pixels[at + 3]};
+  return {image.rgba[at], image.rgba[at + 1], image.rgba[at + 2], image.rgba[at + 3]};
 }
 
 }  // namespace
@@ -27,7 +28,7 @@ std::array<std::uint8_t, 4> pixel(const impulse2d::golden::Image& image, int x, 
 TEST_F(CliTest, SheetTilesHaveBordersAndGutters) {
   const Result result = run("sheet stack --count 2 --columns 2 --tile 64x48 -o s.png");
   ASSERT_EQ(result.status, 0) << result.err;
-  const impulse2d::golden::Image sheet = impulse2d::golden::load_png(dir_ / "s.png");
+  const impulse2d::image::Image sheet = impulse2d::image::load_png(dir_ / "s.png");
   // 10-pixel gutters around and between the tiles, a 50-pixel title, a 22-pixel label strip.
   ASSERT_EQ(sheet.width, 2 * (64 + 10) + 10);
   ASSERT_EQ(sheet.height, 50 + 48 + 22 + 10 + 10);

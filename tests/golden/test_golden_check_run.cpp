@@ -13,7 +13,7 @@
 #include "tests/golden/test_golden_environment.h"
 #include "tests/golden/test_golden_temp_dir.h"
 #include "golden/check_run.h"
-#include "golden/file_io.h"
+#include "image/file_io.h"
 
 namespace impulse2d::golden {
 namespace {
@@ -27,8 +27,8 @@ constexpr const char* kName = "boxes/settled";
 /// A 16x12 frame: grey background, `body_x` marks a red column; hash and poses follow it.
 ProducedFrame synthetic_frame(int body_x, std::uint64_t state_hash) {
   ProducedFrame frame;
-  frame.image = make_image(16, 12, Rgba{200, 200, 200, 255});
-  for (int y = 2; y < 10; ++y) set_pixel(frame.image, body_x, y, Rgba{220, 30, 30, 255});
+  frame.image = image::make_image(16, 12, image::Rgba{200, 200, 200, 255});
+  for (int y = 2; y < 10; ++y) frame.image.set_pixel(body_x, y, image::Rgba{220, 30, 30, 255});
   frame.state_hash = state_hash;
   frame.bodies = {{"body 0", 0.0, 0.0, 0.0}, {"body 1", 0.1 * body_x, 1.0, 0.0}};
   frame.renderer = {"llvmpipe (test)", "4.5 test"};
@@ -58,7 +58,7 @@ class GoldenCheckRun : public ::testing::Test {
   fs::path failure_dir() const { return temp_.path() / "artifacts" / kName; }
   fs::path golden_png() const { return golden_png_path(temp_.path() / "golden_images", kName); }
   nlohmann::json metrics() const {
-    return nlohmann::json::parse(read_text_file(failure_dir() / "metrics.json"));
+    return nlohmann::json::parse(image::read_text_file(failure_dir() / "metrics.json"));
   }
 
   TempDir temp_;
@@ -97,7 +97,7 @@ TEST_F(GoldenCheckRun, MissingModeWritesTheGoldenAndAPassClearsStaleArtifacts) {
   EXPECT_FALSE(again.golden_written);
   EXPECT_FALSE(fs::exists(failure_dir().parent_path()))
       << "the stale failure must leave the report";
-  const std::string report = read_text_file(temp_.path() / "artifacts" / "index.html");
+  const std::string report = image::read_text_file(temp_.path() / "artifacts" / "index.html");
   EXPECT_NE(report.find("0 failures"), std::string::npos);
 }
 
@@ -141,7 +141,7 @@ TEST_F(GoldenCheckRun, SameStateDifferentPixelsIsRasterisation) {
   bless(5, 1);
   const CheckOutcome outcome = check([] {
     ProducedFrame frame = synthetic_frame(5, 1);
-    set_pixel(frame.image, 0, 0, Rgba{0, 0, 0, 255});
+    frame.image.set_pixel(0, 0, image::Rgba{0, 0, 0, 255});
     return frame;
   });
   EXPECT_EQ(outcome.failure_class, FailureClass::RasterisationDiffers) << outcome.message();
@@ -159,14 +159,14 @@ TEST_F(GoldenCheckRun, SidecarToleranceIsAppliedAndNamed) {
 
   const CheckOutcome slight = check([] {
     ProducedFrame frame = synthetic_frame(5, 1);
-    set_pixel(frame.image, 0, 0, Rgba{201, 200, 200, 255});
+    frame.image.set_pixel(0, 0, image::Rgba{201, 200, 200, 255});
     return frame;
   });
   EXPECT_EQ(slight.failure_class, FailureClass::None) << slight.message();
 
   const CheckOutcome cluster = check([] {
     ProducedFrame frame = synthetic_frame(5, 1);
-    for (int y = 0; y < 3; ++y) set_pixel(frame.image, 0, y, Rgba{0, 0, 0, 255});
+    for (int y = 0; y < 3; ++y) frame.image.set_pixel(0, y, image::Rgba{0, 0, 0, 255});
     return frame;
   });
   EXPECT_EQ(cluster.failure_class, FailureClass::RasterisationDiffers);

@@ -11,9 +11,10 @@
 #include <stdexcept>
 
 #include "tests/support/test_render_support.h"
-#include "golden/file_io.h"
-#include "golden/hex_hash.h"
-#include "golden/image.h"
+#include "image/file_io.h"
+#include "image/hex_hash.h"
+#include "image/image.h"
+#include "image/png.h"
 #include "golden/scenes/golden_catalog.h"
 #include "golden/scenes/scene_frame.h"
 
@@ -42,8 +43,8 @@ TEST(GoldenChild, WriteFrame) {
                                   : ChildVariant::None;
   const ProducedFrame frame =
       produce_scene_frame(*spec, shared_golden_renderer(), child_variant(chosen));
-  save_png(output, frame.image);
-  write_text_file_atomically(std::string(output) + ".hash", to_hex_hash(frame.state_hash));
+  image::save_png(output, frame.image);
+  image::write_text_file_atomically(std::string(output) + ".hash", image::to_hex_hash(frame.state_hash));
 }
 
 }  // namespace
@@ -73,8 +74,8 @@ FrameProducer child_process_producer(const std::string& id,
                                std::to_string(status) + ")");
     }
     ProducedFrame frame;
-    frame.image = load_png(output);
-    const auto hash = parse_hex_hash(read_text_file(output.string() + ".hash"));
+    frame.image = image::load_png(output);
+    const auto hash = image::parse_hex_hash(image::read_text_file(output.string() + ".hash"));
     fs::remove_all(directory);
     if (!hash) throw std::runtime_error("golden '" + id + "': the child wrote no state hash");
     frame.state_hash = *hash;

@@ -14,8 +14,9 @@
 #include <string>
 
 #include "tests/golden/test_golden_temp_dir.h"
-#include "golden/file_io.h"
-#include "golden/image.h"
+#include "image/file_io.h"
+#include "image/image.h"
+#include "image/png.h"
 
 namespace impulse2d::golden {
 namespace {
@@ -45,8 +46,8 @@ class GoldenCommand : public ::testing::Test {
     const int status = std::system(command.c_str());
     Result result;
     result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_text_file(out);
-    result.err = read_text_file(err);
+    result.out = image::read_text_file(out);
+    result.err = image::read_text_file(err);
     return result;
   }
 
@@ -57,12 +58,12 @@ class GoldenCommand : public ::testing::Test {
   /// Edits the scene file `name` (in scenes/) as JSON.
   void edit_scene(const std::string& name, const std::function<void(json&)>& change) const {
     const fs::path file = project_ / "scenes" / name;
-    json scene = json::parse(read_text_file(file));
+    json scene = json::parse(image::read_text_file(file));
     change(scene);
-    write_text_file_atomically(file, scene.dump(2));
+    image::write_text_file_atomically(file, scene.dump(2));
   }
 
-  std::string junit() const { return read_text_file(project_ / "junit.xml"); }
+  std::string junit() const { return image::read_text_file(project_ / "junit.xml"); }
 
   testing::TempDir temp_;
   fs::path project_ = temp_.path() / "project";
@@ -102,11 +103,11 @@ TEST_F(GoldenCommand, RoundingSizedChangeIsNumericalNoise) {
 
 TEST_F(GoldenCommand, PixelChangeWithTheSamePhysicsIsRasterisation) {
   const fs::path golden = project_ / "scenes" / "goldens" / "dominoes" / "start.png";
-  Image image = load_png(golden);
-  Rgba pixel = get_pixel(image, 300, 150);
+  image::Image image = image::load_png(golden);
+  image::Rgba pixel = image.pixel(300, 150);
   pixel.r = static_cast<std::uint8_t>(pixel.r ^ 0x40);
-  set_pixel(image, 300, 150, pixel);
-  save_png(golden, image);
+  image.set_pixel(300, 150, pixel);
+  image::save_png(golden, image);
   const Result result = check();
   EXPECT_EQ(result.status, 1) << result.out << result.err;
   EXPECT_NE(result.out.find("golden 'dominoes/start': rasterisation differs"), std::string::npos)
@@ -135,7 +136,7 @@ TEST_F(GoldenCommand, MissingGoldenFailsAndUpdateWritesIt) {
 TEST_F(GoldenCommand, AnotherRendererChecksThePhysicsUntilItHasItsOwnBaseline) {
   const std::string softpipe = "CI= GALLIUM_DRIVER=softpipe";
   const fs::path goldens = project_ / "scenes" / "goldens" / "dominoes";
-  const std::string primary = read_text_file(goldens / "start.png");
+  const std::string primary = image::read_text_file(goldens / "start.png");
   const Result physics_only = run("check scenes/dominoes.json --junit junit.xml", softpipe);
   EXPECT_EQ(physics_only.status, 0) << physics_only.out << physics_only.err;
   EXPECT_NE(physics_only.out.find("skip golden 'dominoes/start': no baseline for this renderer: "
@@ -148,7 +149,7 @@ TEST_F(GoldenCommand, AnotherRendererChecksThePhysicsUntilItHasItsOwnBaseline) {
 
   // The physics is still checked on that renderer.
   const fs::path scene = project_ / "scenes" / "dominoes.json";
-  const std::string original_scene = read_text_file(scene);
+  const std::string original_scene = image::read_text_file(scene);
   edit_scene("dominoes.json", [](json& file) { file["events"][0]["impulse"][0] = 0.42; });
   const Result changed = run("check scenes/dominoes.json", softpipe);
   EXPECT_EQ(changed.status, 1) << changed.out;
@@ -157,13 +158,13 @@ TEST_F(GoldenCommand, AnotherRendererChecksThePhysicsUntilItHasItsOwnBaseline) {
   EXPECT_NE(changed.out.find("Image: not compared (no baseline for this renderer"),
             std::string::npos)
       << changed.out;
-  write_text_file_atomically(scene, original_scene);
+  image::write_text_file_atomically(scene, original_scene);
 
   // update adds the renderer's baseline beside the golden, which stays as it was.
   const Result update = run("update scenes/dominoes.json", softpipe);
   EXPECT_EQ(update.status, 0) << update.out << update.err;
   EXPECT_NE(update.out.find("WROTE dominoes/start"), std::string::npos) << update.out;
-  EXPECT_EQ(read_text_file(goldens / "start.png"), primary);
+  EXPECT_EQ(image::read_text_file(goldens / "start.png"), primary);
   int baselines = 0;
   for (const auto& entry : fs::directory_iterator(goldens)) {
     baselines += entry.path().filename().string().rfind("start@softpipe-", 0) == 0 ? 1 : 0;
@@ -188,7 +189,7 @@ TEST_F(GoldenCommand, BadBlockIsAnInputErrorWithNothingWritten) {
 
 TEST_F(GoldenCommand, ReportDirectoryOfSomethingElseIsNotEmptied) {
   fs::create_directories(project_ / "mine");
-  write_text_file_atomically(project_ / "mine" / "notes.txt", "keep");
+  image::write_text_file_atomically(project_ / "mine" / "notes.txt", "keep");
   const Result result = check("--report mine");
   EXPECT_EQ(result.status, 2) << result.out << result.err;
   EXPECT_TRUE(fs::exists(project_ / "mine" / "notes.txt"));

@@ -9,8 +9,9 @@
 
 #include "tests/golden/test_golden_temp_dir.h"
 #include "golden/diff_command.h"
-#include "golden/file_io.h"
-#include "golden/image.h"
+#include "image/file_io.h"
+#include "image/image.h"
+#include "image/png.h"
 
 namespace impulse2d::golden {
 namespace {
@@ -20,7 +21,7 @@ using testing::TempDir;
 
 class GoldenDiffCommand : public ::testing::Test {
  protected:
-  GoldenDiffCommand() { save_png(a_, make_image(20, 10, Rgba{10, 20, 30, 255})); }
+  GoldenDiffCommand() { image::save_png(a_, image::make_image(20, 10, image::Rgba{10, 20, 30, 255})); }
   /// Runs the command on a.png and `b`; fills out_ and err_.
   int run(const fs::path& b, const fs::path& out_dir = {}) {
     out_.str("");
@@ -37,19 +38,19 @@ class GoldenDiffCommand : public ::testing::Test {
 
 TEST_F(GoldenDiffCommand, IdenticalPixelsAreAnExactMatchAndWriteNothing) {
   const fs::path b = temp_.path() / "b.png";
-  save_png(b, load_png(a_));
+  image::save_png(b, image::load_png(a_));
   EXPECT_EQ(run(b, out_dir_), kDiffSame);
   EXPECT_NE(out_.str().find("exact match"), std::string::npos) << out_.str();
   EXPECT_FALSE(fs::exists(out_dir_));
 }
 
 TEST_F(GoldenDiffCommand, DifferenceIsReportedWithEveryArtifact) {
-  Image changed = load_png(a_);
+  image::Image changed = image::load_png(a_);
   for (int y = 2; y < 7; ++y) {
-    for (int x = 2; x < 7; ++x) set_pixel(changed, x, y, Rgba{250, 20, 30, 255});
+    for (int x = 2; x < 7; ++x) changed.set_pixel(x, y, image::Rgba{250, 20, 30, 255});
   }
   const fs::path b = temp_.path() / "b.png";
-  save_png(b, changed);
+  image::save_png(b, changed);
   EXPECT_EQ(run(b, out_dir_), kDiffDiffers);
   EXPECT_NE(out_.str().find("25 changed pixels"), std::string::npos) << out_.str();
   EXPECT_NE(out_.str().find("report: " + (out_dir_ / "index.html").string()), std::string::npos);
@@ -57,15 +58,15 @@ TEST_F(GoldenDiffCommand, DifferenceIsReportedWithEveryArtifact) {
        {"expected.png", "actual.png", "diff.png", "heatmap.png", "metrics.json", "index.html"}) {
     EXPECT_TRUE(fs::exists(out_dir_ / file)) << file;
   }
-  EXPECT_NE(read_text_file(out_dir_ / "index.html").find("images differ"), std::string::npos);
+  EXPECT_NE(image::read_text_file(out_dir_ / "index.html").find("images differ"), std::string::npos);
   EXPECT_TRUE(err_.str().empty());
 }
 
 TEST_F(GoldenDiffCommand, WithoutOutDirOnlyTheVerdictIsPrinted) {
-  Image changed = load_png(a_);
-  set_pixel(changed, 0, 0, Rgba{0, 0, 0, 255});
+  image::Image changed = image::load_png(a_);
+  changed.set_pixel(0, 0, image::Rgba{0, 0, 0, 255});
   const fs::path b = temp_.path() / "b.png";
-  save_png(b, changed);
+  image::save_png(b, changed);
   EXPECT_EQ(run(b), kDiffDiffers);
   EXPECT_NE(out_.str().find("1 changed pixels"), std::string::npos) << out_.str();
   EXPECT_EQ(out_.str().find("report:"), std::string::npos);
@@ -73,7 +74,7 @@ TEST_F(GoldenDiffCommand, WithoutOutDirOnlyTheVerdictIsPrinted) {
 
 TEST_F(GoldenDiffCommand, SizeMismatchDiffersWithoutDiffImages) {
   const fs::path b = temp_.path() / "b.png";
-  save_png(b, make_image(21, 10, Rgba{10, 20, 30, 255}));
+  image::save_png(b, image::make_image(21, 10, image::Rgba{10, 20, 30, 255}));
   EXPECT_EQ(run(b, out_dir_), kDiffDiffers);
   EXPECT_NE(out_.str().find("size mismatch: golden is 20x10, actual is 21x10"), std::string::npos)
       << out_.str();
@@ -90,11 +91,11 @@ TEST_F(GoldenDiffCommand, UnreadableInputIsAnErrorNamingTheFile) {
 }
 
 TEST_F(GoldenDiffCommand, ThresholdAcceptsSmallDeltasOnly) {
-  Image changed = load_png(a_);
-  set_pixel(changed, 3, 3, Rgba{11, 20, 30, 255});
-  set_pixel(changed, 4, 3, Rgba{10, 22, 30, 255});
+  image::Image changed = image::load_png(a_);
+  changed.set_pixel(3, 3, image::Rgba{11, 20, 30, 255});
+  changed.set_pixel(4, 3, image::Rgba{10, 22, 30, 255});
   const fs::path b = temp_.path() / "b.png";
-  save_png(b, changed);
+  image::save_png(b, changed);
   DiffLimits limits;
   limits.threshold = 2;
   EXPECT_EQ(run_diff_command(a_.string(), b.string(), "", out_, err_, limits), kDiffSame);
@@ -105,10 +106,10 @@ TEST_F(GoldenDiffCommand, ThresholdAcceptsSmallDeltasOnly) {
 
 /// a.png with `count` pixels of row 5 changed from column 0 on.
 fs::path with_changed_pixels(const fs::path& directory, const fs::path& a, int count) {
-  Image changed = load_png(a);
-  for (int x = 0; x < count; ++x) set_pixel(changed, x, 5, Rgba{200, 0, 0, 255});
+  image::Image changed = image::load_png(a);
+  for (int x = 0; x < count; ++x) changed.set_pixel(x, 5, image::Rgba{200, 0, 0, 255});
   const fs::path b = directory / ("b" + std::to_string(count) + ".png");
-  save_png(b, changed);
+  image::save_png(b, changed);
   return b;
 }
 
@@ -164,12 +165,12 @@ TEST_F(GoldenDiffCommand, BadLimitsAreUsageErrorsNamingTheOption) {
 }
 
 /// A 20x10 frame with the metadata the golden tools write.
-Image frame_with_metadata(const std::string& state_hash, const std::string& renderer) {
-  Image image = make_image(20, 10, Rgba{10, 20, 30, 255});
-  image.text = {{png_keys::kScene, "stack"},       {png_keys::kParameters, "defaults"},
-                {png_keys::kStep, "60"},           {png_keys::kTime, "1"},
-                {png_keys::kStateHash, state_hash}, {png_keys::kRenderer, renderer},
-                {png_keys::kSoftware, "impulse2d 0.1.0"}};
+image::Image frame_with_metadata(const std::string& state_hash, const std::string& renderer) {
+  image::Image image = image::make_image(20, 10, image::Rgba{10, 20, 30, 255});
+  image.text = {{image::png_keys::kScene, "stack"},       {image::png_keys::kParameters, "defaults"},
+                {image::png_keys::kStep, "60"},           {image::png_keys::kTime, "1"},
+                {image::png_keys::kStateHash, state_hash}, {image::png_keys::kRenderer, renderer},
+                {image::png_keys::kSoftware, "impulse2d 0.1.0"}};
   return image;
 }
 
@@ -177,15 +178,15 @@ TEST_F(GoldenDiffCommand, MetadataRoundTripsAndTellsPhysicsFromPixels) {
   const fs::path a = temp_.path() / "meta_a.png";
   const fs::path b = temp_.path() / "meta_b.png";
   const fs::path c = temp_.path() / "meta_c.png";
-  save_png(a, frame_with_metadata("00000000000000aa", "llvmpipe"));
-  Image moved = frame_with_metadata("00000000000000bb", "llvmpipe");
-  set_pixel(moved, 3, 3, Rgba{200, 0, 0, 255});
-  save_png(b, moved);
-  Image redrawn = frame_with_metadata("00000000000000aa", "softpipe");
-  set_pixel(redrawn, 3, 3, Rgba{11, 20, 30, 255});
-  save_png(c, redrawn);
-  EXPECT_EQ(load_png(a).text.at(png_keys::kStateHash), "00000000000000aa");
-  EXPECT_EQ(load_png(a).pixels, make_image(20, 10, Rgba{10, 20, 30, 255}).pixels);
+  image::save_png(a, frame_with_metadata("00000000000000aa", "llvmpipe"));
+  image::Image moved = frame_with_metadata("00000000000000bb", "llvmpipe");
+  moved.set_pixel(3, 3, image::Rgba{200, 0, 0, 255});
+  image::save_png(b, moved);
+  image::Image redrawn = frame_with_metadata("00000000000000aa", "softpipe");
+  redrawn.set_pixel(3, 3, image::Rgba{11, 20, 30, 255});
+  image::save_png(c, redrawn);
+  EXPECT_EQ(image::load_png(a).text.at(image::png_keys::kStateHash), "00000000000000aa");
+  EXPECT_EQ(image::load_png(a).rgba, image::make_image(20, 10, image::Rgba{10, 20, 30, 255}).rgba);
 
   out_.str("");
   EXPECT_EQ(run_diff_command(a.string(), b.string(), "", out_, err_), kDiffDiffers);

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/shape.h"
+#include "core/solver/world_state.h"
 #include "core/world.h"
 #include "scene/scene.h"
 #include "tests/golden/test_golden_support.h"
@@ -65,16 +66,16 @@ SceneVariant mutate_polygon_inertia(SumOrder order, float factor, MutationCount*
       build(world, params);
       *count = {};
       for (const BodyId id : world.body_ids()) {
-        Body& body = const_cast<Body&>(world.body(id));
-        if (body.type != BodyType::Dynamic || body.shape.type != ShapeType::Polygon ||
+        Body& body = WorldState::of(world).bodies[id.index];
+        if (body.type != BodyType::Dynamic || body.shape.type() != ShapeType::Polygon ||
             body.inverse_inertia == 0.0f) {
           continue;
         }
         const float density = body.material.density;
-        if (polygon_inertia(body.shape.polygon, density, SumOrder::AsTheCore) != body.inertia) {
+        if (polygon_inertia(body.shape.polygon(), density, SumOrder::AsTheCore) != body.inertia) {
           throw std::logic_error("polygon_inertia no longer mirrors the core's formula");
         }
-        const float inertia = polygon_inertia(body.shape.polygon, density, order) * factor;
+        const float inertia = polygon_inertia(body.shape.polygon(), density, order) * factor;
         ++count->bodies;
         if (inertia != body.inertia) ++count->changed;
         body.inertia = inertia;

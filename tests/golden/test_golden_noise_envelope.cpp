@@ -120,8 +120,8 @@ TEST(NoiseEnvelope, JsonRoundTripsAndBadFieldsAreNamed) {
 /// A frame of one body "ball" at x = `x`: hash and pixels follow x.
 ProducedFrame ball_frame(double x) {
   ProducedFrame frame;
-  frame.image = make_image(8, 8, Rgba{200, 200, 200, 255});
-  set_pixel(frame.image, static_cast<int>(x * 2.0) % 8, 4, Rgba{0, 0, 0, 255});
+  frame.image = image::make_image(8, 8, image::Rgba{200, 200, 200, 255});
+  frame.image.set_pixel(static_cast<int>(x * 2.0) % 8, 4, image::Rgba{0, 0, 0, 255});
   frame.state_hash = static_cast<std::uint64_t>(x * 1000.0);
   frame.bodies = {{"ball", x, 2.0, 0.0}};
   frame.samples = {{10, 50.0, 1.0, -2.0, 0.5, 3}};

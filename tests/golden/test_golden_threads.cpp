@@ -10,7 +10,7 @@
 
 #include "tests/golden/test_golden_child.h"
 #include "golden/compare.h"
-#include "golden/hex_hash.h"
+#include "image/hex_hash.h"
 #include "golden/scenes/golden_catalog.h"
 #include "golden/scenes/scene_frame.h"
 
@@ -32,7 +32,7 @@ TEST(GoldenThreads, OneAndTwoRasteriserThreadsDrawTheSameFrame) {
       EXPECT_EQ(result.outcome, CompareOutcome::ExactMatch)
           << id << ": LP_NUM_THREADS=" << threads
           << " draws another frame than this process: " << result.message();
-      EXPECT_EQ(to_hex_hash(child.state_hash), to_hex_hash(here.state_hash))
+      EXPECT_EQ(image::to_hex_hash(child.state_hash), image::to_hex_hash(here.state_hash))
           << id << " with LP_NUM_THREADS=" << threads << ": physics state differs between "
           << "processes";
     }

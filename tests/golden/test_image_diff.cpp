@@ -12,9 +12,10 @@
 #include "golden/diff_images.h"
 #include "golden/error.h"
 #include "golden/failure.h"
-#include "golden/file_io.h"
-#include "golden/hex_hash.h"
-#include "golden/image.h"
+#include "image/file_io.h"
+#include "image/hex_hash.h"
+#include "image/image.h"
+#include "image/png.h"
 #include "golden/inventory.h"
 #include "golden/report.h"
 #include "golden/sidecar.h"
@@ -37,17 +38,17 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr Rgba kBackground{30, 60, 90, 255};
+constexpr image::Rgba kBackground{30, 60, 90, 255};
 
 using testing::TempDir;
 
 /// Adds `delta` to the red channel of every pixel in the square [x, x+size) x [y, y+size).
-void shift_red(Image& image, int x, int y, int size, int delta) {
+void shift_red(image::Image& image, int x, int y, int size, int delta) {
   for (int row = y; row < y + size; ++row) {
     for (int column = x; column < x + size; ++column) {
-      Rgba colour = get_pixel(image, column, row);
+      image::Rgba colour = image.pixel(column, row);
       colour.r = static_cast<std::uint8_t>(colour.r + delta);
-      set_pixel(image, column, row, colour);
+      image.set_pixel(column, row, colour);
     }
   }
 }
@@ -79,27 +80,27 @@ Sidecar example_sidecar() {
 // ---- image -------------------------------------------------------------------------------
 
 TEST(GoldenImage, HashCoversSizeAndPixels) {
-  const Image a = make_image(8, 2, kBackground);
-  const Image b = make_image(2, 8, kBackground);
-  EXPECT_EQ(a.pixels, b.pixels);
-  EXPECT_NE(rgba_hash(a), rgba_hash(b));
-  Image c = a;
-  set_pixel(c, 7, 1, Rgba{30, 60, 90, 254});
-  EXPECT_NE(rgba_hash(a), rgba_hash(c));
-  EXPECT_EQ(rgba_hash(a), rgba_hash(make_image(8, 2, kBackground)));
+  const image::Image a = image::make_image(8, 2, kBackground);
+  const image::Image b = image::make_image(2, 8, kBackground);
+  EXPECT_EQ(a.rgba, b.rgba);
+  EXPECT_NE(a.hash(), b.hash());
+  image::Image c = a;
+  c.set_pixel(7, 1, image::Rgba{30, 60, 90, 254});
+  EXPECT_NE(a.hash(), c.hash());
+  EXPECT_EQ(a.hash(), image::make_image(8, 2, kBackground).hash());
 }
 
 TEST(GoldenImage, PngRoundTripKeepsEveryByteAndLeavesNoTemporaryFile) {
   TempDir dir;
-  Image image = make_image(17, 9, kBackground);
-  set_pixel(image, 3, 4, Rgba{255, 0, 128, 0});
-  set_pixel(image, 16, 8, Rgba{1, 2, 3, 77});
+  image::Image image = image::make_image(17, 9, kBackground);
+  image.set_pixel(3, 4, image::Rgba{255, 0, 128, 0});
+  image.set_pixel(16, 8, image::Rgba{1, 2, 3, 77});
   const fs::path file = dir.path() / "nested" / "image.png";
-  save_png(file, image);
-  const Image loaded = load_png(file);
+  image::save_png(file, image);
+  const image::Image loaded = image::load_png(file);
   EXPECT_EQ(loaded.width, 17);
   EXPECT_EQ(loaded.height, 9);
-  EXPECT_EQ(rgba_hash(loaded), rgba_hash(image));
+  EXPECT_EQ(loaded.hash(), image.hash());
   int files = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(file.parent_path())) ++files;
   EXPECT_EQ(files, 1);
@@ -108,21 +109,21 @@ TEST(GoldenImage, PngRoundTripKeepsEveryByteAndLeavesNoTemporaryFile) {
 TEST(GoldenImage, LoadErrorsNameTheFile) {
   TempDir dir;
   const fs::path missing = dir.path() / "missing.png";
-  EXPECT_NE(error_of([&] { load_png(missing); }).find("missing.png"), std::string::npos);
+  EXPECT_NE(error_of([&] { image::load_png(missing); }).find("missing.png"), std::string::npos);
   const fs::path garbage = dir.path() / "garbage.png";
-  write_text_file_atomically(garbage, "not a png");
-  const std::string message = error_of([&] { load_png(garbage); });
+  image::write_text_file_atomically(garbage, "not a png");
+  const std::string message = error_of([&] { image::load_png(garbage); });
   EXPECT_NE(message.find("cannot decode PNG"), std::string::npos) << message;
   EXPECT_NE(message.find("garbage.png"), std::string::npos) << message;
 }
 
 TEST(GoldenHexHash, RoundTripsAndRejectsMalformedText) {
-  EXPECT_EQ(to_hex_hash(0x00000000000000ffull), "00000000000000ff");
-  EXPECT_EQ(parse_hex_hash("0123456789ABCDEF"), 0x0123456789abcdefull);
-  EXPECT_EQ(parse_hex_hash(to_hex_hash(0xfedcba9876543210ull)), 0xfedcba9876543210ull);
-  EXPECT_FALSE(parse_hex_hash("123"));
-  EXPECT_FALSE(parse_hex_hash("0x23456789abcdef"));
-  EXPECT_FALSE(parse_hex_hash("0123456789abcdeg"));
+  EXPECT_EQ(image::to_hex_hash(0x00000000000000ffull), "00000000000000ff");
+  EXPECT_EQ(image::parse_hex_hash("0123456789ABCDEF"), 0x0123456789abcdefull);
+  EXPECT_EQ(image::parse_hex_hash(image::to_hex_hash(0xfedcba9876543210ull)), 0xfedcba9876543210ull);
+  EXPECT_FALSE(image::parse_hex_hash("123"));
+  EXPECT_FALSE(image::parse_hex_hash("0x23456789abcdef"));
+  EXPECT_FALSE(image::parse_hex_hash("0123456789abcdeg"));
 }
 
 TEST(GoldenBase64, MatchesRfc4648Vectors) {
@@ -142,8 +143,8 @@ TEST(GoldenBase64, MatchesRfc4648Vectors) {
 // ---- comparison ----------------------------------------------------------------------------
 
 TEST(GoldenCompare, IdenticalImagesAreAnExactMatchWithoutMetrics) {
-  const Image golden = make_image(32, 32, kBackground);
-  const CompareResult result = compare_images(golden, make_image(32, 32, kBackground));
+  const image::Image golden = image::make_image(32, 32, kBackground);
+  const CompareResult result = compare_images(golden, image::make_image(32, 32, kBackground));
   EXPECT_EQ(result.outcome, CompareOutcome::ExactMatch);
   EXPECT_TRUE(result.passed());
   EXPECT_EQ(result.expected_hash, result.actual_hash);
@@ -152,8 +153,8 @@ TEST(GoldenCompare, IdenticalImagesAreAnExactMatchWithoutMetrics) {
 }
 
 TEST(GoldenCompare, OnePixelOffByOnePassesWithinChannelTolerance) {
-  const Image golden = make_image(32, 32, kBackground);
-  Image actual = golden;
+  const image::Image golden = image::make_image(32, 32, kBackground);
+  image::Image actual = golden;
   shift_red(actual, 5, 7, 1, 1);
   Tolerance tolerance;
   tolerance.max_channel_delta = 1;
@@ -168,8 +169,8 @@ TEST(GoldenCompare, OnePixelOffByOnePassesWithinChannelTolerance) {
 }
 
 TEST(GoldenCompare, OnePixelBeyondToleranceFailsWhenStrict) {
-  const Image golden = make_image(32, 32, kBackground);
-  Image actual = golden;
+  const image::Image golden = image::make_image(32, 32, kBackground);
+  image::Image actual = golden;
   shift_red(actual, 5, 7, 1, 1);
   const CompareResult result = compare_images(golden, actual);
   EXPECT_EQ(result.outcome, CompareOutcome::ExceedsTolerance);
@@ -201,8 +202,8 @@ Tolerance cluster_sensitive_tolerance() {
 
 TEST(GoldenCompare, FiveByFiveClusterFailsWindowRuleThoughTotalsAreWithinLimits) {
   for (int side : {256, 1024}) {  // the rule does not loosen as the image grows
-    const Image golden = make_image(side, side, kBackground);
-    Image actual = golden;
+    const image::Image golden = image::make_image(side, side, kBackground);
+    image::Image actual = golden;
     shift_red(actual, 40, 32, 5, 50);
     const CompareResult result = compare_images(golden, actual, cluster_sensitive_tolerance());
     EXPECT_EQ(result.outcome, CompareOutcome::ExceedsTolerance) << side;
@@ -229,8 +230,8 @@ TEST(GoldenCompare, FiveByFiveClusterFailsWindowRuleThoughTotalsAreWithinLimits)
 }
 
 TEST(GoldenCompare, SameCountScatteredPassesWindowRule) {
-  const Image golden = make_image(256, 256, kBackground);
-  Image actual = golden;
+  const image::Image golden = image::make_image(256, 256, kBackground);
+  image::Image actual = golden;
   for (int i = 0; i < 25; ++i) shift_red(actual, (i % 5) * 16, (i / 5) * 16, 1, 50);
   const CompareResult result = compare_images(golden, actual, cluster_sensitive_tolerance());
   EXPECT_EQ(result.outcome, CompareOutcome::WithinTolerance) << result.message();
@@ -241,8 +242,8 @@ TEST(GoldenCompare, SameCountScatteredPassesWindowRule) {
 }
 
 TEST(GoldenCompare, WindowIsClampedToSmallImages) {
-  const Image golden = make_image(4, 3, kBackground);
-  Image actual = golden;
+  const image::Image golden = image::make_image(4, 3, kBackground);
+  image::Image actual = golden;
   shift_red(actual, 0, 0, 3, 9);
   const CompareResult result = compare_images(golden, actual);
   EXPECT_EQ(result.metrics.window_width, 4);
@@ -251,25 +252,25 @@ TEST(GoldenCompare, WindowIsClampedToSmallImages) {
 }
 
 TEST(GoldenCompare, RejectsMalformedPixelBuffers) {
-  Image broken = make_image(4, 4, kBackground);
-  broken.pixels.pop_back();
+  image::Image broken = image::make_image(4, 4, kBackground);
+  broken.rgba.pop_back();
   const std::string message =
-      error_of([&] { compare_images(make_image(4, 4, kBackground), broken); });
+      error_of([&] { compare_images(image::make_image(4, 4, kBackground), broken); });
   EXPECT_NE(message.find("actual image 4x4 holds 63 bytes"), std::string::npos) << message;
 }
 
 TEST(GoldenCompare, SizeMismatchIsItsOwnOutcome) {
   const CompareResult result =
-      compare_images(make_image(64, 48, kBackground), make_image(48, 64, kBackground));
+      compare_images(image::make_image(64, 48, kBackground), image::make_image(48, 64, kBackground));
   EXPECT_EQ(result.outcome, CompareOutcome::SizeMismatch);
   EXPECT_FALSE(result.passed());
   EXPECT_NE(result.message().find("golden is 64x48, actual is 48x64"), std::string::npos);
 }
 
 TEST(GoldenCompare, AlphaOnlyDifferenceIsDetectedAndNamed) {
-  const Image golden = make_image(16, 16, kBackground);
-  Image actual = golden;
-  set_pixel(actual, 3, 3, Rgba{30, 60, 90, 200});
+  const image::Image golden = image::make_image(16, 16, kBackground);
+  image::Image actual = golden;
+  actual.set_pixel(3, 3, image::Rgba{30, 60, 90, 200});
   const CompareResult result = compare_images(golden, actual);
   EXPECT_EQ(result.outcome, CompareOutcome::ExceedsTolerance);
   EXPECT_TRUE(result.metrics.alpha_only);
@@ -277,7 +278,7 @@ TEST(GoldenCompare, AlphaOnlyDifferenceIsDetectedAndNamed) {
   EXPECT_EQ(result.metrics.channel_max_delta[3], 55);
   EXPECT_NE(result.message().find("only alpha differs"), std::string::npos);
 
-  set_pixel(actual, 4, 4, Rgba{31, 60, 90, 255});
+  actual.set_pixel(4, 4, image::Rgba{31, 60, 90, 255});
   EXPECT_FALSE(compare_images(golden, actual).metrics.alpha_only);
 }
 
@@ -308,7 +309,7 @@ TEST(GoldenTolerance, DefaultIsStrictAndOverridesAreValidated) {
 // ---- failure classes -----------------------------------------------------------------------
 
 /// A check whose golden exists and whose state hash matches, comparing `golden` and `actual`.
-GoldenCheck check_of(const Image& golden, const Image& actual) {
+GoldenCheck check_of(const image::Image& golden, const image::Image& actual) {
   GoldenCheck check;
   check.name = "circles/start";
   check.comparison = compare_images(golden, actual);
@@ -320,8 +321,8 @@ GoldenCheck check_of(const Image& golden, const Image& actual) {
 }
 
 TEST(GoldenFailure, EachClassIsRecognisedWithItsOwnMessage) {
-  const Image golden = make_image(16, 16, kBackground);
-  Image changed = golden;
+  const image::Image golden = image::make_image(16, 16, kBackground);
+  image::Image changed = golden;
   shift_red(changed, 2, 2, 2, 20);
 
   GoldenCheck passing = check_of(golden, golden);
@@ -336,7 +337,7 @@ TEST(GoldenFailure, EachClassIsRecognisedWithItsOwnMessage) {
             std::string::npos);
   EXPECT_NE(failure_message(missing).find("promote_goldens.sh"), std::string::npos);
 
-  GoldenCheck resized = check_of(golden, make_image(8, 16, kBackground));
+  GoldenCheck resized = check_of(golden, image::make_image(8, 16, kBackground));
   EXPECT_EQ(classify_failure(resized), FailureClass::SizeMismatch);
   EXPECT_NE(failure_message(resized).find("golden is 16x16, actual is 8x16"), std::string::npos);
 
@@ -369,8 +370,8 @@ TEST(GoldenFailure, EachClassIsRecognisedWithItsOwnMessage) {
 }
 
 TEST(GoldenFailure, NondeterminismIsNotAbsorbedByTolerance) {
-  const Image golden = make_image(16, 16, kBackground);
-  Image nearly = golden;
+  const image::Image golden = image::make_image(16, 16, kBackground);
+  image::Image nearly = golden;
   shift_red(nearly, 1, 1, 1, 1);
   Tolerance generous;
   generous.max_channel_delta = 10;
@@ -424,7 +425,7 @@ TEST(GoldenSidecar, RoundTripsThroughAFile) {
   ASSERT_EQ(loaded.bodies.size(), 2u);
   EXPECT_EQ(loaded.bodies[1].name, "ball 1");
   EXPECT_EQ(loaded.bodies[1].angle, 0.125);
-  EXPECT_NE(read_text_file(file).find("\"state_hash\": \"0123456789abcdef\""), std::string::npos);
+  EXPECT_NE(image::read_text_file(file).find("\"state_hash\": \"0123456789abcdef\""), std::string::npos);
 
   Sidecar unreadable = sidecar;
   unreadable.scene.clear();
@@ -478,7 +479,7 @@ TEST(GoldenSidecar, UnreadableFilesAreClearErrors) {
   std::string message = error_of([&] { read_sidecar(dir.path() / "none.json"); });
   EXPECT_NE(message.find("none.json"), std::string::npos) << message;
   const fs::path broken = dir.path() / "broken.json";
-  write_text_file_atomically(broken, "{\"scene\": ");
+  image::write_text_file_atomically(broken, "{\"scene\": ");
   message = error_of([&] { read_sidecar(broken, "circles/broken.json"); });
   EXPECT_NE(message.find("sidecar 'circles/broken.json': not valid JSON"), std::string::npos)
       << message;
@@ -548,32 +549,32 @@ TEST(GoldenUpdateMode, DecidesWhichGoldensToWrite) {
 // ---- pictures, artifacts and the report ------------------------------------------------------
 
 TEST(GoldenDiffImages, OverlayMarksDifferencesAndHeatmapScalesToTheLargest) {
-  const Image golden = make_image(8, 8, kBackground);
-  Image actual = golden;
+  const image::Image golden = image::make_image(8, 8, kBackground);
+  image::Image actual = golden;
   shift_red(actual, 1, 1, 1, 40);
   shift_red(actual, 2, 2, 1, 2);
-  const Image overlay = diff_overlay(golden, actual, 2);
-  EXPECT_EQ(get_pixel(overlay, 1, 1).r, 255);
-  EXPECT_EQ(get_pixel(overlay, 1, 1).g, 0);
-  EXPECT_EQ(get_pixel(overlay, 2, 2).g, 200);  // changed within tolerance: yellow
-  const Rgba grey = get_pixel(overlay, 5, 5);
+  const image::Image overlay = diff_overlay(golden, actual, 2);
+  EXPECT_EQ(overlay.pixel(1, 1).r, 255);
+  EXPECT_EQ(overlay.pixel(1, 1).g, 0);
+  EXPECT_EQ(overlay.pixel(2, 2).g, 200);  // changed within tolerance: yellow
+  const image::Rgba grey = overlay.pixel(5, 5);
   EXPECT_EQ(grey.r, grey.g);
   EXPECT_EQ(grey.g, grey.b);
   EXPECT_GT(grey.r, 180);
 
-  const Image heatmap = diff_heatmap(golden, actual);
-  const Rgba hottest = get_pixel(heatmap, 1, 1);
+  const image::Image heatmap = diff_heatmap(golden, actual);
+  const image::Rgba hottest = heatmap.pixel(1, 1);
   EXPECT_EQ(hottest.r, 255);
   EXPECT_EQ(hottest.g, 255);
   EXPECT_EQ(hottest.b, 255);
-  EXPECT_GT(get_pixel(heatmap, 2, 2).r, 0);
-  EXPECT_EQ(get_pixel(heatmap, 5, 5).r, 0);
+  EXPECT_GT(heatmap.pixel(2, 2).r, 0);
+  EXPECT_EQ(heatmap.pixel(5, 5).r, 0);
 }
 
 TEST(GoldenArtifacts, WritesEveryFileAndOneSelfContainedReport) {
   TempDir dir;
-  const Image golden = make_image(24, 16, kBackground);
-  Image actual = golden;
+  const image::Image golden = image::make_image(24, 16, kBackground);
+  image::Image actual = golden;
   shift_red(actual, 4, 4, 5, 30);
 
   GoldenCheck rasterised = check_of(golden, actual);
@@ -584,11 +585,11 @@ TEST(GoldenArtifacts, WritesEveryFileAndOneSelfContainedReport) {
        {"actual.png", "actual.json", "expected.png", "diff.png", "heatmap.png", "metrics.json"}) {
     EXPECT_TRUE(fs::is_regular_file(first / file)) << file;
   }
-  const json metrics = json::parse(read_text_file(first / "metrics.json"));
+  const json metrics = json::parse(image::read_text_file(first / "metrics.json"));
   EXPECT_EQ(metrics["class"], "rasterisation_differs");
   EXPECT_EQ(metrics["comparison"]["metrics"]["differing_pixels"], 25);
   EXPECT_EQ(metrics["comparison"]["tolerance"]["origin"], "strict default");
-  EXPECT_EQ(rgba_hash(load_png(first / "actual.png")), rgba_hash(actual));
+  EXPECT_EQ(image::load_png(first / "actual.png").hash(), actual.hash());
 
   GoldenCheck missing;
   missing.name = "stack/settled";
@@ -598,7 +599,7 @@ TEST(GoldenArtifacts, WritesEveryFileAndOneSelfContainedReport) {
   EXPECT_FALSE(fs::exists(second / "expected.png"));
 
   EXPECT_EQ(write_html_report(dir.path()), 2);
-  const std::string html = read_text_file(dir.path() / "index.html");
+  const std::string html = image::read_text_file(dir.path() / "index.html");
   EXPECT_NE(html.find("circles/start"), std::string::npos);
   EXPECT_NE(html.find("stack/settled"), std::string::npos);
   EXPECT_NE(html.find("rasterisation differs"), std::string::npos);
@@ -614,7 +615,7 @@ TEST(GoldenArtifacts, WritesEveryFileAndOneSelfContainedReport) {
 TEST(GoldenArtifacts, RefusesNamesThatEscapeTheRoot) {
   TempDir dir;
   GoldenCheck check;
-  const Image image = make_image(2, 2, kBackground);
+  const image::Image image = image::make_image(2, 2, kBackground);
   for (const char* name : {"", "../outside", "/abs/path", "a/./b"}) {
     check.name = name;
     EXPECT_THROW(write_failure_artifacts(dir.path(), check, image, nullptr, nullptr),
@@ -625,10 +626,10 @@ TEST(GoldenArtifacts, RefusesNamesThatEscapeTheRoot) {
 
 TEST(GoldenReport, ListsAnUnreadableMetricsFileInsteadOfStopping) {
   TempDir dir;
-  write_text_file_atomically(dir.path() / "circles" / "broken" / "metrics.json", "[1, 2");
-  write_text_file_atomically(dir.path() / "circles" / "array" / "metrics.json", "[1, 2]");
+  image::write_text_file_atomically(dir.path() / "circles" / "broken" / "metrics.json", "[1, 2");
+  image::write_text_file_atomically(dir.path() / "circles" / "array" / "metrics.json", "[1, 2]");
   EXPECT_EQ(write_html_report(dir.path()), 2);
-  const std::string html = read_text_file(dir.path() / "index.html");
+  const std::string html = image::read_text_file(dir.path() / "index.html");
   EXPECT_NE(html.find("circles/broken"), std::string::npos);
   EXPECT_NE(html.find("unreadable: 2"), std::string::npos);
   EXPECT_EQ(write_html_report(dir.path() / "absent"), 0);
@@ -642,14 +643,14 @@ TEST(GoldenReport, EscapesHtml) {
 
 TEST(GoldenInventory, FindsGoldensUnusedOnesAndUnpairedFiles) {
   TempDir dir;
-  const Image image = make_image(2, 2, kBackground);
-  save_png(dir.path() / "circles" / "start.png", image);
+  const image::Image image = image::make_image(2, 2, kBackground);
+  image::save_png(dir.path() / "circles" / "start.png", image);
   write_sidecar(dir.path() / "circles" / "start.json", example_sidecar());
-  save_png(dir.path() / "circles" / "mid.png", image);
+  image::save_png(dir.path() / "circles" / "mid.png", image);
   write_sidecar(dir.path() / "stack" / "settled.json", example_sidecar());
-  save_png(dir.path() / "stack" / "top.png", image);
+  image::save_png(dir.path() / "stack" / "top.png", image);
   write_sidecar(dir.path() / "stack" / "top.json", example_sidecar());
-  write_text_file_atomically(dir.path() / "README.md", "goldens");
+  image::write_text_file_atomically(dir.path() / "README.md", "goldens");
 
   const GoldenInventory inventory = scan_goldens(dir.path());
   EXPECT_EQ(inventory.goldens, (std::vector<std::string>{"circles/start", "stack/top"}));
@@ -677,7 +678,7 @@ TEST(GoldenPromote, CopiesReviewedActualsAndRefusesWhenNothingToPromote) {
   TempDir dir;
   const fs::path artifacts = dir.path() / "artifacts";
   const fs::path goldens = dir.path() / "golden_images";
-  const Image actual = make_image(6, 4, kBackground);
+  const image::Image actual = image::make_image(6, 4, kBackground);
   const Sidecar sidecar = example_sidecar();
 
   fs::create_directories(artifacts);
@@ -702,7 +703,7 @@ TEST(GoldenPromote, CopiesReviewedActualsAndRefusesWhenNothingToPromote) {
   EXPECT_FALSE(fs::exists(goldens));
 
   EXPECT_EQ(run_promote(goldens, "'" + artifacts.string() + "'"), 0);
-  EXPECT_EQ(rgba_hash(load_png(goldens / "circles" / "start.png")), rgba_hash(actual));
+  EXPECT_EQ(image::load_png(goldens / "circles" / "start.png").hash(), actual.hash());
   EXPECT_EQ(read_sidecar(goldens / "circles" / "start.json").state_hash, sidecar.state_hash);
   EXPECT_FALSE(fs::exists(goldens / "circles" / "mid.png"));
   EXPECT_FALSE(fs::exists(goldens / "stack" / "settled.png"));

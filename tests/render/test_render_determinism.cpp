@@ -3,7 +3,7 @@
 // runs in a fresh child process (this binary, filtered to the child test below).
 #include "render/driver_quirks.h"
 #include "render/frame_renderer.h"
-#include "render/png_encoder.h"
+#include "image/png.h"
 #include "render/render_error.h"
 #include "tests/support/test_render_support.h"
 

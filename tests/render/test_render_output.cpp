@@ -2,7 +2,7 @@
 // failure and the frame-sequence writer.
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
-#include "render/png_encoder.h"
+#include "image/png.h"
 #include "render/render_error.h"
 #include "tests/support/test_render_support.h"
 
@@ -38,8 +38,8 @@ int count_entries(const fs::path& directory) {
 TEST(RenderPng, RoundTripThroughStbImageIsExactAndOpaque) {
   const Frame frame = rendered_frame();
   ASSERT_TRUE(frame.is_opaque());
-  for (const PngEncoding encoding : {PngEncoding::Fast, PngEncoding::StbDefault}) {
-    const std::vector<std::uint8_t> png = encode_png(frame, encoding);
+  for (const image::PngCompression encoding : {image::PngCompression::Fast, image::PngCompression::Small}) {
+    const std::vector<std::uint8_t> png = image::encode_png(frame, encoding);
     Frame decoded;
     ASSERT_TRUE(support::decode_png(png, decoded));
     EXPECT_EQ(decoded.width, frame.width);
@@ -61,7 +61,7 @@ TEST(RenderPng, TopRowOfTheFileIsTheTopOfTheScene) {
                              },
                              frame);
   Frame decoded;
-  ASSERT_TRUE(support::decode_png(encode_png(frame), decoded));
+  ASSERT_TRUE(support::decode_png(image::encode_png(frame), decoded));
   EXPECT_EQ(decoded.pixel(20, 1), (Pixel{255, 0, 0, 255}));
   EXPECT_EQ(decoded.pixel(20, 18), (Pixel{255, 255, 255, 255}));
 }
@@ -70,8 +70,8 @@ TEST(RenderPng, WritePngReplacesTheFileAtomically) {
   const fs::path directory = support::make_temporary_directory("render-png");
   const Frame frame = rendered_frame();
   const fs::path path = directory / "frame.png";
-  write_png(path, frame, PngEncoding::Fast);
-  write_png(path, frame, PngEncoding::StbDefault);
+  image::save_png(path, frame, image::PngCompression::Fast);
+  image::save_png(path, frame, image::PngCompression::Small);
   Frame decoded;
   ASSERT_TRUE(support::decode_png(support::read_file(path.string()), decoded));
   EXPECT_EQ(decoded.rgba, frame.rgba);
@@ -82,18 +82,18 @@ TEST(RenderPng, WritePngReplacesTheFileAtomically) {
 TEST(RenderPng, BadInputIsAClearErrorAndLeavesNoFile) {
   const fs::path directory = support::make_temporary_directory("render-bad");
   Frame empty;
-  EXPECT_THROW(encode_png(empty), RenderError);
-  EXPECT_THROW(write_png(directory / "empty.png", empty), RenderError);
+  EXPECT_THROW(image::encode_png(empty), RenderError);
+  EXPECT_THROW(image::save_png(directory / "empty.png", empty), RenderError);
   Frame inconsistent;
   inconsistent.width = 4;
   inconsistent.height = 4;
   inconsistent.rgba.resize(10);
-  EXPECT_THROW(encode_png(inconsistent), RenderError);
+  EXPECT_THROW(image::encode_png(inconsistent), RenderError);
   // A directory that cannot exist: its parent is a regular file.
   const fs::path blocker = directory / "not_a_directory";
   std::ofstream(blocker) << "x";
   try {
-    write_png(blocker / "frame.png", rendered_frame());
+    image::save_png(blocker / "frame.png", rendered_frame());
     FAIL() << "writing under a regular file succeeded";
   } catch (const RenderError& error) {
     EXPECT_NE(std::string(error.what()).find((blocker / "frame.png").string()), std::string::npos) << error.what();

@@ -1,16 +1,21 @@
 /// @file file_io.cpp
-#include "golden/file_io.h"
+#include "image/file_io.h"
 
-#include "golden/error.h"
+#include "image/error.h"
 
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 
 #include <atomic>
 #include <fstream>
 #include <iterator>
 #include <system_error>
 
-namespace impulse2d::golden {
+namespace impulse2d::image {
 
 namespace {
 
@@ -28,18 +33,18 @@ std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file) {
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(file, error);
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
-    throw GoldenError("cannot read '" + file.string() + "': not a regular file");
+    throw ImageError("cannot read '" + file.string() + "': not a regular file");
   }
   const std::uintmax_t size = std::filesystem::file_size(file, error);
   if (!error && size > kMaxReadBytes) {
-    throw GoldenError("cannot read '" + file.string() + "': " + std::to_string(size) +
+    throw ImageError("cannot read '" + file.string() + "': " + std::to_string(size) +
                       " bytes; the limit is " + std::to_string(kMaxReadBytes));
   }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw GoldenError("cannot open '" + file.string() + "' for reading");
+  if (!in) throw ImageError("cannot open '" + file.string() + "' for reading");
   std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
                                   std::istreambuf_iterator<char>());
-  if (in.bad()) throw GoldenError("error reading '" + file.string() + "'");
+  if (in.bad()) throw ImageError("error reading '" + file.string() + "'");
   return bytes;
 }
 
@@ -53,32 +58,45 @@ void write_file_atomically(const std::filesystem::path& file, const void* data, 
   if (file.has_parent_path()) {
     std::filesystem::create_directories(file.parent_path(), error);
     if (error) {
-      throw GoldenError("cannot create directory '" + file.parent_path().string() +
-                        "': " + error.message());
+      throw ImageError("cannot create directory '" + file.parent_path().string() +
+                       "': " + error.message());
     }
   }
   const std::filesystem::path temporary = temporary_sibling(file);
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw GoldenError("cannot open '" + temporary.string() + "' for writing");
-    out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-    out.close();
-    if (!out) {
-      std::filesystem::remove(temporary, error);
-      throw GoldenError("error writing '" + temporary.string() + "'");
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw ImageError("cannot write '" + file.string() + "': creating '" + temporary.string() +
+                     "' failed: " + std::strerror(errno));
+  }
+  const auto fail = [&](const std::string& step, int reason) {
+    ::unlink(temporary.c_str());
+    throw ImageError("cannot write '" + file.string() + "': " + step + " failed: " +
+                     std::strerror(reason));
+  };
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t written = ::write(fd, bytes + done, size - done);
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      const int reason = errno;
+      ::close(fd);
+      fail("write", reason);
     }
+    done += static_cast<std::size_t>(written);
   }
-  std::filesystem::rename(temporary, file, error);
-  if (error) {
-    const std::string reason = error.message();
-    std::filesystem::remove(temporary, error);
-    throw GoldenError("cannot rename '" + temporary.string() + "' to '" + file.string() +
-                      "': " + reason);
+  if (::close(fd) != 0) fail("close", errno);
+  if (std::rename(temporary.c_str(), file.c_str()) != 0) {
+    fail("rename from '" + temporary.string() + "'", errno);
   }
+}
+
+void write_file_atomically(const std::filesystem::path& file, const std::vector<std::uint8_t>& bytes) {
+  write_file_atomically(file, bytes.data(), bytes.size());
 }
 
 void write_text_file_atomically(const std::filesystem::path& file, const std::string& text) {
   write_file_atomically(file, text.data(), text.size());
 }
 
-}  // namespace impulse2d::golden
+}  // namespace impulse2d::image

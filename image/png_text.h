@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace impulse2d::golden {
+namespace impulse2d::image {
 
 /// Keyword -> text of a PNG's tEXt chunks (Latin-1; keywords 1..79 characters).
 using PngText = std::map<std::string, std::string>;
@@ -26,7 +26,7 @@ inline constexpr const char* kRenderer = "impulse2d renderer";         ///< GL_R
 }  // namespace png_keys
 
 /// `png` (a well-formed PNG) with one tEXt chunk per entry inserted right after IHDR.
-/// Throws `GoldenError` for an empty or over-long keyword, or a keyword or text holding a
+/// Throws `ImageError` for an empty or over-long keyword, or a keyword or text holding a
 /// NUL byte.
 std::vector<std::uint8_t> with_png_text(const std::vector<std::uint8_t>& png, const PngText& text);
 
@@ -34,4 +34,4 @@ std::vector<std::uint8_t> with_png_text(const std::vector<std::uint8_t>& png, co
 /// that repeats keeps its first text.
 PngText read_png_text(const std::vector<std::uint8_t>& png);
 
-}  // namespace impulse2d::golden
+}  // namespace impulse2d::image

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-namespace impulse2d::golden {
+namespace impulse2d::image {
 
 /// 16 lower-case hex digits, zero-padded, no prefix.
 std::string to_hex_hash(std::uint64_t hash);
@@ -14,4 +14,4 @@ std::string to_hex_hash(std::uint64_t hash);
 /// The hash spelled by exactly 16 hex digits (either case, no prefix); nullopt otherwise.
 std::optional<std::uint64_t> parse_hex_hash(const std::string& text);
 
-}  // namespace impulse2d::golden
+}  // namespace impulse2d::image

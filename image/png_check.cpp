@@ -1,11 +1,11 @@
 /// @file png_check.cpp
-#include "golden/png_check.h"
+#include "image/png_check.h"
 
-#include <zlib.h>
+#include <libdeflate.h>
 
 #include <algorithm>
 
-namespace impulse2d::golden {
+namespace impulse2d::image {
 namespace {
 
 std::uint32_t big_endian_u32(const std::uint8_t* bytes) {
@@ -29,8 +29,8 @@ std::string png_structure_problem(const std::vector<std::uint8_t>& bytes) {
     const std::string where = "chunk " + type + " at byte " + std::to_string(at);
     if (length > bytes.size() - at - 12) return where + ": length runs past the end of the file";
     const std::uint32_t stored = big_endian_u32(&bytes[at + 8 + length]);
-    const uLong computed = crc32(crc32(0L, Z_NULL, 0), &bytes[at + 4], length + 4);
-    if (stored != static_cast<std::uint32_t>(computed)) {
+    const std::uint32_t computed = libdeflate_crc32(0, &bytes[at + 4], length + 4);
+    if (stored != computed) {
       return where + ": CRC mismatch (the file is corrupt)";
     }
     if (first) {
@@ -50,4 +50,4 @@ std::string png_structure_problem(const std::vector<std::uint8_t>& bytes) {
   }
 }
 
-}  // namespace impulse2d::golden
+}  // namespace impulse2d::image

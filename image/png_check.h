@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace impulse2d::golden {
+namespace impulse2d::image {
 
 /// Largest side of a PNG that is decoded, pixels.
 constexpr std::uint32_t kMaxPngSide = 16384;
@@ -19,4 +19,4 @@ constexpr std::uint64_t kMaxPngPixels = 64ull * 1024 * 1024;
 /// "chunk IDAT at byte 33: CRC mismatch (the file is corrupt)".
 std::string png_structure_problem(const std::vector<std::uint8_t>& bytes);
 
-}  // namespace impulse2d::golden
+}  // namespace impulse2d::image

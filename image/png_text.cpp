@@ -1,11 +1,11 @@
 /// @file png_text.cpp
-#include "golden/png_text.h"
+#include "image/png_text.h"
 
-#include <zlib.h>
+#include <libdeflate.h>
 
-#include "golden/error.h"
+#include "image/error.h"
 
-namespace impulse2d::golden {
+namespace impulse2d::image {
 
 namespace {
 
@@ -23,13 +23,13 @@ void append_u32(std::vector<std::uint8_t>& bytes, std::uint32_t value) {
 }  // namespace
 
 std::vector<std::uint8_t> with_png_text(const std::vector<std::uint8_t>& png, const PngText& text) {
-  if (png.size() < kSignatureSize + 12) throw GoldenError("with_png_text: not a PNG");
+  if (png.size() < kSignatureSize + 12) throw ImageError("with_png_text: not a PNG");
   const std::size_t after_ihdr = kSignatureSize + 12 + read_u32(png, kSignatureSize);
   std::vector<std::uint8_t> chunks;
   for (const auto& [keyword, value] : text) {
     if (keyword.empty() || keyword.size() > 79 || keyword.find('\0') != std::string::npos ||
         value.find('\0') != std::string::npos) {
-      throw GoldenError("PNG text keyword '" + keyword +
+      throw ImageError("PNG text keyword '" + keyword +
                         "' must have 1..79 characters and neither it nor its text a NUL byte");
     }
     std::vector<std::uint8_t> data = {'t', 'E', 'X', 't'};
@@ -39,7 +39,7 @@ std::vector<std::uint8_t> with_png_text(const std::vector<std::uint8_t>& png, co
     append_u32(chunks, static_cast<std::uint32_t>(data.size() - 4));
     chunks.insert(chunks.end(), data.begin(), data.end());
     append_u32(chunks, static_cast<std::uint32_t>(
-                           crc32(crc32(0L, Z_NULL, 0), data.data(), static_cast<uInt>(data.size()))));
+                           libdeflate_crc32(0, data.data(), data.size())));
   }
   std::vector<std::uint8_t> result(png.begin(), png.begin() + static_cast<std::ptrdiff_t>(after_ihdr));
   result.insert(result.end(), chunks.begin(), chunks.end());
@@ -66,4 +66,4 @@ PngText read_png_text(const std::vector<std::uint8_t>& png) {
   return text;
 }
 
-}  // namespace impulse2d::golden
+}  // namespace impulse2d::image

@@ -1,7 +1,7 @@
 /// @file hex_hash.cpp
-#include "golden/hex_hash.h"
+#include "image/hex_hash.h"
 
-namespace impulse2d::golden {
+namespace impulse2d::image {
 
 std::string to_hex_hash(std::uint64_t hash) {
   static constexpr char kDigits[] = "0123456789abcdef";
@@ -32,4 +32,4 @@ std::optional<std::uint64_t> parse_hex_hash(const std::string& text) {
   return hash;
 }
 
-}  // namespace impulse2d::golden
+}  // namespace impulse2d::image

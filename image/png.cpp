@@ -1,0 +1,130 @@
+/// @file png.cpp
+/// stb_image and stb_image_write, compiled here with static linkage (the only copy in the
+/// project), with libdeflate as stb's zlib compressor.
+
+#include "image/png.h"
+
+#include "image/error.h"
+#include "image/file_io.h"
+#include "image/png_check.h"
+
+#include <libdeflate.h>
+
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+namespace {
+
+/// The libdeflate level of the encode running on this thread (stb's compression hook has no
+/// context argument; the hook runs synchronously inside the encode call).
+thread_local int t_deflate_level = 1;
+
+struct CompressorDeleter {
+  void operator()(libdeflate_compressor* compressor) const { libdeflate_free_compressor(compressor); }
+};
+
+/// stb's STBIW_ZLIB_COMPRESS hook: zlib-wrapped deflate of `data` in a malloc'd buffer that
+/// stb frees with STBIW_FREE (free), or null. One compressor per thread and level: they are
+/// not thread-safe.
+unsigned char* libdeflate_zlib(unsigned char* data, int data_length, int* out_length, int) {
+  thread_local std::unique_ptr<libdeflate_compressor, CompressorDeleter> fast(
+      libdeflate_alloc_compressor(1));
+  thread_local std::unique_ptr<libdeflate_compressor, CompressorDeleter> small(
+      libdeflate_alloc_compressor(12));
+  libdeflate_compressor* compressor = t_deflate_level >= 12 ? small.get() : fast.get();
+  if (compressor == nullptr) return nullptr;
+  const std::size_t length = static_cast<std::size_t>(data_length);
+  const std::size_t capacity = libdeflate_zlib_compress_bound(compressor, length);
+  auto* out = static_cast<unsigned char*>(std::malloc(capacity));
+  if (out == nullptr) return nullptr;
+  const std::size_t written = libdeflate_zlib_compress(compressor, data, length, out, capacity);
+  if (written == 0) {
+    std::free(out);
+    return nullptr;
+  }
+  *out_length = static_cast<int>(written);
+  return out;
+}
+
+}  // namespace
+
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb_image.h>
+
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBI_WRITE_NO_STDIO
+#define STBIW_ZLIB_COMPRESS libdeflate_zlib
+#include <stb_image_write.h>
+
+namespace impulse2d::image {
+
+namespace {
+
+/// PNG row filter for every row (stb numbering: 0 none). Measured on a 1000-body 800x600 frame
+/// with every overlay at libdeflate level 1: none 7.2 ms / 264 KB, sub 10.9 / 336, up
+/// 11.3 / 337, average 11.9 / 380, Paeth 15.3 / 341, stb's per-row search 22.5 / 340.
+constexpr int kRowFilter = 0;
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_png(const Image& image, PngCompression compression) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgba.size() != image.stride() * static_cast<std::size_t>(image.height)) {
+    throw ImageError("encode_png: image " + std::to_string(image.width) + "x" +
+                     std::to_string(image.height) + " with " + std::to_string(image.rgba.size()) +
+                     " bytes is not a valid RGBA image");
+  }
+  // stb keeps the filter in a file-level variable; it is set once, before any encode reads it.
+  static const bool configured = [] {
+    stbi_write_force_png_filter = kRowFilter;
+    return true;
+  }();
+  (void)configured;
+  t_deflate_level = compression == PngCompression::Small ? 12 : 1;
+  int length = 0;
+  unsigned char* encoded = stbi_write_png_to_mem(image.rgba.data(), static_cast<int>(image.stride()),
+                                                 image.width, image.height, kChannels, &length);
+  if (encoded == nullptr) {
+    throw ImageError("encode_png: the encoder failed on a " + std::to_string(image.width) + "x" +
+                     std::to_string(image.height) + " image (out of memory?)");
+  }
+  std::vector<std::uint8_t> bytes(encoded, encoded + length);
+  STBIW_FREE(encoded);
+  return image.text.empty() ? bytes : with_png_text(bytes, image.text);
+}
+
+Image decode_png(const std::vector<std::uint8_t>& bytes, const std::filesystem::path& source) {
+  const std::string problem = png_structure_problem(bytes);
+  if (!problem.empty()) {
+    throw ImageError("cannot decode PNG '" + source.string() + "': " + problem);
+  }
+  int width = 0;
+  int height = 0;
+  int channels_in_file = 0;
+  stbi_uc* data = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
+                                        &height, &channels_in_file, kChannels);
+  if (data == nullptr) {
+    const char* reason = stbi_failure_reason();
+    throw ImageError("cannot decode PNG '" + source.string() +
+                     "': " + (reason != nullptr ? reason : "unknown decoder error"));
+  }
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.rgba.assign(data, data + image.pixel_count() * kChannels);
+  stbi_image_free(data);
+  image.text = read_png_text(bytes);
+  return image;
+}
+
+Image load_png(const std::filesystem::path& file) { return decode_png(read_file_bytes(file), file); }
+
+void save_png(const std::filesystem::path& file, const Image& image, PngCompression compression) {
+  write_file_atomically(file, encode_png(image, compression));
+}
+
+}  // namespace impulse2d::image
