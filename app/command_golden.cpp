@@ -1,0 +1,62 @@
+/// @file command_golden.cpp
+/// `impulse2d golden check|update|frame`: the golden images of JSON scene files.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <memory>
+
+#include "app/command.h"
+#include "golden/scenes/golden_command.h"
+
+namespace impulse2d::demos {
+namespace {
+
+/// `impulse2d golden`: the library's arguments and the scene file of `golden frame`.
+struct GoldenArguments {
+  golden::GoldenCommandArguments command;  ///< what the golden command runs
+  std::string frame_file;                  ///< `golden frame`'s scene file
+};
+
+}  // namespace
+
+Command add_golden_command(CLI::App& program, const ProgramOptions&) {
+  auto golden = std::make_shared<GoldenArguments>();
+  golden::GoldenCommandArguments& arguments = golden->command;
+  CLI::App* command = program.add_subcommand(
+      "golden",
+      "golden images of JSON scene files with a \"golden\" block: check, update, frame");
+  command->require_subcommand(1);
+  CLI::App* check = command->add_subcommand(
+      "check", "check every golden frame of the scene files (classified failures, report)");
+  CLI::App* update = command->add_subcommand(
+      "update", "write missing and failing goldens (each rendered in two processes first)");
+  for (CLI::App* sub : {check, update}) {
+    sub->add_option("files", arguments.files, "scene files (.json)")->required();
+    sub->add_option("--report", arguments.report_dir,
+                    "artifacts and index.html of this run (emptied first)")
+        ->capture_default_str();
+    sub->add_option("--junit", arguments.junit, "also write JUnit XML to this file");
+  }
+  check->add_option("--repeat", arguments.repeat,
+                    "2: also render each frame in a second process (nondeterminism)")
+      ->capture_default_str();
+  update->add_flag("--all", arguments.all, "rewrite every golden, not only failing");
+  CLI::App* frame = command->add_subcommand(
+      "frame", "render one golden frame into --out PNG and its state hash into PNG.hash");
+  frame->add_option("file", golden->frame_file, "scene file (.json)")->required();
+  frame->add_option("name", arguments.frame, "golden frame name")->required();
+  frame->add_option("--out,-o", arguments.out, "PNG to write")->required();
+
+  Command result;
+  result.parser = command;
+  result.own_exit_status = true;  // `golden check`: 1 when a golden failed
+  result.run = [golden, check, update, frame](std::ostream& out) {
+    golden::GoldenCommandArguments& chosen = golden->command;
+    chosen.action = check->parsed() ? "check" : update->parsed() ? "update" : "frame";
+    if (frame->parsed()) chosen.files = {golden->frame_file};
+    chosen.executable = "/proc/self/exe";  // this program, for the second process
+    return golden::run_golden_command(chosen, out, std::cerr);
+  };
+  return result;
+}
+
+}  // namespace impulse2d::demos

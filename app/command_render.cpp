@@ -1,0 +1,180 @@
+/// @file command_render.cpp
+/// `impulse2d render`: a scene into a PNG frame sequence (and a video, a browser viewer);
+/// with no command at all, the default demo into out/.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "app/command.h"
+#include "app/scene_command.h"
+#include "app/view_options.h"
+#include "demos/scene_registry.h"
+#include "frames/frame_plan.h"
+#include "frames/frame_sequence.h"
+#include "frames/progress.h"
+#include "frames/video_encoder.h"
+#include "scene/overlays.h"
+#include "scene/run_limits.h"
+#include "scene/usage_error.h"
+
+namespace impulse2d::demos {
+namespace {
+
+/// `impulse2d render`.
+struct RenderArguments {
+  SceneArguments scene;                 ///< what to run
+  std::optional<std::string> frames;    ///< `A:B:k` ranges; the scene's default when absent
+  std::string size = "800x600";         ///< WxH pixels
+  std::optional<std::string> overlays;  ///< overlay list; the scene's default when absent
+  std::string theme = "light";          ///< light or dark
+  std::string out = "out";              ///< directory
+  std::optional<std::string> video;     ///< .mp4 / .webm / .gif path
+  std::optional<double> fps;            ///< video frames per second; real time when absent
+  bool no_frames = false;               ///< write the video only, no PNG frames
+  int threads = 2;                      ///< PNG encoding threads
+  std::optional<std::string> trails;    ///< `dynamic` or body indices with motion trails
+  bool clean = false;                   ///< replace frames of the same scene already in `out`
+  bool quiet = false;                   ///< no progress and no summary line
+  ViewArguments view;                   ///< HUD, legend, scales, camera, highlight
+  bool html = false;                    ///< also write the browser viewer `<scene>.html`
+};
+
+/// Renders a frame sequence (and optionally a video); prints where the frames went unless
+/// `arguments.quiet`.
+void render_scene(const RenderArguments& arguments, std::ostream& out) {
+  ResolvedScene resolved = resolve(arguments.scene);
+  apply_view_arguments(arguments.view, resolved.scene);
+  const FramePlan plan = plan_frames(
+      arguments.frames ? *arguments.frames : resolved.scene.view.frames, resolved.steps);
+  FrameSequenceOptions options;
+  std::tie(options.width, options.height) = parse_size(arguments.size, "--size");
+  if (static_cast<std::int64_t>(options.width) * options.height > limits::max_frame_pixels) {
+    throw UsageError("--size " + arguments.size + ": " +
+                     std::to_string(static_cast<std::int64_t>(options.width) * options.height) +
+                     " pixels per frame; the limit is " + std::to_string(limits::max_frame_pixels) +
+                     " (4096x4096)");
+  }
+  options.clean = arguments.clean;
+  options.draw = resolved.scene.view.draw;
+  if (arguments.overlays) options.draw.flags = parse_overlays(*arguments.overlays);
+  options.theme = theme_of(arguments.theme);
+  options.directory = arguments.out;
+  if (arguments.threads < 1 || arguments.threads > 64) throw UsageError("--threads must be 1..64");
+  options.writer_threads = arguments.threads;
+  if (arguments.trails) options.trails = parse_trails(*arguments.trails, "--trails");
+  options.write_frames = !arguments.no_frames;
+  if (arguments.html && arguments.no_frames) {
+    throw UsageError("--html shows the PNG frames: it cannot be combined with --no-frames");
+  }
+  options.html = arguments.html;
+  if (arguments.no_frames && !arguments.video) {
+    throw UsageError("--no-frames needs --video FILE (otherwise nothing would be written)");
+  }
+  if (arguments.fps) {
+    if (!arguments.video) throw UsageError("--fps sets the video's rate: it needs --video FILE");
+    if (!(*arguments.fps >= 1.0 && *arguments.fps <= 240.0)) {
+      throw UsageError("--fps " + format_param_value(*arguments.fps) + ": must be 1..240");
+    }
+    options.frames_per_second = *arguments.fps;
+  }
+  if (arguments.video) {
+    check_video_output(*arguments.video);
+    options.video = std::filesystem::path(*arguments.video);
+  }
+  for (const ParamSpec& spec : resolved.params.specs()) {
+    const double value = resolved.params.number(spec.name);
+    if (value == spec.default_value) continue;
+    options.parameters += (options.parameters.empty() ? "" : " ") + spec.name + "=" +
+                          format_param_value(value);
+  }
+
+  const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
+  check_trails(options.trails, *run, "--trails");
+  check_view_bodies(arguments.view, *run);
+  std::unique_ptr<Progress> progress;
+  if (!arguments.quiet) {
+    progress = std::make_unique<Progress>(
+        resolved.scene.name, static_cast<std::int64_t>(plan.frames.size()), stderr,
+        is_terminal(stderr));
+  }
+  const FrameSequenceResult result = render_frame_sequence(
+      *run, plan, options, [&](std::int64_t done) {
+        if (progress) progress->update(done);
+      });
+  if (progress) progress->finish();
+  warn_divergences(*run);
+  if (arguments.quiet) return;
+  out << "wrote " << result.frame_count << " frames of " << resolved.scene.name;
+  if (options.write_frames) {
+    out << " to " << options.directory.string() << "/ (" << result.first_file.string() << " .. "
+        << result.last_file.string() << ", index " << result.index_file.string();
+    if (options.html) out << ", viewer " << result.html_file.string();
+    out << ")";
+    if (options.video) out << " and";
+  }
+  if (options.video) out << " to " << options.video->string();
+  out << "\n";
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& program, ProgramOptions& options) {
+  auto render = std::make_shared<RenderArguments>();
+  CLI::App* command = program.add_subcommand("render", "render a scene into a PNG frame sequence");
+  add_scene_options(*command, render->scene, true);
+  add_backend_option(*command, options.backend);
+  command->add_option(
+      "--frames,-f", render->frames,
+      "steps to draw: A:B[:k] ranges, comma-separated (step n = the world after n steps)");
+  command->add_option("--steps", render->scene.steps,
+                      "length of the run in steps (default: the scene's)");
+  command->add_option("--size,-s", render->size, "frame size WxH in pixels")
+      ->capture_default_str();
+  command->add_option("--overlays", render->overlays, overlay_help());
+  command->add_option("--theme", render->theme, "light or dark")->capture_default_str();
+  command->add_option("--out,-o", render->out,
+                      "output directory: <scene>_00000.png, <scene>_00001.png, ... (one "
+                      "per frame, numbered from 0 whatever steps they show) and "
+                      "<scene>_frames.csv (frame,step,time,file)")
+      ->capture_default_str();
+  command->add_option("--video", render->video,
+                      "also write a video (.mp4, .webm or .gif; needs ffmpeg)");
+  command->add_option("--fps", render->fps,
+                      "video frames per second, 1..240 (default: real time)");
+  command->add_flag("--no-frames", render->no_frames, "write the --video only, no PNG frames");
+  command->add_option("--threads", render->threads, "PNG encoding threads")
+      ->capture_default_str();
+  command->add_option("--trails", render->trails,
+                      "motion trails: 'dynamic' (every dynamic body) or body indices "
+                      "3,7,12 (as the ids overlay shows them)");
+  command->add_flag("--html", render->html,
+                    "also write <scene>.html beside the frames: a viewer for the browser "
+                    "(scrubber, play/pause, step/time/energy/contacts, timeline) with an "
+                    "overlay switch pre-rendered into <scene>.overlays/");
+  command->add_flag("--clean", render->clean,
+                    "replace frames of the same scene already in the output directory "
+                    "(without it they are an error); done only when the run succeeds");
+  add_view_options(*command, render->view, true);
+
+  Command result;
+  result.parser = command;
+  result.renders = true;
+  result.check = [render] { check_scene_arguments(render->scene, render->frames); };
+  result.run = [render, &options](std::ostream& out) {
+    render->quiet = options.quiet;
+    render_scene(*render, out);
+    return 0;
+  };
+  return result;
+}
+
+void render_default_demo(const ProgramOptions& options, std::ostream& out) {
+  RenderArguments demo;
+  demo.quiet = options.quiet;
+  demo.scene.scene = default_scene().name;
+  demo.clean = true;  // the default demo always refreshes out/<default scene>_*.png
+  render_scene(demo, out);
+}
+
+}  // namespace impulse2d::demos
