@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <system_error>
 
 #include "app/command.h"
 #include "app/scene_command.h"
@@ -12,6 +13,7 @@
 #include "demos/scene_registry.h"
 #include "frames/frame_plan.h"
 #include "frames/frame_sequence.h"
+#include "frames/output_guard.h"
 #include "frames/progress.h"
 #include "frames/video_encoder.h"
 #include "scene/overlays.h"
@@ -39,6 +41,22 @@ struct RenderArguments {
   ViewArguments view;                   ///< HUD, legend, scales, camera, highlight
   bool html = false;                    ///< also write the browser viewer `<scene>.html`
 };
+
+/// Creates the folder the video goes into when it is missing (with --no-frames nothing else
+/// does), before any rendering; `guard` removes it again when the run fails. Throws when it
+/// cannot be created.
+void prepare_video_folder(const std::filesystem::path& video, OutputGuard& guard) {
+  const std::filesystem::path folder = video.parent_path();
+  if (folder.empty()) return;
+  std::error_code error;
+  if (std::filesystem::is_directory(folder, error)) return;
+  guard.will_create_directory(folder);
+  std::filesystem::create_directories(folder, error);
+  if (error) {
+    throw std::runtime_error("--video " + video.string() + ": cannot create the folder " +
+                             folder.string() + ": " + error.message());
+  }
+}
 
 /// Renders a frame sequence (and optionally a video); prints where the frames went unless
 /// `arguments.quiet`.
@@ -92,6 +110,8 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
   const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
   check_trails(options.trails, *run, "--trails");
   check_view_bodies(arguments.view, *run);
+  OutputGuard video_folder;
+  if (options.video) prepare_video_folder(*options.video, video_folder);
   std::unique_ptr<Progress> progress;
   if (!arguments.quiet) {
     progress = std::make_unique<Progress>(
@@ -103,6 +123,7 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
         if (progress) progress->update(done);
       });
   if (progress) progress->finish();
+  video_folder.commit();
   warn_divergences(*run);
   if (arguments.quiet) return;
   out << "wrote " << result.frame_count << " frames of " << resolved.scene.name;

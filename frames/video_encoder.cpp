@@ -1,14 +1,22 @@
 /// @file video_encoder.cpp
 #include "frames/video_encoder.h"
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/usage_error.h"
+
+extern char** environ;
 
 namespace impulse2d::demos {
 namespace {
@@ -17,11 +25,41 @@ const char* const install_hint =
     "ffmpeg was not found on PATH; --video needs it (Debian/Ubuntu: sudo apt-get install ffmpeg). "
     "The PNG frames do not need it.";
 
-/// `text` quoted for /bin/sh.
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
+/// The encoder's options after the input for `extension` (.gif, .webm, else .mp4).
+std::vector<std::string> encoder_arguments(const std::string& extension) {
+  const std::vector<std::string> even_size = {"-pix_fmt", "yuv420p", "-vf",
+                                              "pad=ceil(iw/2)*2:ceil(ih/2)*2"};
+  std::vector<std::string> arguments;
+  if (extension == ".gif") {
+    arguments = {"-vf", "split[a][b];[a]palettegen[p];[b][p]paletteuse"};
+  } else if (extension == ".webm") {
+    arguments = {"-c:v", "libvpx-vp9", "-crf", "32", "-b:v", "0", "-row-mt", "1"};
+    arguments.insert(arguments.end(), even_size.begin(), even_size.end());
+  } else {
+    arguments = {"-c:v", "libx264"};
+    arguments.insert(arguments.end(), even_size.begin(), even_size.end());
+  }
+  return arguments;
+}
+
+/// What a wait status says, in words: "exit status 1", "killed by signal 9 (Killed)".
+std::string describe_status(int status) {
+  if (WIFEXITED(status)) return "exit status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) {
+    const int number = WTERMSIG(status);
+    const char* name = strsignal(number);
+    return "killed by signal " + std::to_string(number) + (name ? std::string(" (") + name + ")" : "");
+  }
+  return "wait status " + std::to_string(status);
+}
+
+/// Waits for `child`, through interruptions by a signal; the wait status, or -1.
+int wait_for(pid_t child) {
+  int status = 0;
+  while (waitpid(child, &status, 0) == -1) {
+    if (errno != EINTR) return -1;
+  }
+  return status;
 }
 
 }  // namespace
@@ -57,19 +95,47 @@ VideoEncoder::VideoEncoder(std::filesystem::path output, int width, int height,
   const std::filesystem::path ffmpeg = *find_on_path("ffmpeg");
   temporary_ = output_.parent_path() / ("." + output_.stem().string() + ".partial-" +
                                         std::to_string(getpid()) + output_.extension().string());
-  const std::string extension = output_.extension().string();
-  const std::string even_size = "-pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'";
-  const std::string filters =
-      extension == ".gif"    ? "-vf 'split[a][b];[a]palettegen[p];[b][p]paletteuse'"
-      : extension == ".webm" ? "-c:v libvpx-vp9 -crf 32 -b:v 0 -row-mt 1 " + even_size
-                             : "-c:v libx264 " + even_size;
-  const std::string command = shell_quote(ffmpeg.string()) +
-                              " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s " +
-                              std::to_string(width) + "x" + std::to_string(height) +
-                              " -framerate " + std::to_string(frames_per_second) + " -i - " +
-                              filters + " " + shell_quote(temporary_.string());
-  pipe_ = popen(command.c_str(), "w");
-  if (pipe_ == nullptr) throw std::runtime_error("cannot start ffmpeg (" + ffmpeg.string() + ")");
+  // An argument vector, no shell. The output as a file: URL, so that no name (one starting
+  // with '-', one with a colon) reads as an option or another protocol.
+  std::vector<std::string> arguments = {
+      ffmpeg.string(), "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
+      "-pix_fmt", "rgba", "-s", std::to_string(width) + "x" + std::to_string(height),
+      "-framerate", std::to_string(frames_per_second), "-i", "-"};
+  for (const std::string& each : encoder_arguments(output_.extension().string())) {
+    arguments.push_back(each);
+  }
+  arguments.push_back("file:" + temporary_.string());
+  std::vector<char*> argv;
+  for (std::string& each : arguments) argv.push_back(each.data());
+  argv.push_back(nullptr);
+
+  int ends[2];
+  if (pipe2(ends, O_CLOEXEC) != 0) {
+    throw std::runtime_error("cannot start ffmpeg (" + ffmpeg.string() + "): no pipe: " +
+                             std::strerror(errno));
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, ends[0], STDIN_FILENO);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);  // the program ignores it; ffmpeg gets the usual behaviour
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  const int failed =
+      posix_spawn(&child_, argv[0], &actions, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  ::close(ends[0]);
+  if (failed != 0) {
+    ::close(ends[1]);
+    child_ = -1;
+    throw std::runtime_error("cannot start ffmpeg (" + ffmpeg.string() + "): " +
+                             std::strerror(failed));
+  }
+  pipe_ = ends[1];
 }
 
 VideoEncoder::~VideoEncoder() { abandon(); }
@@ -78,18 +144,32 @@ void VideoEncoder::add(const render::Frame& frame) {
   if (frame.width != width_ || frame.height != height_) {
     throw std::runtime_error("video: frame size changed during the run");
   }
-  if (std::fwrite(frame.rgba.data(), 1, frame.rgba.size(), pipe_) != frame.rgba.size()) {
-    abandon();
-    throw std::runtime_error("video: ffmpeg stopped reading frames (see its message above)");
+  const std::uint8_t* data = frame.rgba.data();
+  std::size_t left = frame.rgba.size();
+  while (left > 0) {
+    const ssize_t written = ::write(pipe_, data, left);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) {
+      const std::string reason = written < 0 ? std::strerror(errno) : "no progress";
+      abandon();
+      throw std::runtime_error("video: ffmpeg stopped reading frames (" + reason +
+                               "; see its message above)");
+    }
+    data += written;
+    left -= static_cast<std::size_t>(written);
   }
 }
 
 void VideoEncoder::finish() {
-  const int status = pclose(pipe_);
-  pipe_ = nullptr;
+  ::close(pipe_);
+  pipe_ = -1;
+  const int status = wait_for(child_);
+  child_ = -1;
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     abandon();
-    throw std::runtime_error("video: ffmpeg failed writing " + output_.string() +
+    throw std::runtime_error("video: ffmpeg failed writing " + output_.string() + ": " +
+                             (status == -1 ? std::string("cannot wait for it: ") + std::strerror(errno)
+                                           : describe_status(status)) +
                              " (see its message above)");
   }
   std::error_code error;
@@ -103,9 +183,14 @@ void VideoEncoder::finish() {
 }
 
 void VideoEncoder::abandon() {
-  if (pipe_ != nullptr) {
-    pclose(pipe_);
-    pipe_ = nullptr;
+  if (pipe_ != -1) {
+    ::close(pipe_);
+    pipe_ = -1;
+  }
+  if (child_ > 0) {
+    ::kill(child_, SIGTERM);  // no need to finish a video that is thrown away
+    wait_for(child_);
+    child_ = -1;
   }
   if (!temporary_.empty()) {
     std::error_code ignored;

@@ -1,10 +1,11 @@
 #pragma once
 /// @file video_encoder.h
 /// Optional video output through an ffmpeg process (found on PATH at run time, never
-/// required to build). Frames are piped in as raw RGBA; the file appears only when ffmpeg
-/// finished successfully (temporary name + rename).
+/// required to build), started without a shell (an argument vector). Frames are piped in as
+/// raw RGBA; the file appears only when ffmpeg finished successfully (temporary name + rename).
 
-#include <cstdio>
+#include <sys/types.h>
+
 #include <filesystem>
 #include <optional>
 
@@ -30,7 +31,7 @@ class VideoEncoder {
   /// Sends one frame (must have the size given to the constructor).
   void add(const render::Frame& frame);
   /// Waits for ffmpeg and moves the file into place. Throws `std::runtime_error` when ffmpeg
-  /// failed (nothing is left behind).
+  /// failed, with its exit status or signal (nothing is left behind).
   void finish();
 
  private:
@@ -40,7 +41,8 @@ class VideoEncoder {
   std::filesystem::path temporary_;
   int width_;
   int height_;
-  std::FILE* pipe_ = nullptr;
+  int pipe_ = -1;    ///< ffmpeg's standard input
+  pid_t child_ = -1;  ///< ffmpeg
 };
 
 /// Checks that `output` ends in .mp4, .webm or .gif (throws `UsageError` otherwise) and that ffmpeg

@@ -1,45 +1,144 @@
 /// @file gnuplot.cpp
 #include "lab/gnuplot.h"
 
-#include <cstdlib>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <memory>
 #include <stdexcept>
+#include <string>
+
+#include "frames/video_encoder.h"
+
+extern char** environ;
 
 namespace impulse2d::lab {
+namespace {
 
-bool gnuplot_available() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+/// An anonymous temporary file (removed when closed).
+struct TemporaryFile {
+  TemporaryFile() : file(std::tmpfile()) {
+    if (file == nullptr) throw std::runtime_error(std::string("cannot create a temporary file: ") +
+                                                  std::strerror(errno));
+  }
+  ~TemporaryFile() { std::fclose(file); }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  std::FILE* file;
+};
+
+/// Up to the first 2000 bytes of `file` from its start, without trailing blank lines.
+std::string read_back(std::FILE* file) {
+  std::rewind(file);
+  std::string text(2000, '\0');
+  text.resize(std::fread(text.data(), 1, text.size(), file));
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  return text;
+}
+
+/// What a wait status says, in words: "exit status 1", "killed by signal 9".
+std::string describe_status(int status) {
+  if (WIFEXITED(status)) return "exit status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) {
+    const int number = WTERMSIG(status);
+    const char* name = strsignal(number);
+    return "killed by signal " + std::to_string(number) + (name ? std::string(" (") + name + ")" : "");
+  }
+  return "wait status " + std::to_string(status);
+}
+
+/// Runs gnuplot (found on PATH, started without a shell) reading the script from `script`,
+/// writing its image to `image` and its complaints to `log`. Returns the wait status; throws
+/// `std::runtime_error` with the reason when it cannot be started.
+int spawn_gnuplot(int script, int image, int log) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, script, STDIN_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, image, STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, log, STDERR_FILENO);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);  // the program ignores it; gnuplot gets the usual behaviour
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  char program[] = "gnuplot";
+  char* argv[] = {program, nullptr};
+  pid_t child = 0;
+  const int failed = posix_spawnp(&child, program, &actions, &attributes, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  if (failed != 0) throw std::runtime_error(std::string("cannot start gnuplot: ") + std::strerror(failed));
+  int status = 0;
+  while (waitpid(child, &status, 0) == -1) {
+    if (errno != EINTR) {
+      throw std::runtime_error(std::string("cannot wait for gnuplot: ") + std::strerror(errno));
+    }
+  }
+  return status;
+}
+
+/// `script` with its `set output OUTPUT` line drawing to standard output instead.
+std::string to_standard_output(const std::string& script) {
+  std::string text = script;
+  const std::string placeholder = "set output OUTPUT";
+  for (std::size_t at = text.find(placeholder); at != std::string::npos;
+       at = text.find(placeholder, at)) {
+    text.replace(at, placeholder.size(), "set output");
+  }
+  return text;
+}
+
+}  // namespace
+
+bool gnuplot_available() { return demos::find_on_path("gnuplot").has_value(); }
 
 void run_gnuplot(const std::string& script, const std::string& png_path) {
   const std::filesystem::path target(png_path);
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
   const std::string temporary_png = png_path + ".tmp.png";
-  const std::string script_path = png_path + ".gp.tmp";
-  const std::string log_path = png_path + ".log.tmp";
-  std::string text = script;
-  const std::string placeholder = "OUTPUT";
-  for (std::size_t at = text.find(placeholder); at != std::string::npos;
-       at = text.find(placeholder, at + temporary_png.size())) {
-    text.replace(at, placeholder.size(), "'" + temporary_png + "'");
-  }
-  {
-    std::ofstream file(script_path, std::ios::binary | std::ios::trunc);
-    if (!file) throw std::runtime_error("cannot write " + script_path);
-    file << text;
-  }
-  const std::string command = "gnuplot '" + script_path + "' >'" + log_path + "' 2>&1";
-  const int status = std::system(command.c_str());
-  std::ostringstream log;
-  if (std::ifstream file(log_path); file) log << file.rdbuf();
-  std::error_code ignored;
-  std::filesystem::remove(script_path, ignored);
-  std::filesystem::remove(log_path, ignored);
-  if (status != 0 || !std::filesystem::exists(temporary_png)) {
+  const auto fail = [&](const std::string& reason) {
+    std::error_code ignored;
     std::filesystem::remove(temporary_png, ignored);
-    throw std::runtime_error("gnuplot failed drawing " + png_path + ": " + log.str());
+    throw std::runtime_error("gnuplot failed drawing " + png_path + ": " + reason);
+  };
+
+  TemporaryFile script_file;
+  TemporaryFile log_file;
+  const std::string text = to_standard_output(script);
+  if (std::fwrite(text.data(), 1, text.size(), script_file.file) != text.size() ||
+      std::fflush(script_file.file) != 0) {
+    fail(std::string("cannot write its script to a temporary file: ") + std::strerror(errno));
   }
-  std::filesystem::rename(temporary_png, target);
+  std::rewind(script_file.file);
+  const int image = ::open(temporary_png.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (image == -1) fail("cannot create " + temporary_png + ": " + std::strerror(errno));
+  int status = 0;
+  try {
+    status = spawn_gnuplot(fileno(script_file.file), image, fileno(log_file.file));
+  } catch (const std::runtime_error& error) {
+    ::close(image);
+    fail(error.what());
+  }
+  const bool closed = ::close(image) == 0;
+  const std::string log = read_back(log_file.file);
+  const std::string said = log.empty() ? "" : ": " + log;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail(describe_status(status) + said);
+  if (!closed) fail("cannot write " + temporary_png + ": " + std::strerror(errno));
+  std::error_code error;
+  if (std::filesystem::file_size(temporary_png, error) == 0 || error) {
+    fail("it drew no image (exit status 0" + said + ")");
+  }
+  std::filesystem::rename(temporary_png, target, error);
+  if (error) fail("cannot move the chart into place: " + error.message());
 }
 
 std::string gnuplot_text(const std::string& text) {

@@ -151,6 +151,57 @@ TEST_F(CliTest, VideoIsEncodedWhenFfmpegIsInstalled) {
   EXPECT_NE(result.out.find("v/p.mp4"), std::string::npos) << result.out;
 }
 
+namespace {
+
+/// `text` as one word for /bin/sh (single quotes, each ' written as '\'').
+std::string shell_word(const std::string& text) {
+  std::string word = "'";
+  for (const char c : text) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return word + "'";
+}
+
+}  // namespace
+
+// ffmpeg is started without a shell: a --video path with quotes, spaces, `$`, `;`, a newline
+// and a leading '-' runs nothing, and its missing folder is created even with --no-frames.
+TEST_F(CliTest, VideoPathIsNeverReadByAShell) {
+  if (!cli_test::have_ffmpeg()) {
+    GTEST_SKIP() << "ffmpeg is not installed (optional: apt-get install ffmpeg)";
+  }
+  const std::string video = "-v x'; touch PWNED; '$HOME \"q\"\nline/t'; touch PWNED2;'.mp4";
+  const Result result = run("render pyramid --param rows=3 --frames 0:20:4 --size 160x120 "
+                            "--no-frames --video=" + shell_word(video));
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_EQ(read_file(dir_ / video).substr(4, 4), "ftyp");
+  for (const std::string& file : files()) {
+    const std::string name = fs::path(file).filename().string();
+    EXPECT_TRUE(name != "PWNED" && name != "PWNED2") << file;
+  }
+
+  // The case the README's users hit: the video inside the -o folder, no frames.
+  const Result inside = run(
+      "render pyramid --param rows=3 --frames 0:20:4 --size 160x120 -o out/video "
+      "--video out/video/p.mp4 --no-frames");
+  ASSERT_EQ(inside.status, 0) << inside.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out/video/p.mp4"));
+}
+
+// A failing ffmpeg says how it failed (its exit status), and leaves nothing behind.
+TEST_F(CliTest, FailingFfmpegIsReportedWithItsStatus) {
+  fs::create_directories(dir_ / "bin");
+  write_file(dir_ / "bin/ffmpeg", "#!/bin/sh\ncat > /dev/null\necho 'fake ffmpeg: no' >&2\nexit 3\n");
+  fs::permissions(dir_ / "bin/ffmpeg", fs::perms::owner_all);
+  const Result result =
+      run("render pyramid --param rows=3 --frames 0:8:4 --size 160x120 --no-frames "
+          "--video new/p.mp4",
+          "PATH=\"$PWD/bin:$PATH\"");
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.err.find("video: ffmpeg failed writing new/p.mp4: exit status 3"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(dir_ / "new")) << "the folder made for the video is removed again";
+}
+
 TEST_F(CliTest, TraceOfAJsonProjectileMatchesTheExactAnswer) {
   write_file(dir_ / "projectile.json", projectile);
   const int steps = 200;

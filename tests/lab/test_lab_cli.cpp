@@ -39,6 +39,67 @@ TEST_F(LabCliTest, QuickRunWritesCsvAndOneChartPerScenario) {
   }
 }
 
+/// `text` as one word for /bin/sh (single quotes, each ' written as '\'').
+std::string shell_word(const std::string& text) {
+  std::string word = "'";
+  for (const char c : text) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return word + "'";
+}
+
+/// Every file under `root` named PWNED (what a shell reading a path would have created).
+std::vector<std::string> stray_files(const fs::path& root) {
+  std::vector<std::string> found;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().filename() == "PWNED") found.push_back(entry.path().string());
+  }
+  return found;
+}
+
+// gnuplot is started without a shell and never sees a path: an --out with a quote, `;touch`,
+// `$`, a double quote, a newline and a leading '-' runs nothing and still gets its charts.
+TEST_F(LabCliTest, OutPathIsNeverReadByAShell) {
+  const std::string out = "-x'; touch PWNED; 'y $HOME \"q\"\nz";
+  const Result result =
+      run("lab --quick --only projectile --repeats 1 --out=" + shell_word(out));
+  ASSERT_EQ(result.status, 0) << result.err;
+  EXPECT_TRUE(fs::exists(dir_ / out / "lab.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / out / "stability.csv"));
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    for (const char* chart : {"charts/projectile.png", "stability.png"}) {
+      EXPECT_EQ(read_file(dir_ / out / chart).substr(1, 3), "PNG") << chart << result.out;
+    }
+  }
+  EXPECT_TRUE(stray_files(dir_).empty());
+  for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+  }
+}
+
+// When gnuplot fails, the message says how (exit status and its complaint, or that it drew
+// nothing): never an empty reason.
+TEST_F(LabCliTest, FailingGnuplotSaysWhy) {
+  fs::create_directories(dir_ / "bin");
+  cli_test::write_file(dir_ / "bin/gnuplot",
+                       "#!/bin/sh\ncat > /dev/null\necho 'fake gnuplot: line 3: no' >&2\nexit 1\n");
+  fs::permissions(dir_ / "bin/gnuplot", fs::perms::owner_all);
+  const std::string subset = "lab --quick --only projectile --no-stability --repeats 1";
+  const Result failing = run(subset + " --out a", "PATH=\"$PWD/bin:$PATH\"");
+  EXPECT_EQ(failing.status, 1);
+  EXPECT_NE(failing.err.find("gnuplot failed drawing a/charts/projectile.png: exit status 1: "
+                             "fake gnuplot: line 3: no"),
+            std::string::npos)
+      << failing.err;
+  cli_test::write_file(dir_ / "bin/gnuplot", "#!/bin/sh\ncat > /dev/null\n");
+  const Result silent = run(subset + " --out b", "PATH=\"$PWD/bin:$PATH\"");
+  EXPECT_EQ(silent.status, 1);
+  EXPECT_NE(silent.err.find("gnuplot failed drawing b/charts/projectile.png: it drew no image"),
+            std::string::npos)
+      << silent.err;
+  for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+  }
+}
+
 TEST_F(LabCliTest, TwoShardsMergedCoverEveryConfigurationOnce) {
   ASSERT_EQ(run(std::string(quick_subset) + " --shard 1/2 --out a").status, 0);
   ASSERT_EQ(run(std::string(quick_subset) + " --shard 2/2 --out b").status, 0);
