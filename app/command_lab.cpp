@@ -27,7 +27,9 @@ Command add_lab_command(CLI::App& program, const ProgramOptions& options) {
   command->add_flag("--quick", lab_arguments.quick,
                     "a smaller method space, 2 repeats and a short stability map (for CI)");
   command->add_option("--scenarios", lab_arguments.scenarios,
-                      "directory of scenario files (default: the source tree's lab/scenarios)");
+                      "directory of scenario files (default: the installed ones, "
+                      "share/impulse2d/lab/scenarios beside bin/impulse2d, else the source "
+                      "tree's lab/scenarios)");
   command->add_option("--only", lab_arguments.only, "run only these scenarios (names)")
       ->delimiter(',');
   command->add_option("--out,-o", lab_arguments.out, "output directory")->capture_default_str();

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "scene/json_cursor.h"
 #include "scene/scene_loader.h"
@@ -127,6 +128,28 @@ std::vector<LabScenario> load_lab_scenarios(const std::string& directory) {
   return scenarios;
 }
 
-std::string default_scenario_directory() { return std::string(IMPULSE2D_LAB_DIR) + "/scenarios"; }
+std::string lab_data_directory() {
+  std::error_code error;
+  // Installed: <prefix>/bin/impulse2d finds <prefix>/share/impulse2d/lab.
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::filesystem::path installed =
+      error ? std::filesystem::path()
+            : (program.parent_path() / IMPULSE2D_LAB_FROM_PROGRAM).lexically_normal();
+  // Built: the source tree the program was built from.
+  const std::filesystem::path source = IMPULSE2D_LAB_SOURCE_DIR;
+  for (const std::filesystem::path& candidate : {installed, source}) {
+    if (!candidate.empty() && std::filesystem::is_directory(candidate / "scenarios", error)) {
+      return candidate.string();
+    }
+  }
+  throw std::runtime_error(
+      "the lab's scenarios were not found: looked in " +
+      (installed.empty() ? std::string("the install prefix (/proc/self/exe is unreadable)")
+                         : (installed / "scenarios").string() + " (installed beside the program)") +
+      " and " + (source / "scenarios").string() +
+      " (the source tree it was built from); give a directory with --scenarios DIR");
+}
+
+std::string default_scenario_directory() { return lab_data_directory() + "/scenarios"; }
 
 }  // namespace impulse2d::lab

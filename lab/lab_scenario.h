@@ -44,7 +44,12 @@ LabScenario parse_lab_scenario(const std::string& text, const std::string& file)
 /// the directory cannot be read or has no scenario.
 std::vector<LabScenario> load_lab_scenarios(const std::string& directory);
 
-/// The directory of the scenarios shipped with the source tree.
+/// The lab's data (scenarios/, tuned/): installed, `share/impulse2d/lab` beside the program's
+/// `bin/` (found through /proc/self/exe), else the source tree the program was built from.
+/// Throws `std::runtime_error` naming both places when neither holds a scenarios/ folder.
+std::string lab_data_directory();
+
+/// The scenarios shipped with impulse2d: `lab_data_directory()`'s scenarios/.
 std::string default_scenario_directory();
 
 }  // namespace impulse2d::lab
