@@ -6,8 +6,8 @@
 #                 core's usage requirements must switch it off again), then main.cpp compiled
 #                 by hand with `pkg-config --cflags --libs impulse2d`; both must print the
 #                 same state hash;
-#   subdirectory  the consumer adds SOURCE_DIR with add_subdirectory while GoogleTest, CLI11
-#                 and zlib are hidden (CMAKE_DISABLE_FIND_PACKAGE_*): none of them is needed.
+#   subdirectory  the consumer adds SOURCE_DIR with add_subdirectory while GoogleTest and
+#                 CLI11 are hidden (CMAKE_DISABLE_FIND_PACKAGE_*): neither is needed.
 # Any failing step stops the test with the step's output.
 function(run what)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
@@ -67,8 +67,7 @@ if(MODE STREQUAL "installed")
   endif()
 elseif(MODE STREQUAL "subdirectory")
   run("configure with add_subdirectory" ${configure} -DIMPULSE2D_SOURCE_DIR=${SOURCE_DIR}
-      -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
-      -DCMAKE_DISABLE_FIND_PACKAGE_ZLIB=ON)
+      -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON)
   run("build" ${CMAKE_COMMAND} --build ${work}/build --parallel 2)
   run("run" ${work}/build/consumer)
   expect_ok("add_subdirectory consumer")
