@@ -58,8 +58,8 @@ void write_file_atomically(const std::filesystem::path& file, const void* data, 
   if (file.has_parent_path()) {
     std::filesystem::create_directories(file.parent_path(), error);
     if (error) {
-      throw ImageError("cannot create directory '" + file.parent_path().string() +
-                       "': " + error.message());
+      throw ImageError("cannot write '" + file.string() + "': creating the directory '" +
+                       file.parent_path().string() + "' failed: " + error.message());
     }
   }
   const std::filesystem::path temporary = temporary_sibling(file);

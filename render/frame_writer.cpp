@@ -1,6 +1,7 @@
 /// @file frame_writer.cpp
 #include "render/frame_writer.h"
 
+#include "image/error.h"
 #include "image/file_io.h"
 #include "image/png.h"
 
@@ -153,6 +154,9 @@ void AsyncFrameWriter::work() {
       image::write_file_atomically(path_for(job.frame_number), png);
       write_seconds = seconds_since(write_start);
       bytes = png.size();
+    } catch (const image::ImageError& failure) {
+      // The writer's callers see one exception type for every way a sequence can fail.
+      error = std::make_exception_ptr(RenderError(failure.what()));
     } catch (...) {
       error = std::current_exception();
     }

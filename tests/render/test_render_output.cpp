@@ -2,8 +2,9 @@
 // failure and the frame-sequence writer.
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
-#include "image/png.h"
 #include "render/render_error.h"
+#include "image/error.h"
+#include "image/png.h"
 #include "tests/support/test_render_support.h"
 
 #include <gtest/gtest.h>
@@ -82,20 +83,20 @@ TEST(RenderPng, WritePngReplacesTheFileAtomically) {
 TEST(RenderPng, BadInputIsAClearErrorAndLeavesNoFile) {
   const fs::path directory = support::make_temporary_directory("render-bad");
   Frame empty;
-  EXPECT_THROW(image::encode_png(empty), RenderError);
-  EXPECT_THROW(image::save_png(directory / "empty.png", empty), RenderError);
+  EXPECT_THROW(image::encode_png(empty), image::ImageError);
+  EXPECT_THROW(image::save_png(directory / "empty.png", empty), image::ImageError);
   Frame inconsistent;
   inconsistent.width = 4;
   inconsistent.height = 4;
   inconsistent.rgba.resize(10);
-  EXPECT_THROW(image::encode_png(inconsistent), RenderError);
+  EXPECT_THROW(image::encode_png(inconsistent), image::ImageError);
   // A directory that cannot exist: its parent is a regular file.
   const fs::path blocker = directory / "not_a_directory";
   std::ofstream(blocker) << "x";
   try {
     image::save_png(blocker / "frame.png", rendered_frame());
     FAIL() << "writing under a regular file succeeded";
-  } catch (const RenderError& error) {
+  } catch (const image::ImageError& error) {
     EXPECT_NE(std::string(error.what()).find((blocker / "frame.png").string()), std::string::npos) << error.what();
   }
   EXPECT_EQ(count_entries(directory), 1);  // only the blocker
