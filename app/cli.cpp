@@ -83,7 +83,8 @@ int run_cli(int argc, char** argv) {
   CLI::App app{
       "impulse2d: a 2D impulse-based rigid-body engine; renders scenes to PNG frames.\n"
       "Without a command it renders the default demo (" +
-          default_scene().name + ") into out/.",
+          default_scene().name + ") into out/,\nwith the overlays " + default_demo_overlays +
+          ".",
       "impulse2d"};
   app.require_subcommand(0, 1);
   // Options of the program (--quiet, --version) may also come after the command's name.

@@ -54,7 +54,11 @@ Command add_lab_command(CLI::App& program, const ProgramOptions& options);
 /// `impulse2d tune`.
 Command add_tune_command(CLI::App& program, const ProgramOptions& options);
 
-/// No command: renders the default demo into out/ (replacing its earlier frames there).
+/// The overlays of the default demo (`render <default scene> --overlays ...`).
+inline constexpr const char* default_demo_overlays = "normals,impulses,penetration";
+
+/// No command: renders the default demo into out/ (replacing its earlier frames there) with
+/// `default_demo_overlays`, as `render <default scene> --overlays ... --clean` would.
 void render_default_demo(const ProgramOptions& options, std::ostream& out);
 
 }  // namespace impulse2d::demos

@@ -194,6 +194,8 @@ void render_default_demo(const ProgramOptions& options, std::ostream& out) {
   RenderArguments demo;
   demo.quiet = options.quiet;
   demo.scene.scene = default_scene().name;
+  // What the README's first paragraph promises: the contacts' normals, impulses and overlaps.
+  demo.overlays = default_demo_overlays;
   demo.clean = true;  // the default demo always refreshes out/<default scene>_*.png
   render_scene(demo, out);
 }

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs every Debian package impulse2d needs (idempotent), then configures and builds.
-# Usage: scripts/setup.sh [build-dir]     (default build dir: build)
+# Installs every Debian package impulse2d needs (idempotent, saying what apt does), then
+# configures a Release build and builds the given targets (every target when none is given).
+# Usage: scripts/setup.sh [build-dir [target...]]     (default build dir: build)
+#        scripts/setup.sh build impulse2d             (the program only: what scripts/run.sh does)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -18,14 +20,25 @@ for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ "${#missing[@]}" -gt 0 ]; then
-  echo "setup: installing ${missing[*]}"
   sudo_cmd=""
   [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
   export DEBIAN_FRONTEND=noninteractive
-  $sudo_cmd apt-get update -qq
-  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  echo "setup: ${#missing[@]} Debian packages are missing: ${missing[*]}"
+  echo "setup: apt-get update (reading the package lists)"
+  $sudo_cmd apt-get update
+  echo "setup: apt-get install (downloading, unpacking and setting up each package; a few minutes)"
+  $sudo_cmd apt-get install -y --no-install-recommends "${missing[@]}"
+  echo "setup: packages installed"
 fi
 
 build_dir="${1:-build}"
+shift || true
+echo "setup: configuring a Release build in $build_dir/"
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build_dir" -j "$(nproc)"
+if [ "$#" -gt 0 ]; then
+  echo "setup: building $* in $build_dir/"
+  cmake --build "$build_dir" -j "$(nproc)" --target "$@"
+else
+  echo "setup: building every target in $build_dir/"
+  cmake --build "$build_dir" -j "$(nproc)"
+fi
