@@ -1,8 +1,8 @@
 #pragma once
 /// @file lab_command.h
 /// `impulse2d lab`, `impulse2d lab merge` and `impulse2d tune` as plain functions of their
-/// arguments (the command line's parsing is in demos/cli.cpp). Progress goes to stderr, the
-/// report to `out`; bad input throws `demos::UsageError` (exit status 2).
+/// arguments (the command line's parsing is in app/command_lab.cpp and app/command_tune.cpp).
+/// Progress goes to stderr, the report to `out`; bad input throws `demos::UsageError` (exit status 2).
 
 #include <optional>
 #include <ostream>

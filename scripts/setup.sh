@@ -1,19 +1,32 @@
 #!/usr/bin/env bash
-# Installs every Debian package impulse2d needs (idempotent, saying what apt does), then
+# Installs the Debian packages impulse2d needs (idempotent, saying what apt does), then
 # configures a Release build and builds the given targets (every target when none is given).
-# Usage: scripts/setup.sh [build-dir [target...]]     (default build dir: build)
-#        scripts/setup.sh build impulse2d             (the program only: what scripts/run.sh does)
+# Usage: scripts/setup.sh [--program] [build-dir [target...]]     (default build dir: build)
+#   --program   only what the impulse2d program needs (scripts/run.sh): its packages, and a
+#               build with the tests switched off; without it, every package and the tests on.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(
-  build-essential cmake pkg-config git
-  libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev libstb-dev libgtest-dev
-  nlohmann-json3-dev libcli11-dev libdeflate-dev zlib1g-dev
+# The program: compiler, CMake, and the libraries it links.
+program_packages=(
+  build-essential cmake pkg-config
+  libosmesa6-dev libegl-dev libegl-mesa0 libglm-dev libstb-dev
+  nlohmann-json3-dev libcli11-dev libdeflate-dev
+)
+# Everything else: tests, peers, charts, video, the browser viewer's test, the sanitizer build.
+other_packages=(
+  git libgtest-dev
   gnuplot-nox libbox2d-dev libchipmunk-dev
   clang libclang-rt-14-dev doxygen
   ffmpeg chromium fonts-dejavu-core
 )
+program_only=0
+if [ "${1:-}" = "--program" ]; then
+  program_only=1
+  shift
+fi
+packages=("${program_packages[@]}")
+[ "$program_only" -eq 1 ] || packages+=("${other_packages[@]}")
 
 missing=()
 for p in "${packages[@]}"; do
@@ -34,7 +47,12 @@ fi
 build_dir="${1:-build}"
 shift || true
 echo "setup: configuring a Release build in $build_dir/"
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
+if [ "$program_only" -eq 1 ]; then
+  tests=OFF
+else
+  tests=ON
+fi
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DIMPULSE2D_BUILD_TESTS="$tests" >/dev/null
 if [ "$#" -gt 0 ]; then
   echo "setup: building $* in $build_dir/"
   cmake --build "$build_dir" -j "$(nproc)" --target "$@"
