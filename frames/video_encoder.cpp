@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "frames/child_process.h"
 #include "scene/usage_error.h"
 
 extern char** environ;
@@ -42,43 +43,7 @@ std::vector<std::string> encoder_arguments(const std::string& extension) {
   return arguments;
 }
 
-/// What a wait status says, in words: "exit status 1", "killed by signal 9 (Killed)".
-std::string describe_status(int status) {
-  if (WIFEXITED(status)) return "exit status " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) {
-    const int number = WTERMSIG(status);
-    const char* name = strsignal(number);
-    return "killed by signal " + std::to_string(number) + (name ? std::string(" (") + name + ")" : "");
-  }
-  return "wait status " + std::to_string(status);
-}
-
-/// Waits for `child`, through interruptions by a signal; the wait status, or -1.
-int wait_for(pid_t child) {
-  int status = 0;
-  while (waitpid(child, &status, 0) == -1) {
-    if (errno != EINTR) return -1;
-  }
-  return status;
-}
-
 }  // namespace
-
-std::optional<std::filesystem::path> find_on_path(const char* name) {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return std::nullopt;
-  const std::string directories = path;
-  std::size_t start = 0;
-  while (start <= directories.size()) {
-    const std::size_t colon = std::min(directories.find(':', start), directories.size());
-    const std::string directory = directories.substr(start, colon - start);
-    start = colon + 1;
-    if (directory.empty()) continue;
-    const std::filesystem::path candidate = std::filesystem::path(directory) / name;
-    if (access(candidate.c_str(), X_OK) == 0) return candidate;
-  }
-  return std::nullopt;
-}
 
 void check_video_output(const std::filesystem::path& output) {
   const std::string extension = output.extension().string();
@@ -163,13 +128,13 @@ void VideoEncoder::add(const render::Frame& frame) {
 void VideoEncoder::finish() {
   ::close(pipe_);
   pipe_ = -1;
-  const int status = wait_for(child_);
+  const int status = wait_for_child(child_);
   child_ = -1;
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     abandon();
     throw std::runtime_error("video: ffmpeg failed writing " + output_.string() + ": " +
                              (status == -1 ? std::string("cannot wait for it: ") + std::strerror(errno)
-                                           : describe_status(status)) +
+                                           : describe_wait_status(status)) +
                              " (see its message above)");
   }
   std::error_code error;
@@ -189,7 +154,7 @@ void VideoEncoder::abandon() {
   }
   if (child_ > 0) {
     ::kill(child_, SIGTERM);  // no need to finish a video that is thrown away
-    wait_for(child_);
+    wait_for_child(child_);
     child_ = -1;
   }
   if (!temporary_.empty()) {

@@ -7,14 +7,10 @@
 #include <sys/types.h>
 
 #include <filesystem>
-#include <optional>
 
 #include "render/frame.h"
 
 namespace impulse2d::demos {
-
-/// The executable `name` on PATH, or nothing.
-std::optional<std::filesystem::path> find_on_path(const char* name);
 
 /// Encodes frames into an .mp4 (H.264), .webm (VP9) or .gif file.
 class VideoEncoder {

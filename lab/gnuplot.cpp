@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "frames/video_encoder.h"
+#include "frames/child_process.h"
 
 extern char** environ;
 
@@ -43,17 +43,6 @@ std::string read_back(std::FILE* file) {
   return text;
 }
 
-/// What a wait status says, in words: "exit status 1", "killed by signal 9".
-std::string describe_status(int status) {
-  if (WIFEXITED(status)) return "exit status " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) {
-    const int number = WTERMSIG(status);
-    const char* name = strsignal(number);
-    return "killed by signal " + std::to_string(number) + (name ? std::string(" (") + name + ")" : "");
-  }
-  return "wait status " + std::to_string(status);
-}
-
 /// Runs gnuplot (found on PATH, started without a shell) reading the script from `script`,
 /// writing its image to `image` and its complaints to `log`. Returns the wait status; throws
 /// `std::runtime_error` with the reason when it cannot be started.
@@ -77,11 +66,9 @@ int spawn_gnuplot(int script, int image, int log) {
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   if (failed != 0) throw std::runtime_error(std::string("cannot start gnuplot: ") + std::strerror(failed));
-  int status = 0;
-  while (waitpid(child, &status, 0) == -1) {
-    if (errno != EINTR) {
-      throw std::runtime_error(std::string("cannot wait for gnuplot: ") + std::strerror(errno));
-    }
+  const int status = demos::wait_for_child(child);
+  if (status == -1) {
+    throw std::runtime_error(std::string("cannot wait for gnuplot: ") + std::strerror(errno));
   }
   return status;
 }
@@ -131,7 +118,7 @@ void run_gnuplot(const std::string& script, const std::string& png_path) {
   const bool closed = ::close(image) == 0;
   const std::string log = read_back(log_file.file);
   const std::string said = log.empty() ? "" : ": " + log;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail(describe_status(status) + said);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail(demos::describe_wait_status(status) + said);
   if (!closed) fail("cannot write " + temporary_png + ": " + std::strerror(errno));
   std::error_code error;
   if (std::filesystem::file_size(temporary_png, error) == 0 || error) {
