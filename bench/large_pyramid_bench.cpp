@@ -83,7 +83,7 @@ Outcome run(const WorldSettings& settings, int rows, int steps) {
   outcome.ms_per_step = times[times.size() / 2];
   outcome.sag = built.back().y - world.body(boxes.back()).transform.position.y;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
-    const Body& body = world.body(boxes[i]);
+    const BodyView body = world.body(boxes[i]);
     const float side = std::fabs(body.transform.position.x - built[i].x);
     outcome.side = std::max(outcome.side, side);
     if (side > 0.1f) ++outcome.over;

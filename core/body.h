@@ -1,6 +1,6 @@
 #pragma once
 /// @file body.h
-/// Rigid bodies: their definition, their handle, and the state the world keeps for each.
+/// Rigid bodies: their definition, their handle, and the view of one that the world hands out.
 
 #include "core/material.h"
 #include "core/math.h"
@@ -53,40 +53,35 @@ struct BodyDef {
   std::uint64_t user_data = 0;           ///< any value the caller wants back
 };
 
-/// The state the world keeps for one body. Read it through `World::body(id)`.
-/// The fields the step reads for every contact and sub-step come first, so that they share
-/// the first two cache lines; the shape and material (read by the narrow phase alone) last.
-struct Body {
-  BodyId id;                  ///< this body's handle
+/// What users read of a body, returned by `World::body(id)`: a copy of its state taken when
+/// asked (it does not follow the body as the world steps), plus pointers to its shape and
+/// material, which stay in the world and are valid until the world next creates or removes a
+/// body. Change a body through `World`'s setters.
+struct BodyView {
+  BodyId id;                          ///< this body's handle
   BodyType type = BodyType::Dynamic;  ///< how it moves
-  bool awake = true;             ///< false while sleeping
-  bool fixed_rotation = false;   ///< inertia treated as infinite
-  bool is_bullet = false;        ///< swept against other bodies each step (no tunnelling)
-  Transform transform;        ///< position (centre of mass) and rotation
-  float angle = 0.0f;         ///< radians, unwrapped (keeps counting past pi)
-  vec2 linear_velocity{0.0f, 0.0f};  ///< m/s
-  float angular_velocity = 0.0f;     ///< rad/s
-  float inverse_mass = 0.0f;     ///< 1/kg
-  float inverse_inertia = 0.0f;  ///< 1/(kg m^2); 0 when rotation is fixed
-  vec2 force{0.0f, 0.0f};  ///< N, accumulated until the next step, then cleared
-  float torque = 0.0f;     ///< N m, accumulated until the next step, then cleared
-  float gravity_scale = 1.0f;    ///< multiplies the world's gravity
-  float linear_damping = 0.0f;   ///< 1/s
-  float angular_damping = 0.0f;  ///< 1/s
-  float mass = 0.0f;             ///< kg (0 for static and kinematic bodies)
-  float inertia = 0.0f;          ///< kg m^2 about the centre of mass
-  vec2 previous_position{0.0f, 0.0f};  ///< at the start of the last step (for interpolation)
-  float previous_angle = 0.0f;          ///< at the start of the last step
-  float sleep_time = 0.0f;       ///< seconds the body has been slow
-  /// Farthest distance (m) of the shape's surface from the centre of mass (`shape_extent`),
-  /// kept here beside the fields contact recycling reads, away from the shape's cold bytes.
-  float extent = 0.0f;
-  bool speculative = true;       ///< its pairs get speculative contacts
-  std::uint32_t collision_layers = 1;  ///< bitmask
-  Aabb aabb;                     ///< world bounds, updated each step
-  std::uint64_t user_data = 0;   ///< the caller's value
-  Material material;          ///< what it is made of
-  Shape shape;                ///< in body-local coordinates, centroid at the origin
+  bool awake = true;                  ///< false while sleeping
+  bool fixed_rotation = false;        ///< inertia treated as infinite
+  bool is_bullet = false;             ///< swept against other bodies each step (no tunnelling)
+  Transform transform;                ///< position of the centre of mass (metres) and rotation
+  float angle = 0.0f;                 ///< radians, unwrapped (keeps counting past pi)
+  vec2 linear_velocity{0.0f, 0.0f};   ///< m/s
+  float angular_velocity = 0.0f;      ///< rad/s, counter-clockwise
+  /// Centre of mass at the start of the last step, metres: draw at
+  /// `previous_position + (transform.position - previous_position) * World::interpolation_alpha()`.
+  vec2 previous_position{0.0f, 0.0f};
+  float previous_angle = 0.0f;        ///< radians, at the start of the last step
+  float mass = 0.0f;                  ///< kg (0 for static and kinematic bodies)
+  float inertia = 0.0f;               ///< kg m^2 about the centre of mass
+  float inverse_inertia = 0.0f;       ///< 1/(kg m^2); 0 when contacts cannot turn it
+  float gravity_scale = 1.0f;         ///< multiplies the world's gravity
+  float linear_damping = 0.0f;        ///< 1/s
+  float angular_damping = 0.0f;       ///< 1/s
+  std::uint32_t collision_layers = 1; ///< bitmask
+  Aabb aabb;                          ///< world bounds after the last step, metres
+  std::uint64_t user_data = 0;        ///< the caller's value
+  const Shape* shape = nullptr;       ///< in body-local coordinates, centroid at the origin
+  const Material* material = nullptr; ///< what it is made of
 };
 
 }  // namespace impulse2d

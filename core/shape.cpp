@@ -254,26 +254,18 @@ Shape make_circle(float radius) {
   if (!std::isfinite(radius) || !(radius > 0.0f)) {
     fail("make_circle", "radius must be finite and > 0, got " + format_number(radius));
   }
-  Shape shape;
-  shape.type = ShapeType::Circle;
-  shape.circle.radius = radius;
-  return shape;
+  return Circle{radius};
 }
 
 Shape make_box(vec2 half_extents) {
   validate_half_extents("make_box", half_extents);
-  Shape shape;
-  shape.type = ShapeType::Box;
-  shape.box.half_extents = half_extents;
-  return shape;
+  return Box{half_extents};
 }
 
 Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out) {
   validate_polygon(vertices, count);
   const vec2 centroid = compute_polygon_mass(vertices, count, 1.0f).centroid;
-  Shape shape;
-  shape.type = ShapeType::Polygon;
-  Polygon& polygon = shape.polygon;
+  Polygon polygon;
   polygon.count = count;
   for (int i = 0; i < count; ++i) polygon.vertices[i] = vertices[i] - centroid;
   for (int i = 0; i < count; ++i) {
@@ -282,7 +274,7 @@ Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out) {
   }
   polygon.radius = farthest_vertex_distance(polygon);
   if (centroid_out != nullptr) *centroid_out = centroid;
-  return shape;
+  return polygon;
 }
 
 float farthest_vertex_distance(const Polygon& polygon) {
@@ -295,11 +287,9 @@ float farthest_vertex_distance(const Polygon& polygon) {
 
 Shape make_oriented_box(vec2 half_extents) {
   validate_half_extents("make_oriented_box", half_extents);
-  Shape shape;
-  shape.type = ShapeType::Polygon;
-  shape.polygon = box_as_polygon(Box{half_extents});
-  shape.polygon.radius = farthest_vertex_distance(shape.polygon);
-  return shape;
+  Polygon polygon = box_as_polygon(Box{half_extents});
+  polygon.radius = farthest_vertex_distance(polygon);
+  return polygon;
 }
 
 MassData compute_polygon_mass(const vec2* vertices, int count, float density) {
@@ -339,38 +329,38 @@ MassData compute_polygon_mass(const vec2* vertices, int count, float density) {
 MassData compute_mass(const Shape& shape, float density) {
   validate_density("compute_mass", density);
   MassData mass_data;
-  switch (shape.type) {
+  switch (shape.type()) {
     case ShapeType::Circle: {
-      const float radius = shape.circle.radius;
+      const float radius = shape.circle().radius;
       mass_data.area = pi * radius * radius;
       mass_data.mass = density * mass_data.area;
       mass_data.inertia = 0.5f * mass_data.mass * radius * radius;
       return mass_data;
     }
     case ShapeType::Box: {
-      const float width = 2.0f * shape.box.half_extents.x;
-      const float height = 2.0f * shape.box.half_extents.y;
+      const float width = 2.0f * shape.box().half_extents.x;
+      const float height = 2.0f * shape.box().half_extents.y;
       mass_data.area = width * height;
       mass_data.mass = density * mass_data.area;
       mass_data.inertia = mass_data.mass * (width * width + height * height) / 12.0f;
       return mass_data;
     }
     case ShapeType::Polygon:
-      return compute_polygon_mass(shape.polygon.vertices.data(), shape.polygon.count, density);
+      return compute_polygon_mass(shape.polygon().vertices.data(), shape.polygon().count, density);
   }
-  fail("compute_mass", "unknown shape type " + std::to_string(static_cast<int>(shape.type)));
+  fail("compute_mass", "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
 }
 
 Aabb compute_aabb(const Shape& shape, const Transform& transform) {
-  switch (shape.type) {
+  switch (shape.type()) {
     case ShapeType::Circle: {
-      const vec2 reach(shape.circle.radius, shape.circle.radius);
+      const vec2 reach(shape.circle().radius, shape.circle().radius);
       return {transform.position - reach, transform.position + reach};
     }
     case ShapeType::Box:
-      return box_bounds(shape.box, transform);
+      return box_bounds(shape.box(), transform);
     case ShapeType::Polygon: {
-      const Polygon& polygon = shape.polygon;
+      const Polygon& polygon = shape.polygon();
       Aabb bounds;
       bounds.lower = bounds.upper = transform.apply(polygon.vertices[0]);
       for (int i = 1; i < polygon.count; ++i) {
@@ -381,18 +371,18 @@ Aabb compute_aabb(const Shape& shape, const Transform& transform) {
       return bounds;
     }
   }
-  fail("compute_aabb", "unknown shape type " + std::to_string(static_cast<int>(shape.type)));
+  fail("compute_aabb", "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
 }
 
 bool shape_contains_point(const Shape& shape, const Transform& transform, vec2 point) {
-  switch (shape.type) {
+  switch (shape.type()) {
     case ShapeType::Circle:
       return length_squared(point - transform.position) <=
-             shape.circle.radius * shape.circle.radius;
+             shape.circle().radius * shape.circle().radius;
     case ShapeType::Box:
-      return box_bounds(shape.box, transform).contains(point);
+      return box_bounds(shape.box(), transform).contains(point);
     case ShapeType::Polygon: {
-      const Polygon& polygon = shape.polygon;
+      const Polygon& polygon = shape.polygon();
       const vec2 local_point = transform.apply_inverse(point);
       for (int i = 0; i < polygon.count; ++i) {
         if (glm::dot(polygon.normals[i], local_point - polygon.vertices[i]) > 0.0f) return false;
@@ -401,20 +391,20 @@ bool shape_contains_point(const Shape& shape, const Transform& transform, vec2 p
     }
   }
   fail("shape_contains_point",
-       "unknown shape type " + std::to_string(static_cast<int>(shape.type)));
+       "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
 }
 
 bool raycast_shape(const Shape& shape, const Transform& transform, vec2 origin, vec2 translation,
                    ShapeRayHit* hit) {
-  switch (shape.type) {
+  switch (shape.type()) {
     case ShapeType::Circle:
-      return raycast_circle(shape.circle, transform.position, origin, translation, hit);
+      return raycast_circle(shape.circle(), transform.position, origin, translation, hit);
     case ShapeType::Box:
-      return raycast_box(shape.box, transform, origin, translation, hit);
+      return raycast_box(shape.box(), transform, origin, translation, hit);
     case ShapeType::Polygon:
-      return raycast_polygon(shape.polygon, transform, origin, translation, hit);
+      return raycast_polygon(shape.polygon(), transform, origin, translation, hit);
   }
-  fail("raycast_shape", "unknown shape type " + std::to_string(static_cast<int>(shape.type)));
+  fail("raycast_shape", "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
 }
 
 }  // namespace impulse2d

@@ -2,9 +2,8 @@
 
 #include "core/error.h"
 #include "core/solver/integrate.h"
-#include "core/collide/narrow_phase.h"
-#include "core/solver/position_correction.h"
-#include "core/collide/speculative_reach.h"
+#include "core/solver/step_solver.h"
+#include "core/solver/world_state.h"
 
 #include <algorithm>
 #include <chrono>
@@ -39,21 +38,34 @@ void require_finite(vec2 value, const char* caller, const char* name) {
   if (!is_finite(value)) throw Error(std::string(caller) + ": " + name + " is not finite");
 }
 
+bool is_living(const WorldState& world, BodyId id) {
+  return !id.is_null() && id.index < world.bodies.size() && world.alive[id.index] &&
+         world.bodies[id.index].id.generation == id.generation;
+}
+
+Body& checked_body(WorldState& world, BodyId id, const char* caller) {
+  if (!is_living(world, id)) {
+    throw Error(std::string(caller) + ": " + describe(id) +
+                (id.is_null() ? " is a null handle" : " is stale or was never created"));
+  }
+  return world.bodies[id.index];
+}
+
 void validate_shape(const Shape& shape) {
-  switch (shape.type) {
+  switch (shape.type()) {
     case ShapeType::Circle:
-      if (!(std::isfinite(shape.circle.radius) && shape.circle.radius > 0.0f)) {
+      if (!(std::isfinite(shape.circle().radius) && shape.circle().radius > 0.0f)) {
         throw Error("World::create_body: circle radius must be finite and > 0");
       }
       return;
     case ShapeType::Box:
-      if (!(is_finite(shape.box.half_extents) && shape.box.half_extents.x > 0.0f &&
-            shape.box.half_extents.y > 0.0f)) {
+      if (!(is_finite(shape.box().half_extents) && shape.box().half_extents.x > 0.0f &&
+            shape.box().half_extents.y > 0.0f)) {
         throw Error("World::create_body: box half extents must be finite and > 0");
       }
       return;
     case ShapeType::Polygon:
-      if (shape.polygon.count < 3 || shape.polygon.count > max_polygon_vertices) {
+      if (shape.polygon().count < 3 || shape.polygon().count > max_polygon_vertices) {
         throw Error("World::create_body: polygon needs 3..8 vertices (use make_polygon)");
       }
       return;
@@ -61,23 +73,74 @@ void validate_shape(const Shape& shape) {
   throw Error("World::create_body: unknown shape type");
 }
 
+// One walk over the bodies after the solve: forces cleared, diverged bodies put back where the
+// step began (and reported), bounds refreshed and covered by the broad phase (queries search
+// its trees; the next step's contacts start from these bounds), awake bodies counted.
+void finish_bodies(WorldState& world) {
+  for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
+    Body& body = world.bodies[i];
+    body.force = vec2(0.0f);
+    body.torque = 0.0f;
+    if (!world.alive[i]) continue;
+    const bool finite = is_finite(body.transform.position) && std::isfinite(body.angle) &&
+                        is_finite(body.linear_velocity) && std::isfinite(body.angular_velocity);
+    if (!finite) {
+      body.transform = Transform{body.previous_position, Rotation::from_angle(body.previous_angle)};
+      body.angle = body.previous_angle;
+      body.linear_velocity = vec2(0.0f);
+      body.angular_velocity = 0.0f;
+      body.awake = false;
+      world.diverged_bodies.push_back(body.id);
+    }
+    body.aabb = compute_aabb(body.shape, body.transform);
+    world.broad_phase.cover(i, body.aabb);
+    if (body.awake && body.type != BodyType::Static) ++world.stats.awake_body_count;
+  }
+  world.bounds_current = true;
+}
+
 }  // namespace
 
-World::World(const WorldSettings& settings) : settings_(settings) { validate_settings(settings_); }
+World::World(const WorldSettings& settings) : state_(std::make_unique<WorldState>()) {
+  validate_settings(settings);
+  state_->settings = settings;
+}
+
+World::World(const World& other) : state_(std::make_unique<WorldState>(*other.state_)) {}
+
+World& World::operator=(const World& other) {
+  if (this != &other) state_ = std::make_unique<WorldState>(*other.state_);
+  return *this;
+}
+
+World::World(World&& other) noexcept = default;
+World& World::operator=(World&& other) noexcept = default;
+World::~World() = default;
+
+const WorldSettings& World::settings() const { return state_->settings; }
+int World::body_count() const { return state_->living_body_count; }
+float World::interpolation_alpha() const { return state_->accumulator / state_->settings.time_step; }
+double World::time() const { return state_->time; }
+std::int64_t World::step_count() const { return state_->step_count; }
+const std::vector<Contact>& World::contacts() const { return state_->contacts; }
+const std::vector<Contact>& World::sleeping_contacts() const { return state_->sleeping_contacts; }
+void World::set_contact_filter(ContactFilter filter) { state_->contact_filter = std::move(filter); }
+const StepStats& World::stats() const { return state_->stats; }
+const std::vector<BodyId>& World::diverged_bodies() const { return state_->diverged_bodies; }
 
 void World::set_settings(const WorldSettings& settings) {
   validate_settings(settings);
-  settings_ = settings;
+  state_->settings = settings;
 }
 
 void World::set_gravity(vec2 gravity) {
-  WorldSettings changed = settings_;
+  WorldSettings changed = state_->settings;
   changed.gravity = gravity;
   set_settings(changed);
 }
 
 void World::set_time_step(float time_step) {
-  WorldSettings changed = settings_;
+  WorldSettings changed = state_->settings;
   changed.time_step = time_step;
   set_settings(changed);
 }
@@ -103,29 +166,31 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   }
 
   std::uint32_t index;
-  if (!free_slots_.empty()) {
+  if (!state_->free_slots.empty()) {
     // Lowest free slot first, so the slot order is the same for the same calls.
-    auto lowest = std::min_element(free_slots_.begin(), free_slots_.end());
+    auto lowest = std::min_element(state_->free_slots.begin(), state_->free_slots.end());
     index = *lowest;
-    free_slots_.erase(lowest);
+    state_->free_slots.erase(lowest);
   } else {
-    index = static_cast<std::uint32_t>(bodies_.size());
-    bodies_.emplace_back();
-    alive_.push_back(0);
+    index = static_cast<std::uint32_t>(state_->bodies.size());
+    state_->bodies.emplace_back();
+    state_->alive.push_back(0);
   }
-  const std::uint32_t generation = bodies_[index].id.generation + 1;
+  const std::uint32_t generation = state_->bodies[index].id.generation + 1;
   Body body;
   body.id = BodyId{index, generation};
   body.type = def.type;
   body.shape = shape;
-  if (shape.type == ShapeType::Polygon) {
+  if (shape.type() == ShapeType::Polygon) {
     // Made here, not trusted from the caller: vertices edited after `make_polygon` would
     // leave a stale cached radius.
-    body.shape.polygon.radius = farthest_vertex_distance(shape.polygon);
+    Polygon polygon = shape.polygon();
+    polygon.radius = farthest_vertex_distance(polygon);
+    body.shape = polygon;
   }
   body.extent = shape_extent(body.shape);
   body.material = def.material;
-  const bool rotates = shape.type != ShapeType::Box && !def.fixed_rotation;
+  const bool rotates = shape.type() != ShapeType::Box && !def.fixed_rotation;
   body.angle = rotates ? def.angle : 0.0f;
   body.transform = Transform{def.position, Rotation::from_angle(body.angle)};
   body.previous_position = def.position;
@@ -148,50 +213,33 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   body.collision_layers = def.collision_layers;
   body.user_data = def.user_data;
   body.aabb = compute_aabb(body.shape, body.transform);
-  bodies_[index] = body;
-  alive_[index] = 1;
-  broad_phase_.add_body(index, body.type, body.aabb);
-  ++living_body_count_;
+  state_->bodies[index] = body;
+  state_->alive[index] = 1;
+  state_->broad_phase.add_body(index, body.type, body.aabb);
+  ++state_->living_body_count;
   return body.id;
 }
 
 void World::remove_body(BodyId id) {
-  checked_body(id, "World::remove_body");
-  alive_[id.index] = 0;
-  broad_phase_.remove_body(id.index);
-  free_slots_.push_back(id.index);
-  --living_body_count_;
+  checked_body(*state_, id, "World::remove_body");
+  state_->alive[id.index] = 0;
+  state_->broad_phase.remove_body(id.index);
+  state_->free_slots.push_back(id.index);
+  --state_->living_body_count;
   // Forget its contacts now so nothing refers to the dead slot.
-  erase_contacts_of(contacts_, id);
-  forget_sleeping_contacts(id);
+  erase_contacts_of(state_->contacts, id);
+  erase_contacts_of(state_->sleeping_contacts, id);
 }
 
-void World::forget_sleeping_contacts(BodyId id) { erase_contacts_of(sleeping_contacts_, id); }
+bool World::is_valid(BodyId id) const { return is_living(*state_, id); }
 
-bool World::is_valid(BodyId id) const {
-  return !id.is_null() && id.index < bodies_.size() && alive_[id.index] &&
-         bodies_[id.index].id.generation == id.generation;
-}
-
-Body& World::checked_body(BodyId id, const char* caller) {
-  if (!is_valid(id)) {
-    throw Error(std::string(caller) + ": " + describe(id) +
-                (id.is_null() ? " is a null handle" : " is stale or was never created"));
-  }
-  return bodies_[id.index];
-}
-
-const Body& World::checked_body(BodyId id, const char* caller) const {
-  return const_cast<World*>(this)->checked_body(id, caller);
-}
-
-const Body& World::body(BodyId id) const { return checked_body(id, "World::body"); }
+BodyView World::body(BodyId id) const { return view_of(checked_body(*state_, id, "World::body")); }
 
 std::vector<BodyId> World::body_ids() const {
   std::vector<BodyId> ids;
-  ids.reserve(static_cast<std::size_t>(living_body_count_));
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (alive_[i]) ids.push_back(bodies_[i].id);
+  ids.reserve(static_cast<std::size_t>(state_->living_body_count));
+  for (std::size_t i = 0; i < state_->bodies.size(); ++i) {
+    if (state_->alive[i]) ids.push_back(state_->bodies[i].id);
   }
   return ids;
 }
@@ -200,21 +248,21 @@ void World::set_transform(BodyId id, vec2 position, float angle) {
   const char* caller = "World::set_transform";
   require_finite(position, caller, "position");
   require_finite(angle, caller, "angle");
-  Body& body = checked_body(id, caller);
+  Body& body = checked_body(*state_, id, caller);
   if (body.fixed_rotation) angle = 0.0f;
   body.transform = Transform{position, Rotation::from_angle(angle)};
   body.angle = angle;
   body.previous_position = position;
   body.previous_angle = angle;
   body.aabb = compute_aabb(body.shape, body.transform);
-  broad_phase_.cover(id.index, body.aabb);
+  state_->broad_phase.cover(id.index, body.aabb);
   body.awake = true;
-  forget_sleeping_contacts(id);  // its set-aside contacts no longer describe where it is
+  erase_contacts_of(state_->sleeping_contacts, id);  // its set-aside contacts no longer describe where it is
 }
 
 void World::set_linear_velocity(BodyId id, vec2 velocity) {
   require_finite(velocity, "World::set_linear_velocity", "velocity");
-  Body& body = checked_body(id, "World::set_linear_velocity");
+  Body& body = checked_body(*state_, id, "World::set_linear_velocity");
   if (body.type == BodyType::Static) return;
   body.linear_velocity = velocity;
   body.awake = true;
@@ -222,7 +270,7 @@ void World::set_linear_velocity(BodyId id, vec2 velocity) {
 
 void World::set_angular_velocity(BodyId id, float angular_velocity) {
   require_finite(angular_velocity, "World::set_angular_velocity", "angular_velocity");
-  Body& body = checked_body(id, "World::set_angular_velocity");
+  Body& body = checked_body(*state_, id, "World::set_angular_velocity");
   if (body.type == BodyType::Static || body.fixed_rotation) return;
   body.angular_velocity = angular_velocity;
   body.awake = true;
@@ -230,12 +278,12 @@ void World::set_angular_velocity(BodyId id, float angular_velocity) {
 
 void World::set_gravity_scale(BodyId id, float scale) {
   require_finite(scale, "World::set_gravity_scale", "scale");
-  checked_body(id, "World::set_gravity_scale").gravity_scale = scale;
+  checked_body(*state_, id, "World::set_gravity_scale").gravity_scale = scale;
 }
 
 void World::set_material(BodyId id, const Material& material) {
   validate_material(material, "World::set_material: material");
-  Body& body = checked_body(id, "World::set_material");
+  Body& body = checked_body(*state_, id, "World::set_material");
   if (body.type == BodyType::Dynamic) {
     if (!(material.density > 0.0f)) {
       throw Error("World::set_material: a dynamic body needs material density > 0 (got " +
@@ -254,7 +302,7 @@ void World::set_material(BodyId id, const Material& material) {
 void World::apply_force(BodyId id, vec2 force, vec2 world_point) {
   require_finite(force, "World::apply_force", "force");
   require_finite(world_point, "World::apply_force", "world_point");
-  Body& body = checked_body(id, "World::apply_force");
+  Body& body = checked_body(*state_, id, "World::apply_force");
   if (body.type != BodyType::Dynamic) return;
   body.force += force;
   body.torque += cross(world_point - body.transform.position, force);
@@ -263,7 +311,7 @@ void World::apply_force(BodyId id, vec2 force, vec2 world_point) {
 
 void World::apply_force_to_center(BodyId id, vec2 force) {
   require_finite(force, "World::apply_force_to_center", "force");
-  Body& body = checked_body(id, "World::apply_force_to_center");
+  Body& body = checked_body(*state_, id, "World::apply_force_to_center");
   if (body.type != BodyType::Dynamic) return;
   body.force += force;
   body.awake = true;
@@ -271,7 +319,7 @@ void World::apply_force_to_center(BodyId id, vec2 force) {
 
 void World::apply_torque(BodyId id, float torque) {
   require_finite(torque, "World::apply_torque", "torque");
-  Body& body = checked_body(id, "World::apply_torque");
+  Body& body = checked_body(*state_, id, "World::apply_torque");
   if (body.type != BodyType::Dynamic) return;
   body.torque += torque;
   body.awake = true;
@@ -280,24 +328,24 @@ void World::apply_torque(BodyId id, float torque) {
 void World::apply_linear_impulse(BodyId id, vec2 impulse, vec2 world_point) {
   require_finite(impulse, "World::apply_linear_impulse", "impulse");
   require_finite(world_point, "World::apply_linear_impulse", "world_point");
-  Body& body = checked_body(id, "World::apply_linear_impulse");
+  Body& body = checked_body(*state_, id, "World::apply_linear_impulse");
   if (body.type != BodyType::Dynamic) return;
   body.linear_velocity += impulse * body.inverse_mass;
-  body.angular_velocity += effective_inverse_inertia(body, settings_) *
+  body.angular_velocity += effective_inverse_inertia(body, state_->settings) *
                            cross(world_point - body.transform.position, impulse);
   body.awake = true;
 }
 
 void World::apply_angular_impulse(BodyId id, float impulse) {
   require_finite(impulse, "World::apply_angular_impulse", "impulse");
-  Body& body = checked_body(id, "World::apply_angular_impulse");
+  Body& body = checked_body(*state_, id, "World::apply_angular_impulse");
   if (body.type != BodyType::Dynamic) return;
-  body.angular_velocity += effective_inverse_inertia(body, settings_) * impulse;
+  body.angular_velocity += effective_inverse_inertia(body, state_->settings) * impulse;
   body.awake = true;
 }
 
 void World::set_awake(BodyId id, bool awake) {
-  Body& body = checked_body(id, "World::set_awake");
+  Body& body = checked_body(*state_, id, "World::set_awake");
   if (body.type == BodyType::Static) return;
   body.awake = awake;
   body.sleep_time = 0.0f;
@@ -308,10 +356,10 @@ void World::set_awake(BodyId id, bool awake) {
 }
 
 bool World::set_contact_enabled(BodyId a, BodyId b, bool enabled) {
-  checked_body(a, "World::set_contact_enabled");
-  checked_body(b, "World::set_contact_enabled");
+  checked_body(*state_, a, "World::set_contact_enabled");
+  checked_body(*state_, b, "World::set_contact_enabled");
   if (b.index < a.index) std::swap(a, b);
-  for (std::vector<Contact>* list : {&contacts_, &sleeping_contacts_}) {
+  for (std::vector<Contact>* list : {&state_->contacts, &state_->sleeping_contacts}) {
     for (Contact& contact : *list) {
       if (contact.body_a == a && contact.body_b == b) {
         contact.enabled = enabled;  // the next step's narrow phase carries it over
@@ -325,205 +373,45 @@ bool World::set_contact_enabled(BodyId a, BodyId b, bool enabled) {
 // ---- the step ---------------------------------------------------------------------------
 
 void World::step() {
+  WorldState& world = *state_;
   const Clock::time_point start = Clock::now();
-  stats_ = StepStats{};
-  diverged_bodies_.clear();
-  for (Body& body : bodies_) {
+  world.stats = StepStats{};
+  world.diverged_bodies.clear();
+  for (Body& body : world.bodies) {
     body.previous_position = body.transform.position;
     body.previous_angle = body.angle;
   }
-  if (!solver_ || solver_method_ != settings_.solver) {
-    solver_ = make_step_solver(settings_.solver);
-    solver_method_ = settings_.solver;
+  if (!world.solver || world.solver_method != world.settings.solver) {
+    world.solver = make_step_solver(world.settings.solver);
+    world.solver_method = world.settings.solver;
   }
   const Clock::time_point solve_start = Clock::now();
-  solver_->step(*this, resolve_solver_context(settings_));
+  SolverStages stages(world);
+  world.solver->step(stages, resolve_solver_context(world.settings));
   // Whatever the stages did not time themselves is the solver's own work.
-  stats_.solver_ms = elapsed_ms(solve_start) - stats_.broad_phase_ms - stats_.narrow_phase_ms -
-                     stats_.integrate_ms - stats_.position_ms;
-  if (settings_.enable_sleeping) {
-    sleep_islands_.update(bodies_, alive_, contacts_, settings_, settings_.time_step);
+  world.stats.solver_ms = elapsed_ms(solve_start) - world.stats.broad_phase_ms -
+                          world.stats.narrow_phase_ms - world.stats.integrate_ms -
+                          world.stats.position_ms;
+  if (world.settings.enable_sleeping) {
+    world.sleep_islands.update(world.bodies, world.alive, world.contacts, world.settings,
+                               world.settings.time_step);
   }
-  finish_bodies();
-  time_ += static_cast<double>(settings_.time_step);
-  ++step_count_;
-  stats_.body_count = living_body_count_;
-  stats_.total_ms = elapsed_ms(start);
+  finish_bodies(world);
+  world.time += static_cast<double>(world.settings.time_step);
+  ++world.step_count;
+  world.stats.body_count = world.living_body_count;
+  world.stats.total_ms = elapsed_ms(start);
 }
-
-// One walk over the bodies after the solve: forces cleared, diverged bodies put back where the
-// step began (and reported), bounds refreshed and covered by the broad phase (queries search
-// its trees; the next step's contacts start from these bounds), awake bodies counted.
-void World::finish_bodies() {
-  for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
-    Body& body = bodies_[i];
-    body.force = vec2(0.0f);
-    body.torque = 0.0f;
-    if (!alive_[i]) continue;
-    const bool finite = is_finite(body.transform.position) && std::isfinite(body.angle) &&
-                        is_finite(body.linear_velocity) && std::isfinite(body.angular_velocity);
-    if (!finite) {
-      body.transform = Transform{body.previous_position, Rotation::from_angle(body.previous_angle)};
-      body.angle = body.previous_angle;
-      body.linear_velocity = vec2(0.0f);
-      body.angular_velocity = 0.0f;
-      body.awake = false;
-      diverged_bodies_.push_back(body.id);
-    }
-    body.aabb = compute_aabb(body.shape, body.transform);
-    broad_phase_.cover(i, body.aabb);
-    if (body.awake && body.type != BodyType::Static) ++stats_.awake_body_count;
-  }
-  bounds_current_ = true;
-}
-
-namespace {
-
-bool is_moving(const Body& body) { return body.type != BodyType::Static && body.awake; }
-
-bool pair_less(const Contact& a, const Contact& b) {
-  return a.body_a.index < b.body_a.index ||
-         (a.body_a.index == b.body_a.index && a.body_b.index < b.body_b.index);
-}
-
-// Moves the contacts of `from` that `leaves` selects into `into`, both lists staying in pair
-// order (a merge through `scratch`); the others stay in `from`, in order.
-template <class Leaves>
-void move_contacts(std::vector<Contact>& from, std::vector<Contact>& into,
-                   std::vector<Contact>& scratch, Leaves leaves) {
-  scratch.clear();
-  std::size_t stayed = 0;
-  std::size_t merged = 0;
-  for (std::size_t i = 0; i < from.size(); ++i) {
-    if (!leaves(from[i])) {
-      if (stayed != i) from[stayed] = from[i];
-      ++stayed;
-      continue;
-    }
-    while (merged < into.size() && pair_less(into[merged], from[i])) scratch.push_back(into[merged++]);
-    scratch.push_back(from[i]);
-  }
-  if (stayed == from.size()) return;
-  scratch.insert(scratch.end(), into.begin() + static_cast<std::ptrdiff_t>(merged), into.end());
-  std::swap(into, scratch);
-  from.erase(from.begin() + static_cast<std::ptrdiff_t>(stayed), from.end());
-}
-
-}  // namespace
-
-// Last step's contacts whose bodies no longer move would be dropped by the narrow phase (no
-// broad-phase pair has them); they are set aside instead, impulses and all, in pair order.
-// Set-aside contacts of pairs that move again go back among last step's contacts, so the
-// narrow phase carries their impulses over (warm start) as if they had never slept.
-void World::set_aside_sleeping_contacts() {
-  // A contact rests only when both its bodies do, so with no body asleep (and none set aside)
-  // there is nothing to move: skip the two walks over the contacts.
-  bool any_asleep = false;
-  for (std::size_t i = 0; i < bodies_.size() && !any_asleep; ++i) {
-    any_asleep = alive_[i] && bodies_[i].type != BodyType::Static && !bodies_[i].awake;
-  }
-  if (!any_asleep && sleeping_contacts_.empty()) return;
-  // The scratch and set-aside lists hold no more contacts than the step list has room for;
-  // grown with it during warm-up, the first bodies to fall asleep later allocate nothing.
-  const std::size_t capacity = contacts_.capacity();
-  if (merged_contacts_.capacity() < capacity) merged_contacts_.reserve(capacity);
-  if (sleeping_contacts_.capacity() < capacity) sleeping_contacts_.reserve(capacity);
-  auto resting = [this](const Contact& contact) {
-    return !is_moving(bodies_[contact.body_a.index]) && !is_moving(bodies_[contact.body_b.index]);
-  };
-  move_contacts(sleeping_contacts_, contacts_, merged_contacts_,
-                [&resting](const Contact& contact) { return !resting(contact); });
-  move_contacts(contacts_, sleeping_contacts_, merged_contacts_, resting);
-}
-
-void World::find_contacts(float dt, ContactVisitor* visitor) {
-  Clock::time_point stage = Clock::now();
-  set_aside_sleeping_contacts();
-  // Bounds are current after a step, `create_body` and `set_transform`; from here to the end
-  // of the step the stages move bodies, so they count as stale (a sub-step's next call
-  // remakes them).
-  if (!bounds_current_) update_bounds(bodies_, alive_);
-  bounds_current_ = false;
-  compute_speculative_reach(bodies_, alive_, settings_, dt, speculative_reach_);
-  compute_speculative_bounds(bodies_, alive_, speculative_reach_, settings_.speculative_margin,
-                             speculative_bounds_);
-  broad_phase_.find_pairs(bodies_, alive_, speculative_bounds_, settings_.broad_phase, pairs_);
-  stats_.broad_phase_ms += elapsed_ms(stage);
-
-  stage = Clock::now();
-  stats_.contact_point_count = update_contacts(bodies_, pairs_, speculative_reach_, settings_, dt,
-                                               contact_filter_, contacts_, spilled_contacts_,
-                                               visitor);
-  stats_.pairs_tested = static_cast<int>(pairs_.size());
-  stats_.contact_count = static_cast<int>(contacts_.size());
-  stats_.sleeping_contact_count = static_cast<int>(sleeping_contacts_.size());
-  stats_.narrow_phase_ms += elapsed_ms(stage);
-}
-
-void World::integrate_velocities(float dt) {
-  const Clock::time_point stage = Clock::now();
-  impulse2d::integrate_velocities(bodies_, alive_, settings_, dt);
-  stats_.integrate_ms += elapsed_ms(stage);
-}
-
-void World::integrate_positions(float dt) {
-  const Clock::time_point stage = Clock::now();
-  impulse2d::integrate_positions(bodies_, alive_, settings_, dt);
-  if (settings_.enable_continuous) {
-    stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt, broad_phase_);  // no tunnelling
-  }
-  stats_.integrate_ms += elapsed_ms(stage);
-}
-
-void World::begin_solver_bodies() {
-  const Clock::time_point stage = Clock::now();
-  solver_body_states_.begin_step(bodies_, alive_, settings_);
-  stats_.integrate_ms += elapsed_ms(stage);
-}
-
-void World::integrate_solver_velocities(float dt) {
-  const Clock::time_point stage = Clock::now();
-  solver_body_states_.integrate_velocities(dt);
-  stats_.integrate_ms += elapsed_ms(stage);
-}
-
-void World::integrate_solver_positions(float dt) {
-  const Clock::time_point stage = Clock::now();
-  solver_body_states_.integrate_positions(dt);
-  stats_.integrate_ms += elapsed_ms(stage);
-}
-
-void World::sweep_bullets(float dt) {
-  if (!settings_.enable_continuous) return;
-  const Clock::time_point stage = Clock::now();
-  stats_.bullets_moved_back += bullet_sweeper_.sweep(bodies_, alive_, settings_, dt, broad_phase_);
-  stats_.integrate_ms += elapsed_ms(stage);
-}
-
-void World::correct_positions() {
-  const Clock::time_point stage = Clock::now();
-  switch (settings_.position_correction) {
-    case PositionCorrection::None: break;
-    case PositionCorrection::LinearProjection:
-      correct_positions_linear(contacts_, bodies_, settings_);
-      break;
-    case PositionCorrection::NonlinearGaussSeidel:
-      correct_positions_nonlinear(contacts_, bodies_, settings_);
-      break;
-  }
-  stats_.position_ms += elapsed_ms(stage);
-}
-
 
 int World::advance(float frame_time) {
   require_finite(frame_time, "World::advance", "frame_time");
   if (frame_time < 0.0f) throw Error("World::advance: frame_time must be >= 0");
   constexpr float max_frame_time = 0.25f;  // seconds; guards against the spiral of death
-  accumulator_ += std::min(frame_time, max_frame_time);
+  state_->accumulator += std::min(frame_time, max_frame_time);
   int steps = 0;
-  while (accumulator_ >= settings_.time_step) {
+  while (state_->accumulator >= state_->settings.time_step) {
     step();
-    accumulator_ -= settings_.time_step;
+    state_->accumulator -= state_->settings.time_step;
     ++steps;
   }
   return steps;
@@ -538,9 +426,9 @@ std::uint64_t World::state_hash() const {
       hash *= 1099511628211ull;  // FNV prime
     }
   };
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (!alive_[i]) continue;
-    const Body& body = bodies_[i];
+  for (std::size_t i = 0; i < state_->bodies.size(); ++i) {
+    if (!state_->alive[i]) continue;
+    const Body& body = state_->bodies[i];
     const std::uint32_t index = static_cast<std::uint32_t>(i);
     const float values[6] = {body.transform.position.x, body.transform.position.y, body.angle,
                              body.linear_velocity.x,    body.linear_velocity.y,    body.angular_velocity};

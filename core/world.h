@@ -4,13 +4,9 @@
 /// The tutorial's `Scene`, with handles, methods as data and a deterministic order.
 
 #include "core/body.h"
-#include "core/collide/broad_phase.h"
 #include "core/contact.h"
-#include "core/collide/continuous.h"
 #include "core/debug_draw.h"
 #include "core/settings.h"
-#include "core/solver/sleep.h"
-#include "core/solver/step_solver.h"
 #include "core/step_stats.h"
 
 #include <cstdint>
@@ -31,19 +27,34 @@ struct RayHit {
 
 /// Decides whether a new contact between two bodies is solved. Called once when the pair
 /// starts touching (comes within the speculative margin); the decision is kept while they overlap and taken afresh once they are more than 1 mm apart. Return false to let them pass.
-using ContactFilter = std::function<bool(const Body& a, const Body& b, const Manifold& manifold)>;
+using ContactFilter =
+    std::function<bool(const BodyView& a, const BodyView& b, const Manifold& manifold)>;
 
 /// Called by queries for each body found; return false to stop the query.
 using QueryCallback = std::function<bool(BodyId)>;
 
-/// A 2D rigid-body world.
-class World : private SolverStages {
+/// Everything a world holds: internal (core/solver/world_state.h), behind `World`'s pointer.
+struct WorldState;
+
+/// A 2D rigid-body world. Its state lives behind a pointer (internal `WorldState`): copying a
+/// world copies all of it, giving an independent world that continues to the same states.
+class World {
  public:
   /// A world with the given settings (validated; throws `Error` naming a bad field).
   explicit World(const WorldSettings& settings = WorldSettings{});
+  /// An independent copy: bodies, contacts (with their impulses), settings and filter.
+  World(const World& other);
+  /// Replaces this world by an independent copy of `other`.
+  World& operator=(const World& other);
+  /// Takes `other`'s state; `other` may then only be assigned to or destroyed.
+  World(World&& other) noexcept;
+  /// Takes `other`'s state; `other` may then only be assigned to or destroyed.
+  World& operator=(World&& other) noexcept;
+  /// Frees the world's state.
+  ~World();
 
   /// The current settings.
-  const WorldSettings& settings() const { return settings_; }
+  const WorldSettings& settings() const;
   /// Replaces all settings (validated; throws `Error` naming a bad field).
   void set_settings(const WorldSettings& settings);
   /// Sets gravity, m/s^2.
@@ -57,12 +68,13 @@ class World : private SolverStages {
   void remove_body(BodyId id);
   /// True when `id` names a living body.
   bool is_valid(BodyId id) const;
-  /// The body named by `id`. Throws `Error` on a stale or null handle.
-  const Body& body(BodyId id) const;
+  /// What the body named by `id` is now (a copy; see `BodyView`). Throws `Error` on a stale
+  /// or null handle.
+  BodyView body(BodyId id) const;
   /// Handles of all living bodies in ascending slot order (stable across runs).
   std::vector<BodyId> body_ids() const;
   /// Number of living bodies.
-  int body_count() const { return living_body_count_; }
+  int body_count() const;
 
   /// Sets position (metres) and angle (radians) directly; also resets the interpolation state.
   void set_transform(BodyId id, vec2 position, float angle);
@@ -96,11 +108,11 @@ class World : private SolverStages {
   /// `interpolation_alpha()` is the fraction of a step left over, for drawing.
   int advance(float frame_time);
   /// Left-over fraction of a step after `advance`, in [0, 1).
-  float interpolation_alpha() const { return accumulator_ / settings_.time_step; }
+  float interpolation_alpha() const;
   /// Simulated time, seconds (steps taken times the time step).
-  double time() const { return time_; }
+  double time() const;
   /// Number of steps taken.
-  std::int64_t step_count() const { return step_count_; }
+  std::int64_t step_count() const;
 
   /// Calls `callback` for each body whose bounds overlap `box`, in ascending slot order.
   void query_aabb(const Aabb& box, const QueryCallback& callback) const;
@@ -115,90 +127,36 @@ class World : private SolverStages {
                                   std::uint32_t layers = 0xFFFFFFFFu) const;
 
   /// Touching pairs after the last step, sorted by (A's slot, B's slot).
-  const std::vector<Contact>& contacts() const { return contacts_; }
+  const std::vector<Contact>& contacts() const;
   /// Touching pairs set aside because none of their bodies moves (each asleep or static), as
   /// found when the last step began, sorted by (A's slot, B's slot); read-only (for drawing
   /// and counting: the solvers never see them). When a body of the pair wakes, the contact
   /// goes back to the narrow phase with its impulses (warm start); when one is moved by
   /// `set_transform` or removed, the contact is dropped.
-  const std::vector<Contact>& sleeping_contacts() const { return sleeping_contacts_; }
+  const std::vector<Contact>& sleeping_contacts() const;
   /// Installs a filter consulted when a pair starts touching (pass nullptr to remove it).
-  void set_contact_filter(ContactFilter filter) { contact_filter_ = std::move(filter); }
+  void set_contact_filter(ContactFilter filter);
   /// Overrides the kept decision of the touching pair (a, b), in either order (also of a
   /// sleeping pair): false lets them pass through each other until they separate (e.g.
   /// dropping through a one-way platform). Returns false when the pair is not touching. Throws `Error` on a stale handle.
   bool set_contact_enabled(BodyId a, BodyId b, bool enabled);
 
   /// Counts and timings of the last step.
-  const StepStats& stats() const { return stats_; }
+  const StepStats& stats() const;
   /// 64-bit FNV-1a hash over every living body's slot, position, angle and velocities, in slot
   /// order. Equal hashes mean bit-identical states.
   std::uint64_t state_hash() const;
   /// Bodies whose state became non-finite during a step: they were restored to their previous
   /// position, stopped and put to sleep instead of spreading NaN. Cleared by the next step.
-  const std::vector<BodyId>& diverged_bodies() const { return diverged_bodies_; }
+  const std::vector<BodyId>& diverged_bodies() const;
 
   /// Emits the world to `draw`: shapes (interpolated by `options.interpolation_alpha`), then
   /// overlays in the order of `DebugDrawFlag`.
   void draw(DebugDraw& draw, const DebugDrawOptions& options) const;
 
-  /// Direct slot access for the pipeline stages: every slot, living or not.
-  const std::vector<Body>& body_slots() const { return bodies_; }
-  /// True when slot `index` holds a living body.
-  bool slot_alive(std::uint32_t index) const { return alive_[index] != 0; }
-
  private:
-  Body& checked_body(BodyId id, const char* caller);
-  const Body& checked_body(BodyId id, const char* caller) const;
-  // The stages the solver method drives (SolverStages), each timed into stats_.
-  void find_contacts(float dt, ContactVisitor* visitor) override;
-  void integrate_velocities(float dt) override;
-  void integrate_positions(float dt) override;
-  void begin_solver_bodies() override;
-  void integrate_solver_velocities(float dt) override;
-  void integrate_solver_positions(float dt) override;
-  void sweep_bullets(float dt) override;
-  void correct_positions() override;
-  std::vector<Contact>& solver_contacts() override { return contacts_; }
-  std::vector<Body>& solver_bodies() override { return bodies_; }
-  std::vector<std::uint8_t>& solver_body_flags() override { return body_flags_; }
-  SupportOrder& solver_support_order() override { return support_order_; }
-  SolverBodies& solver_body_states() override { return solver_body_states_; }
-  WideContactSolver& solver_wide_contacts() override { return wide_contacts_; }
-  void finish_bodies();
-  void set_aside_sleeping_contacts();
-  void forget_sleeping_contacts(BodyId id);
-
-  WorldSettings settings_;
-  std::vector<Body> bodies_;               // slots, indexed by BodyId::index
-  std::vector<std::uint8_t> alive_;        // 1 where the slot holds a body
-  std::vector<std::uint32_t> free_slots_;  // removed slots, reused lowest-first
-  int living_body_count_ = 0;
-
-  std::vector<Contact> contacts_;          // sorted by (a.index, b.index)
-  std::vector<Contact> spilled_contacts_;  // the narrow phase's scratch (reused buffer)
-  std::vector<Contact> sleeping_contacts_; // pairs with no moving body, sorted by pair
-  std::vector<Contact> merged_contacts_;   // scratch for sleeping_contacts_ (reused)
-  std::shared_ptr<const StepSolver> solver_;    // made for solver_method_ (re-made when it changes)
-  SolverMethod solver_method_ = SolverMethod::AccumulatedImpulses;
-  std::vector<float> speculative_reach_;   // per slot, metres (reused)
-  std::vector<Aabb> speculative_bounds_;   // per slot (reused)
-  std::vector<std::uint8_t> body_flags_;   // per slot, solver scratch (reused)
-  SupportOrder support_order_;             // the shock pass's scratch (reused)
-  SolverBodies solver_body_states_;        // the soft step's compact bodies (reused)
-  WideContactSolver wide_contacts_;        // the soft step's contact arrays (reused)
-  BroadPhase broad_phase_;
-  std::vector<BodyPair> pairs_;            // broad-phase output (reused)
-  SleepIslands sleep_islands_;
-  BulletSweeper bullet_sweeper_;
-  ContactFilter contact_filter_;
-
-  StepStats stats_;
-  bool bounds_current_ = true;  // every living body's aabb matches its transform
-  std::vector<BodyId> diverged_bodies_;
-  double time_ = 0.0;
-  std::int64_t step_count_ = 0;
-  float accumulator_ = 0.0f;
+  friend struct WorldState;
+  std::unique_ptr<WorldState> state_;
 };
 
 }  // namespace impulse2d

@@ -1,6 +1,8 @@
 // World::draw: shapes at interpolated poses, then each overlay that is switched on.
 #include "core/world.h"
 
+#include "core/solver/world_state.h"
+
 #include <algorithm>
 #include <string>
 
@@ -25,13 +27,13 @@ Transform drawn_transform(const Body& body, float alpha) {
 
 void draw_shape(DebugDraw& draw, const Shape& shape, const Transform& transform, Color fill,
                 Color outline) {
-  switch (shape.type) {
+  switch (shape.type()) {
     case ShapeType::Circle:
-      draw.draw_solid_circle(transform.position, shape.circle.radius, transform.rotation.x_axis(),
+      draw.draw_solid_circle(transform.position, shape.circle().radius, transform.rotation.x_axis(),
                              fill, outline);
       return;
     case ShapeType::Box: {
-      const vec2 half = shape.box.half_extents;
+      const vec2 half = shape.box().half_extents;
       const vec2 p = transform.position;  // boxes never rotate
       const vec2 corners[4] = {p + vec2(-half.x, -half.y), p + vec2(half.x, -half.y),
                                p + vec2(half.x, half.y), p + vec2(-half.x, half.y)};
@@ -40,8 +42,8 @@ void draw_shape(DebugDraw& draw, const Shape& shape, const Transform& transform,
     }
     case ShapeType::Polygon: {
       vec2 corners[max_polygon_vertices];
-      for (int i = 0; i < shape.polygon.count; ++i) corners[i] = transform.apply(shape.polygon.vertices[i]);
-      draw.draw_solid_polygon(corners, shape.polygon.count, fill, outline);
+      for (int i = 0; i < shape.polygon().count; ++i) corners[i] = transform.apply(shape.polygon().vertices[i]);
+      draw.draw_solid_polygon(corners, shape.polygon().count, fill, outline);
       // Orientation mark: a line from the centroid to the first vertex.
       draw.draw_segment(transform.position, corners[0], outline);
       return;
@@ -63,25 +65,25 @@ void World::draw(DebugDraw& draw, const DebugDrawOptions& options) const {
   const float alpha = std::clamp(options.interpolation_alpha, 0.0f, 1.0f);
 
   if (flags & draw_shapes) {
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      if (!alive_[i]) continue;
-      const Body& body = bodies_[i];
+    for (std::size_t i = 0; i < state_->bodies.size(); ++i) {
+      if (!state_->alive[i]) continue;
+      const Body& body = state_->bodies[i];
       draw_shape(draw, body.shape, drawn_transform(body, alpha), fill_of(body, options), palette.outline);
     }
   }
   if (flags & draw_aabbs) {
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      if (alive_[i]) draw_box_outline(draw, bodies_[i].aabb, palette.aabb);
+    for (std::size_t i = 0; i < state_->bodies.size(); ++i) {
+      if (state_->alive[i]) draw_box_outline(draw, state_->bodies[i].aabb, palette.aabb);
     }
   }
   if (flags & draw_broad_phase) {
-    for (const BodyPair& pair : pairs_) {
-      if (!alive_[pair.first] || !alive_[pair.second]) continue;
-      draw.draw_segment(bodies_[pair.first].transform.position, bodies_[pair.second].transform.position,
+    for (const BodyPair& pair : state_->pairs) {
+      if (!state_->alive[pair.first] || !state_->alive[pair.second]) continue;
+      draw.draw_segment(state_->bodies[pair.first].transform.position, state_->bodies[pair.second].transform.position,
                         palette.broad_phase_pair);
     }
   }
-  for (const Contact& contact : contacts_) {
+  for (const Contact& contact : state_->contacts) {
     if (!contact.enabled) continue;
     const vec2 normal = contact.normal;
     const vec2 tangent = right_perpendicular(normal);
@@ -105,9 +107,9 @@ void World::draw(DebugDraw& draw, const DebugDrawOptions& options) const {
       if (flags & draw_contact_points) draw.draw_point(point.point, 6.0f, palette.contact_point);
     }
   }
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (!alive_[i]) continue;
-    const Body& body = bodies_[i];
+  for (std::size_t i = 0; i < state_->bodies.size(); ++i) {
+    if (!state_->alive[i]) continue;
+    const Body& body = state_->bodies[i];
     const vec2 center = drawn_transform(body, alpha).position;
     if ((flags & draw_velocities) && body.type != BodyType::Static &&
         length_squared(body.linear_velocity) > 0.0f) {

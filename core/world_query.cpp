@@ -2,6 +2,7 @@
 // phase's trees give the bodies near the query; each is then tested exactly.
 #include "core/error.h"
 #include "core/world.h"
+#include "core/solver/world_state.h"
 
 #include <algorithm>
 #include <string>
@@ -18,22 +19,22 @@ void World::query_aabb(const Aabb& box, const QueryCallback& callback) const {
   require_finite_query(box.lower, "World::query_aabb", "box.lower");
   require_finite_query(box.upper, "World::query_aabb", "box.upper");
   std::vector<std::uint32_t> nearby;
-  broad_phase_.query(box, nearby);
+  state_->broad_phase.query(box, nearby);
   for (const std::uint32_t i : nearby) {
-    if (!alive_[i]) continue;  // the callback may have removed it
-    const Aabb bounds = compute_aabb(bodies_[i].shape, bodies_[i].transform);
-    if (bounds.overlaps(box) && !callback(bodies_[i].id)) return;
+    if (!state_->alive[i]) continue;  // the callback may have removed it
+    const Aabb bounds = compute_aabb(state_->bodies[i].shape, state_->bodies[i].transform);
+    if (bounds.overlaps(box) && !callback(state_->bodies[i].id)) return;
   }
 }
 
 void World::query_point(vec2 point, const QueryCallback& callback) const {
   require_finite_query(point, "World::query_point", "point");
   std::vector<std::uint32_t> nearby;
-  broad_phase_.query(Aabb{point, point}, nearby);
+  state_->broad_phase.query(Aabb{point, point}, nearby);
   for (const std::uint32_t i : nearby) {
-    if (!alive_[i]) continue;  // the callback may have removed it
-    if (shape_contains_point(bodies_[i].shape, bodies_[i].transform, point) &&
-        !callback(bodies_[i].id)) {
+    if (!state_->alive[i]) continue;  // the callback may have removed it
+    if (shape_contains_point(state_->bodies[i].shape, state_->bodies[i].transform, point) &&
+        !callback(state_->bodies[i].id)) {
       return;
     }
   }
@@ -44,10 +45,10 @@ std::vector<RayHit> World::raycast_all(vec2 origin, vec2 translation, std::uint3
   require_finite_query(translation, "World::raycast", "translation");
   std::vector<RayHit> hits;
   std::vector<std::uint32_t> nearby;
-  broad_phase_.raycast(origin, translation, nearby);
+  state_->broad_phase.raycast(origin, translation, nearby);
   for (const std::uint32_t i : nearby) {
-    const Body& body = bodies_[i];
-    if (!alive_[i] || (body.collision_layers & layers) == 0) continue;
+    const Body& body = state_->bodies[i];
+    if (!state_->alive[i] || (body.collision_layers & layers) == 0) continue;
     ShapeRayHit shape_hit;
     if (raycast_shape(body.shape, body.transform, origin, translation, &shape_hit)) {
       hits.push_back(
@@ -65,10 +66,10 @@ std::optional<RayHit> World::raycast_closest(vec2 origin, vec2 translation, std:
   require_finite_query(translation, "World::raycast", "translation");
   std::optional<RayHit> closest;
   std::vector<std::uint32_t> nearby;
-  broad_phase_.raycast(origin, translation, nearby);
+  state_->broad_phase.raycast(origin, translation, nearby);
   for (const std::uint32_t i : nearby) {
-    const Body& body = bodies_[i];
-    if (!alive_[i] || (body.collision_layers & layers) == 0) continue;
+    const Body& body = state_->bodies[i];
+    if (!state_->alive[i] || (body.collision_layers & layers) == 0) continue;
     ShapeRayHit shape_hit;
     if (raycast_shape(body.shape, body.transform, origin, translation, &shape_hit) &&
         (!closest || shape_hit.fraction < closest->fraction)) {

@@ -65,8 +65,8 @@ std::optional<std::pair<float, float>> visible_extent(const World& world,
   const vec2 high = camera.center() + half;
   std::optional<std::pair<float, float>> extent;
   for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
-    const Aabb box = compute_aabb(body.shape, body.transform);
+    const BodyView body = world.body(id);
+    const Aabb box = compute_aabb(*body.shape, body.transform);
     if (box.upper.x < low.x || box.lower.x > high.x || box.upper.y < low.y || box.lower.y > high.y) {
       continue;
     }

@@ -29,7 +29,7 @@ vec2 up_from_gravity(vec2 gravity) {
 }
 
 // Velocity of `body`'s material at the world point `point`.
-vec2 material_velocity(const Body& body, vec2 point) {
+vec2 material_velocity(const BodyView& body, vec2 point) {
   return body.linear_velocity + cross(body.angular_velocity, point - body.transform.position);
 }
 
@@ -122,7 +122,7 @@ float Character::jump_speed(const World& world) const {
 
 void Character::sense_contacts(const World& world, vec2 up, float move_x) {
   ground_ = wall_ = steep_ = ceiling_ = step_ = CharacterSurface{};
-  const Body& self = world.body(body_);
+  const BodyView self = world.body(body_);
   const vec2 self_moved = self.transform.position - self.previous_position;
   const vec2 feet = self.transform.position - up * half_extents_.y;
   const float ground_min_dot = cos_sin(settings_.max_slope).cosine;
@@ -135,7 +135,7 @@ void Character::sense_contacts(const World& world, vec2 up, float move_x) {
     const bool self_is_a = contact.body_a == body_;
     if (!contact.enabled || (!self_is_a && contact.body_b != body_)) continue;
     const BodyId other_id = self_is_a ? contact.body_b : contact.body_a;
-    const Body& other = world.body(other_id);
+    const BodyView other = world.body(other_id);
     int deepest = 0;
     for (int i = 1; i < contact.point_count; ++i) {
       if (contact.points[i].depth > contact.points[deepest].depth) deepest = i;
@@ -185,7 +185,7 @@ void Character::sense_contacts(const World& world, vec2 up, float move_x) {
 }
 
 bool Character::snap_to_ground(const World& world, vec2 up, float* push_distance) {
-  const Body& self = world.body(body_);
+  const BodyView self = world.body(body_);
   const vec2 side = right_perpendicular(up);
   const float probe_start = 0.5f * half_extents_.y;  // rays start inside the own box
   const float probe_length = probe_start + settings_.snap_distance;
@@ -202,12 +202,12 @@ bool Character::snap_to_ground(const World& world, vec2 up, float* push_distance
     if (found && gap >= nearest_gap) continue;
     found = true;
     nearest_gap = gap;
-    const Body& other = world.body(hit->body);
+    const BodyView other = world.body(hit->body);
     ground_.body = hit->body;
     ground_.normal = hit->normal;
     ground_.point = hit->point;
     ground_.velocity = material_velocity(other, hit->point);
-    ground_.friction = mix_friction(self.material.static_friction, other.material.static_friction,
+    ground_.friction = mix_friction(self.material->static_friction, other.material->static_friction,
                                     world.settings().friction_mixing);
   }
   // Close the gap in one step and sink to half the allowed overlap, so the next step's
@@ -224,7 +224,7 @@ void Character::update(World& world, const CharacterInput& input) {
   const float gravity = glm::length(world_settings.gravity);
   const vec2 up = up_from_gravity(world_settings.gravity);
   const vec2 side = right_perpendicular(up);
-  const Body& self = world.body(body_);
+  const BodyView self = world.body(body_);
   vec2 velocity = self.linear_velocity;
   const float mass = self.mass;
 
@@ -328,7 +328,7 @@ void Character::update(World& world, const CharacterInput& input) {
       velocity = ground_.velocity + side * glm::dot(tangent * along, side) + up * (lift / dt);
     }
     gravity_scale_ = 0.0f;
-    const Body& ground_body = world.body(ground_.body);
+    const BodyView ground_body = world.body(ground_.body);
     if (ground_body.type == BodyType::Dynamic) {
       world.apply_force(ground_.body, -up * (mass * gravity), ground_.point);  // our weight
     }

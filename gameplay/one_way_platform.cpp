@@ -29,13 +29,13 @@ const OneWayPlatforms::Platform* OneWayPlatforms::find(BodyId body) const {
 
 bool OneWayPlatforms::contains(BodyId body) const { return find(body) != nullptr; }
 
-bool OneWayPlatforms::allows(const Body& a, const Body& b, const Manifold& manifold) const {
+bool OneWayPlatforms::allows(const BodyView& a, const BodyView& b, const Manifold& manifold) const {
   const Platform* platform = find(a.id);
   const bool platform_is_a = platform != nullptr;
   if (!platform_is_a) platform = find(b.id);
   if (platform == nullptr) return true;
-  const Body& platform_body = platform_is_a ? a : b;
-  const Body& other = platform_is_a ? b : a;
+  const BodyView& platform_body = platform_is_a ? a : b;
+  const BodyView& other = platform_is_a ? b : a;
 
   const vec2 up = platform_body.transform.rotation.rotate(platform->up);
   const vec2 normal_to_other = platform_is_a ? manifold.normal : -manifold.normal;
@@ -52,7 +52,7 @@ bool OneWayPlatforms::allows(const Body& a, const Body& b, const Manifold& manif
 }
 
 ContactFilter OneWayPlatforms::filter(ContactFilter next) const {
-  return [this, next = std::move(next)](const Body& a, const Body& b, const Manifold& manifold) {
+  return [this, next = std::move(next)](const BodyView& a, const BodyView& b, const Manifold& manifold) {
     if (!allows(a, b, manifold)) return false;
     return next ? next(a, b, manifold) : true;
   };

@@ -26,7 +26,7 @@ class OneWayPlatforms {
   /// platform, the contact is kept only when its normal (from the platform to the other body)
   /// is within `max_normal_angle` of the platform's up and the other body is not moving up
   /// through it faster than `rising_speed_tolerance`.
-  bool allows(const Body& a, const Body& b, const Manifold& manifold) const;
+  bool allows(const BodyView& a, const BodyView& b, const Manifold& manifold) const;
   /// A contact filter that applies `allows`, then `next` (when given) to pairs it allows, so a
   /// user's own filter and the platforms coexist. Captures `this`.
   ContactFilter filter(ContactFilter next = nullptr) const;

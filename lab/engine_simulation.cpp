@@ -9,7 +9,7 @@ void read_world_states(const World& world, const std::vector<BodyId>& bodies,
                        std::vector<BodyState>& states) {
   states.resize(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const Body& body = world.body(bodies[i]);
+    const BodyView body = world.body(bodies[i]);
     BodyState& state = states[i];
     state.position = body.transform.position;
     state.angle = body.angle;
@@ -23,8 +23,8 @@ void read_world_states(const World& world, const std::vector<BodyId>& bodies,
 
 ContactCoefficients world_coefficients(const World& world, BodyId a, BodyId b) {
   const WorldSettings& settings = world.settings();
-  const Material& first = world.body(a).material;
-  const Material& second = world.body(b).material;
+  const Material& first = *world.body(a).material;
+  const Material& second = *world.body(b).material;
   ContactCoefficients result;
   result.static_friction =
       mix_friction(first.static_friction, second.static_friction, settings.friction_mixing);

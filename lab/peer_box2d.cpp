@@ -21,7 +21,7 @@ class Box2dSimulation : public LabSimulation {
     world_.SetAllowSleeping(settings.enable_sleeping);
     world_.SetContinuousPhysics(settings.enable_continuous);
     for (const BodyId id : initial.body_ids()) {
-      const Body& body = initial.body(id);
+      const BodyView body = initial.body(id);
       b2BodyDef def;
       def.type = body.type == BodyType::Static      ? b2_staticBody
                  : body.type == BodyType::Kinematic ? b2_kinematicBody
@@ -41,21 +41,21 @@ class Box2dSimulation : public LabSimulation {
       b2CircleShape circle;
       b2PolygonShape polygon;
       b2FixtureDef fixture;
-      switch (body.shape.type) {
+      switch (body.shape->type()) {
         case ShapeType::Circle:
-          circle.m_radius = body.shape.circle.radius;
+          circle.m_radius = body.shape->circle().radius;
           fixture.shape = &circle;
           break;
         case ShapeType::Box:
           // Box2D rounds every polygon by b2_polygonRadius: shrink it by that skin so the
           // rounded outline has the scene's size (else every contact rests 2 skins apart).
-          polygon.SetAsBox(body.shape.box.half_extents.x - b2_polygonRadius,
-                           body.shape.box.half_extents.y - b2_polygonRadius);
+          polygon.SetAsBox(body.shape->box().half_extents.x - b2_polygonRadius,
+                           body.shape->box().half_extents.y - b2_polygonRadius);
           fixture.shape = &polygon;
           break;
         case ShapeType::Polygon: {
           b2Vec2 vertices[b2_maxPolygonVertices];
-          const Polygon& source = body.shape.polygon;
+          const Polygon& source = body.shape->polygon();
           const int count = std::min(source.count, int{b2_maxPolygonVertices});
           for (int i = 0; i < count; ++i) {
             // Each edge moved inward by the skin: the vertex moves along the sum of its two edge
@@ -72,15 +72,15 @@ class Box2dSimulation : public LabSimulation {
           break;
         }
       }
-      fixture.density = body.type == BodyType::Dynamic ? body.material.density : 0.0f;
-      fixture.friction = settings.enable_friction ? body.material.static_friction : 0.0f;
-      fixture.restitution = settings.enable_restitution ? body.material.restitution : 0.0f;
+      fixture.density = body.type == BodyType::Dynamic ? body.material->density : 0.0f;
+      fixture.friction = settings.enable_friction ? body.material->static_friction : 0.0f;
+      fixture.restitution = settings.enable_restitution ? body.material->restitution : 0.0f;
       fixture.restitutionThreshold = settings.restitution_threshold;
       fixture.filter.categoryBits = static_cast<uint16>(body.collision_layers & 0xFFFFu);
       fixture.filter.maskBits = static_cast<uint16>(body.collision_layers & 0xFFFFu);
       created->CreateFixture(&fixture);
       bodies_.push_back(created);
-      materials_.push_back(body.material);
+      materials_.push_back(*body.material);
     }
     friction_on_ = settings.enable_friction;
     restitution_on_ = settings.enable_restitution;

@@ -40,7 +40,7 @@ class ChipmunkSimulation : public LabSimulation {
     friction_on_ = settings.enable_friction;
     restitution_on_ = settings.enable_restitution;
     for (const BodyId id : initial.body_ids()) {
-      const Body& source = initial.body(id);
+      const BodyView source = initial.body(id);
       cpBody* body = nullptr;
       if (source.type == BodyType::Static) {
         body = cpBodyNewStatic();
@@ -56,30 +56,30 @@ class ChipmunkSimulation : public LabSimulation {
       cpBodySetVelocity(body, cpv(source.linear_velocity.x, source.linear_velocity.y));
       cpBodySetAngularVelocity(body, source.angular_velocity);
       cpShape* shape = nullptr;
-      switch (source.shape.type) {
+      switch (source.shape->type()) {
         case ShapeType::Circle:
-          shape = cpCircleShapeNew(body, source.shape.circle.radius, cpvzero);
+          shape = cpCircleShapeNew(body, source.shape->circle().radius, cpvzero);
           break;
         case ShapeType::Box:
-          shape = cpBoxShapeNew(body, 2.0 * source.shape.box.half_extents.x,
-                                2.0 * source.shape.box.half_extents.y, 0.0);
+          shape = cpBoxShapeNew(body, 2.0 * source.shape->box().half_extents.x,
+                                2.0 * source.shape->box().half_extents.y, 0.0);
           break;
         case ShapeType::Polygon: {
           cpVect vertices[max_polygon_vertices];
-          for (int i = 0; i < source.shape.polygon.count; ++i) {
-            const vec2 v = source.shape.polygon.vertices[static_cast<std::size_t>(i)];
+          for (int i = 0; i < source.shape->polygon().count; ++i) {
+            const vec2 v = source.shape->polygon().vertices[static_cast<std::size_t>(i)];
             vertices[i] = cpv(v.x, v.y);
           }
-          shape = cpPolyShapeNewRaw(body, source.shape.polygon.count, vertices, 0.0);
+          shape = cpPolyShapeNewRaw(body, source.shape->polygon().count, vertices, 0.0);
           break;
         }
       }
-      cpShapeSetFriction(shape, friction_on_ ? source.material.static_friction : 0.0);
-      cpShapeSetElasticity(shape, restitution_on_ ? source.material.restitution : 0.0);
+      cpShapeSetFriction(shape, friction_on_ ? source.material->static_friction : 0.0);
+      cpShapeSetElasticity(shape, restitution_on_ ? source.material->restitution : 0.0);
       cpSpaceAddShape(space_, shape);
       bodies_.push_back(body);
       shapes_.push_back(shape);
-      materials_.push_back(source.material);
+      materials_.push_back(*source.material);
       dynamic_.push_back(source.type == BodyType::Dynamic);
       rotates_.push_back(source.inverse_inertia > 0.0f);
     }

@@ -9,19 +9,18 @@
 namespace impulse2d::render {
 
 void draw_bounding_boxes(PrimitiveRenderer& renderer, const World& world, Color color) {
-  const std::vector<Body>& bodies = world.body_slots();
-  for (std::uint32_t slot = 0; slot < bodies.size(); ++slot) {
-    if (world.slot_alive(slot)) renderer.draw_box_outline(bodies[slot].aabb.lower, bodies[slot].aabb.upper, color);
+  for (const BodyId id : world.body_ids()) {
+    const Aabb box = world.body(id).aabb;
+    renderer.draw_box_outline(box.lower, box.upper, color);
   }
 }
 
 void draw_body_labels(PrimitiveRenderer& renderer, const World& world, const DebugDrawOptions& options,
                       const BodyLabeler& labeler) {
   const float alpha = std::clamp(options.interpolation_alpha, 0.0f, 1.0f);
-  const std::vector<Body>& bodies = world.body_slots();
-  for (std::uint32_t slot = 0; slot < bodies.size(); ++slot) {
-    if (!world.slot_alive(slot)) continue;
-    const Body& body = bodies[slot];
+  for (const BodyId id : world.body_ids()) {
+    const std::uint32_t slot = id.index;
+    const BodyView body = world.body(id);
     const vec2 centre = body.previous_position * (1.0f - alpha) + body.transform.position * alpha;
     std::string label = labeler ? labeler(slot) : std::string();
     if (label.empty()) label = std::to_string(slot);
@@ -30,8 +29,10 @@ void draw_body_labels(PrimitiveRenderer& renderer, const World& world, const Deb
 }
 
 void draw_highlight(PrimitiveRenderer& renderer, const World& world, std::uint32_t slot, int scale) {
-  if (slot >= world.body_slots().size() || !world.slot_alive(slot)) return;
-  const Aabb& box = world.body_slots()[slot].aabb;
+  const std::vector<BodyId> ids = world.body_ids();
+  const auto found = std::find_if(ids.begin(), ids.end(), [slot](BodyId id) { return id.index == slot; });
+  if (found == ids.end()) return;
+  const Aabb box = world.body(*found).aabb;
   const float pixel = 1.0f / renderer.camera().pixels_per_metre();
   const float s = static_cast<float>(std::max(scale, 1));
   for (int ring = 0; ring < 3; ++ring) {

@@ -88,8 +88,8 @@ Aabb world_bounds(const World& world) {
   bool any = false;
   Aabb total{vec2(-1.0f, -1.0f), vec2(1.0f, 1.0f)};
   for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
-    const Aabb box = compute_aabb(body.shape, body.transform);
+    const BodyView body = world.body(id);
+    const Aabb box = compute_aabb(*body.shape, body.transform);
     if (!any) {
       total = box;
       any = true;

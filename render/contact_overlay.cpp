@@ -18,7 +18,7 @@ Color faded(Color color, float opacity) {
 }
 
 bool sleeping_dynamic(const World& world, BodyId id) {
-  const Body& body = world.body_slots()[id.index];
+  const BodyView body = world.body(id);
   return body.type == BodyType::Dynamic && !body.awake;
 }
 

@@ -11,8 +11,14 @@ namespace impulse2d::render {
 
 namespace {
 
-bool is_dynamic(const World& world, std::uint32_t slot) {
-  return world.slot_alive(slot) && world.body_slots()[slot].type == BodyType::Dynamic;
+// 1 for each slot that holds a living dynamic body, up to the last living body's slot.
+std::vector<std::uint8_t> dynamic_slots(const World& world) {
+  std::vector<std::uint8_t> dynamic;
+  for (const BodyId id : world.body_ids()) {
+    if (dynamic.size() <= id.index) dynamic.resize(id.index + 1, 0);
+    dynamic[id.index] = world.body(id).type == BodyType::Dynamic ? 1 : 0;
+  }
+  return dynamic;
 }
 
 std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t slot) {
@@ -26,13 +32,14 @@ std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t slot) {
 }  // namespace
 
 std::vector<int> island_of_slots(const World& world) {
-  const auto slots = static_cast<std::uint32_t>(world.body_slots().size());
+  const std::vector<std::uint8_t> dynamic = dynamic_slots(world);
+  const auto slots = static_cast<std::uint32_t>(dynamic.size());
   std::vector<std::uint32_t> parent(slots);
   std::iota(parent.begin(), parent.end(), 0u);
   for (const Contact& contact : world.contacts()) {
     const std::uint32_t a = contact.body_a.index;
     const std::uint32_t b = contact.body_b.index;
-    if (!contact.enabled || !is_dynamic(world, a) || !is_dynamic(world, b)) continue;
+    if (!contact.enabled || !dynamic[a] || !dynamic[b]) continue;
     const std::uint32_t root_a = root(parent, a);
     const std::uint32_t root_b = root(parent, b);
     parent[std::max(root_a, root_b)] = std::min(root_a, root_b);  // the lowest slot is the root
@@ -40,7 +47,7 @@ std::vector<int> island_of_slots(const World& world) {
   std::vector<int> island(slots, -1);
   int next = 0;
   for (std::uint32_t slot = 0; slot < slots; ++slot) {
-    if (!is_dynamic(world, slot)) continue;
+    if (!dynamic[slot]) continue;
     const std::uint32_t top = root(parent, slot);
     if (island[top] < 0) island[top] = next++;  // roots come first: top <= slot
     island[slot] = island[top];
@@ -59,20 +66,22 @@ Color island_color(int island) {
 
 void draw_islands(PrimitiveRenderer& renderer, const World& world, int scale) {
   const std::vector<int> island = island_of_slots(world);
-  const std::vector<Body>& bodies = world.body_slots();
   for (const Contact& contact : world.contacts()) {
     if (!contact.enabled || contact.point_count == 0) continue;
     const std::uint32_t a = contact.body_a.index;
     const std::uint32_t b = contact.body_b.index;
     const int which = island[a] >= 0 ? island[a] : island[b];
     if (which < 0) continue;
-    const vec2 from = island[a] >= 0 ? bodies[a].transform.position : contact.points[0].point;
-    const vec2 to = island[b] >= 0 ? bodies[b].transform.position : contact.points[0].point;
+    const vec2 from =
+        island[a] >= 0 ? world.body(contact.body_a).transform.position : contact.points[0].point;
+    const vec2 to =
+        island[b] >= 0 ? world.body(contact.body_b).transform.position : contact.points[0].point;
     renderer.draw_segment(from, to, island_color(which));
   }
   const float dot = 5.0f * static_cast<float>(std::max(scale, 1));
-  for (std::uint32_t slot = 0; slot < bodies.size(); ++slot) {
-    if (island[slot] >= 0) renderer.draw_point(bodies[slot].transform.position, dot, island_color(island[slot]));
+  for (const BodyId id : world.body_ids()) {
+    const int which = island[id.index];
+    if (which >= 0) renderer.draw_point(world.body(id).transform.position, dot, island_color(which));
   }
 }
 

@@ -17,9 +17,9 @@ namespace impulse2d::render {
 
 class PrimitiveRenderer;
 
-/// The island of every world slot: dynamic bodies connected through enabled contacts share a
-/// number (0, 1, ... in order of their lowest slot); static, kinematic and dead slots are -1
-/// (they never join islands, as in Box2D).
+/// The island of every world slot up to the last living body's: dynamic bodies connected
+/// through enabled contacts share a number (0, 1, ... in order of their lowest slot); static,
+/// kinematic and dead slots are -1 (they never join islands, as in Box2D).
 std::vector<int> island_of_slots(const World& world);
 
 /// The colour of island `island` (cycles through 8 distinct colours).

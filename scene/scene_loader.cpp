@@ -283,7 +283,7 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
       node.field("position").vector_at_most(limits::max_coordinate, limits::coordinate_reason);
   if (auto field = node.optional_field("angle")) {
     def.angle = field->magnitude_at_most(1e4f, "rad");
-    if (def.angle != 0.0f && body.shape.type == ShapeType::Box) {
+    if (def.angle != 0.0f && body.shape.type() == ShapeType::Box) {
       field->fail("a \"box\" is axis-aligned and never rotates, so its angle would be lost; "
                   "use \"type\": \"oriented_box\" for a rotated box");
     }
@@ -294,7 +294,7 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   }
   if (auto field = node.optional_field("angular_velocity")) {
     def.angular_velocity = field->magnitude_at_most(limits::max_speed, limits::speed_reason);
-    if (def.angular_velocity != 0.0f && body.shape.type == ShapeType::Box) {
+    if (def.angular_velocity != 0.0f && body.shape.type() == ShapeType::Box) {
       field->fail("a \"box\" is axis-aligned and never rotates, so its spin would be lost; "
                   "use \"type\": \"oriented_box\" for a spinning box");
     }
@@ -607,10 +607,10 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     scene.model.rotation = false;
     scene.model.ccd = false;
     auto cover = [&scene](const BodySpawn& body) {
-      scene.model.circles = scene.model.circles || body.shape.type == ShapeType::Circle;
-      scene.model.boxes = scene.model.boxes || body.shape.type == ShapeType::Box;
-      scene.model.polygons = scene.model.polygons || body.shape.type == ShapeType::Polygon;
-      const bool spins = body.def.type == BodyType::Dynamic && body.shape.type != ShapeType::Box &&
+      scene.model.circles = scene.model.circles || body.shape.type() == ShapeType::Circle;
+      scene.model.boxes = scene.model.boxes || body.shape.type() == ShapeType::Box;
+      scene.model.polygons = scene.model.polygons || body.shape.type() == ShapeType::Polygon;
+      const bool spins = body.def.type == BodyType::Dynamic && body.shape.type() != ShapeType::Box &&
                          !body.def.fixed_rotation;
       scene.model.rotation = scene.model.rotation || spins;
       scene.model.ccd = scene.model.ccd || body.def.is_bullet;

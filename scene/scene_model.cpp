@@ -46,11 +46,11 @@ void apply_model(const SceneModel& model, WorldSettings& settings) {
 
 void verify_shape_kinds(const SceneModel& model, const World& world,
                         const std::string& scene_name) {
-  const std::vector<Body>& slots = world.body_slots();
-  for (std::uint32_t index = 0; index < slots.size(); ++index) {
-    if (!world.slot_alive(index) || model.allows(slots[index].shape.type)) continue;
-    throw UsageError("scene " + scene_name + ": body " + std::to_string(index) + " is a " +
-                     shape_kind_name(slots[index].shape.type) +
+  for (const BodyId id : world.body_ids()) {
+    const ShapeType type = world.body(id).shape->type();
+    if (model.allows(type)) continue;
+    throw UsageError("scene " + scene_name + ": body " + std::to_string(id.index) + " is a " +
+                     shape_kind_name(type) +
                      " but the scene's model declares only " + declared_shapes(model) +
                      " (add it to the model or remove the body)");
   }

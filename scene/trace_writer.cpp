@@ -31,7 +31,7 @@ void append_sample(const World& world, TraceFormat format, std::string& out, boo
   }
   bool first_body = true;
   for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     if (body.type == BodyType::Static) continue;
     const std::string values[] = {number(body.transform.position.x, format),
                                   number(body.transform.position.y, format),
@@ -61,7 +61,7 @@ double mechanical_energy(const World& world) {
   const vec2 gravity = world.settings().gravity;
   double energy = 0.0;
   for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     if (body.type != BodyType::Dynamic) continue;
     const double speed_squared = glm::dot(body.linear_velocity, body.linear_velocity);
     const double spin = static_cast<double>(body.angular_velocity);

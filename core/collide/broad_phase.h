@@ -3,7 +3,7 @@
 /// Finds candidate pairs of bodies whose bounding boxes overlap, and keeps the dynamic trees
 /// that world queries and bullet sweeps search.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/collide/dynamic_tree.h"
 #include "core/settings.h"
 

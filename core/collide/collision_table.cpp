@@ -27,42 +27,42 @@ Manifold flipped(Manifold manifold) {
 
 Manifold circle_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
                           const Transform& xb, float margin) {
-  return collide_circles(a.circle, xa, b.circle, xb, margin);
+  return collide_circles(a.circle(), xa, b.circle(), xb, margin);
 }
 
 Manifold circle_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
-  return flipped(collide_box_circle(b.box, xb, a.circle, xa, margin));
+  return flipped(collide_box_circle(b.box(), xb, a.circle(), xa, margin));
 }
 
 Manifold circle_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
                            const Transform& xb, float margin) {
-  return flipped(collide_polygon_circle(b.polygon, xb, a.circle, xa, margin));
+  return flipped(collide_polygon_circle(b.polygon(), xb, a.circle(), xa, margin));
 }
 
 Manifold box_vs_circle(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
-  return collide_box_circle(a.box, xa, b.circle, xb, margin);
+  return collide_box_circle(a.box(), xa, b.circle(), xb, margin);
 }
 
 Manifold box_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
-  return collide_boxes(a.box, xa, b.box, xb, margin);
+  return collide_boxes(a.box(), xa, b.box(), xb, margin);
 }
 
 Manifold box_vs_polygon(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
-  return collide_box_polygon(a.box, xa, b.polygon, xb, margin);
+  return collide_box_polygon(a.box(), xa, b.polygon(), xb, margin);
 }
 
 Manifold polygon_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
                            const Transform& xb, float margin) {
-  return collide_polygon_circle(a.polygon, xa, b.circle, xb, margin);
+  return collide_polygon_circle(a.polygon(), xa, b.circle(), xb, margin);
 }
 
 Manifold polygon_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
-  return flipped(collide_box_polygon(b.box, xb, a.polygon, xa, margin));
+  return flipped(collide_box_polygon(b.box(), xb, a.polygon(), xa, margin));
 }
 
 Manifold polygon_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
                             const Transform& xb, float margin) {
-  return collide_polygons(a.polygon, xa, b.polygon, xb, margin);
+  return collide_polygons(a.polygon(), xa, b.polygon(), xb, margin);
 }
 
 /// Rows: type of A; columns: type of B; in `ShapeType` order (circle, box, polygon).
@@ -89,7 +89,7 @@ CollideFunction collide_function(ShapeType a, ShapeType b) {
 
 Manifold collide(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
                  float margin) {
-  return collide_function(a.type, b.type)(a, xa, b, xb, margin);
+  return collide_function(a.type(), b.type())(a, xa, b, xb, margin);
 }
 
 }  // namespace impulse2d

@@ -32,13 +32,13 @@ bool overlaps_any(const Body& bullet, const Transform& pose, const std::vector<B
 }  // namespace
 
 float smallest_extent(const Shape& shape) {
-  switch (shape.type) {
-    case ShapeType::Circle: return shape.circle.radius;
-    case ShapeType::Box: return std::min(shape.box.half_extents.x, shape.box.half_extents.y);
+  switch (shape.type()) {
+    case ShapeType::Circle: return shape.circle().radius;
+    case ShapeType::Box: return std::min(shape.box().half_extents.x, shape.box().half_extents.y);
     case ShapeType::Polygon: {
-      float nearest = glm::dot(shape.polygon.normals[0], shape.polygon.vertices[0]);
-      for (int i = 1; i < shape.polygon.count; ++i) {
-        nearest = std::min(nearest, glm::dot(shape.polygon.normals[i], shape.polygon.vertices[i]));
+      float nearest = glm::dot(shape.polygon().normals[0], shape.polygon().vertices[0]);
+      for (int i = 1; i < shape.polygon().count; ++i) {
+        nearest = std::min(nearest, glm::dot(shape.polygon().normals[i], shape.polygon().vertices[i]));
       }
       return nearest;
     }

@@ -178,7 +178,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       // body through a one-way platform); once they are apart again, with speculative contacts
       // still inside the margin, the decision is taken afresh.
       if (!contact.enabled && deepest_depth(manifold) < -separated_gap) {
-        contact.enabled = filter ? filter(a, b, manifold) : true;
+        contact.enabled = filter ? filter(view_of(a), view_of(b), manifold) : true;
       }
       contact.sliding = old_contact.sliding;
       contact.steps_at_static_limit = old_contact.steps_at_static_limit;
@@ -188,7 +188,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       // A contact that begins with its surfaces already slipping past each other slides
       // (kinetic friction) until it comes to rest; one that begins at rest sticks.
       contact.sliding = std::fabs(tangential_speed(a, b, contact)) > sticking_speed;
-      if (filter) contact.enabled = filter(a, b, manifold);
+      if (filter) contact.enabled = filter(view_of(a), view_of(b), manifold);
     }
     point_total += contact.point_count;
     Contact& placed = place(/*replaces_old=*/touched_before);

@@ -21,14 +21,14 @@ RoundedOutline outline_of(const Body& body, vec2 origin) {
   RoundedOutline outline;
   const Transform& transform = body.transform;
   const vec2 centre = transform.position - origin;
-  switch (body.shape.type) {
+  switch (body.shape.type()) {
     case ShapeType::Circle:
       outline.vertices[0] = centre;
       outline.count = 1;
-      outline.radius = body.shape.circle.radius;
+      outline.radius = body.shape.circle().radius;
       break;
     case ShapeType::Box: {
-      const vec2 half = body.shape.box.half_extents;
+      const vec2 half = body.shape.box().half_extents;
       outline.vertices[0] = centre + vec2(-half.x, -half.y);
       outline.vertices[1] = centre + vec2(half.x, -half.y);
       outline.vertices[2] = centre + vec2(half.x, half.y);
@@ -37,9 +37,9 @@ RoundedOutline outline_of(const Body& body, vec2 origin) {
       break;
     }
     case ShapeType::Polygon:
-      outline.count = body.shape.polygon.count;
+      outline.count = body.shape.polygon().count;
       for (int i = 0; i < outline.count; ++i) {
-        outline.vertices[i] = centre + transform.rotation.rotate(body.shape.polygon.vertices[i]);
+        outline.vertices[i] = centre + transform.rotation.rotate(body.shape.polygon().vertices[i]);
       }
       break;
   }
@@ -121,8 +121,8 @@ PredictedMotion predict_motion(const Body& body, const WorldSettings& settings, 
     motion.velocity += (body.force * body.inverse_mass + settings.gravity * body.gravity_scale) * h;
   }
   // Discs turn in place and boxes never turn: only a polygon's corners sweep.
-  if (settings.enable_rotation && body.shape.type == ShapeType::Polygon) {
-    motion.turn_reach = std::fabs(body.angular_velocity) * polygon_radius(body.shape.polygon) * h;
+  if (settings.enable_rotation && body.shape.type() == ShapeType::Polygon) {
+    motion.turn_reach = std::fabs(body.angular_velocity) * polygon_radius(body.shape.polygon()) * h;
   }
   return motion;
 }

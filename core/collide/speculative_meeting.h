@@ -15,7 +15,7 @@
 /// each rotating body's shape is grown by the distance its farthest point turns through
 /// (|w| r h), which can only make a meeting more likely.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 #include "core/settings.h"
 

@@ -10,7 +10,7 @@ namespace {
 // Farthest distance (m) of a rotating shape's surface from the centre of mass; 0 for a circle
 // (turning about its centre moves no surface point) and for a box (never rotates).
 float rotation_radius(const Shape& shape) {
-  return shape.type == ShapeType::Polygon ? polygon_radius(shape.polygon) : 0.0f;
+  return shape.type() == ShapeType::Polygon ? polygon_radius(shape.polygon()) : 0.0f;
 }
 
 }  // namespace

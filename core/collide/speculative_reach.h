@@ -2,7 +2,7 @@
 /// @file speculative_reach.h
 /// How far a body can move in the coming step, so speculative contacts cover it.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/settings.h"
 
 #include <cstdint>

@@ -14,7 +14,7 @@
 /// raised to e u - a (h/2 - tau) (the reflected speed at the step's velocity instant).
 /// Measured: apexes of a dropped ball within 0.2 % of e^(2k) h0 at 60 Hz (tests/test_bounce).
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 #include "core/solver/solver_context.h"
 

@@ -20,7 +20,7 @@
 /// elsewhere), surfaces that slip rub with mu_d. The after-solve switch above remains for the
 /// static limit reached by forces during the step (a push, a slope).
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 
 #include <vector>

@@ -3,7 +3,7 @@
 /// Readies a step's contacts for the velocity solvers: anchors, masses, effective masses and
 /// the closing acceleration, then (optionally) last step's impulses applied as a warm start.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 #include "core/solver/solver_context.h"
 

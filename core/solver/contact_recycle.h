@@ -12,7 +12,7 @@
 /// recycling switched off); with recycled manifolds solved at the offsets they were found
 /// with (`set_recycled_anchors`), its sway decays as Box2D v3's does.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 
 namespace impulse2d {

@@ -4,7 +4,7 @@
 /// at a point, impulse application, effective mass, and the accumulated normal and friction
 /// updates of one point.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 
 #include <algorithm>

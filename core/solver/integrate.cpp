@@ -6,7 +6,7 @@
 namespace impulse2d {
 
 float effective_inverse_inertia(const Body& body, const WorldSettings& settings) {
-  if (!settings.enable_rotation || body.fixed_rotation || body.shape.type == ShapeType::Box) {
+  if (!settings.enable_rotation || body.fixed_rotation || body.shape.type() == ShapeType::Box) {
     return 0.0f;
   }
   return body.inverse_inertia;

@@ -3,7 +3,7 @@
 /// Both normal impulses of a two-point manifold solved at once (Box2D v2's block solver):
 /// the 2x2 linear complementarity problem of the pair's effective-mass matrix.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 
 namespace impulse2d {

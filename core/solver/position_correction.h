@@ -2,7 +2,7 @@
 /// @file position_correction.h
 /// Removes overlap the velocity solve left behind, by moving bodies directly.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 #include "core/settings.h"
 

@@ -20,7 +20,7 @@
 /// own estimate of the load (a one-sided impulse stored there would be applied to both bodies
 /// next step as if it were load).
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 
 #include <cstdint>

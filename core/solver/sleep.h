@@ -3,7 +3,7 @@
 /// Puts islands of touching bodies to sleep when all of them have been slow for a while, and
 /// wakes a whole island when any member is disturbed.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 #include "core/settings.h"
 

@@ -7,7 +7,7 @@
 /// body instead of the ~340 of a `Body`. The arithmetic is `integrate.h`'s, operation for
 /// operation, so the results are bit-identical to integrating the `Body`s themselves.
 
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/settings.h"
 #include "core/solver/solver_body.h"
 

@@ -1,17 +1,21 @@
 #pragma once
 /// @file step_solver.h
 /// One small interface per solver method: a method drives the stages of a step (collide,
-/// integrate, solve contacts, correct positions) in its own order. Adding a method is one
-/// file implementing `StepSolver` and one line in `make_step_solver`.
+/// integrate, solve contacts, correct positions) in its own order. Adding a method touches
+/// eight files: an enumerator in `SolverMethod` (core/settings.h); its name in `solver_name`
+/// and its budget in `settings_for` (core/settings.cpp); a `StepSolver` in its own file pair in
+/// core/solver/, listed in core/CMakeLists.txt; one line in `make_step_solver`
+/// (core/solver/step_solver.cpp); its name in the scene loader's list
+/// (scene/scene_loader.cpp); and its place in the lab's list and labels (lab/lab_method.cpp).
 
-#include "core/body.h"
 #include "core/contact.h"
+#include "core/solver/body_state.h"
 #include "core/solver/contact_visitor.h"
-#include "core/settings.h"
 #include "core/solver/shock_propagation.h"
 #include "core/solver/solver_bodies.h"
 #include "core/solver/solver_context.h"
 #include "core/solver/wide_contact_solver.h"
+#include "core/solver/world_state.h"
 
 #include <cstdint>
 #include <memory>
@@ -19,46 +23,53 @@
 
 namespace impulse2d {
 
-/// The pipeline stages a solver method calls; `World` implements them (and times them).
+/// The pipeline stages a solver method calls, over one world's state, each timed into its
+/// `stats`. A plain object made for the step (no virtual calls): the solver method chooses
+/// the order, the stages do the work (Box2D v3's stages over `b2World`, Jolt's jobs over
+/// `PhysicsSystem`).
 class SolverStages {
  public:
+  /// The stages of `world`'s step.
+  explicit SolverStages(WorldState& world) : world_(world) {}
+
   /// Broad phase, then narrow phase through the jump table: rebuilds `contacts()` with
   /// speculative points for the coming `dt` seconds. `visitor` (may be null) sees each contact
   /// of the new list as the narrow phase finishes it (`contact_visitor.h`).
-  virtual void find_contacts(float dt, ContactVisitor* visitor) = 0;
+  void find_contacts(float dt, ContactVisitor* visitor);
   /// Adds gravity, forces and damping to every awake dynamic body's velocity over `dt` seconds.
-  virtual void integrate_velocities(float dt) = 0;
+  void integrate_velocities(float dt);
   /// Moves every awake body by its velocity over `dt` seconds (bullets swept if enabled).
-  virtual void integrate_positions(float dt) = 0;
+  void integrate_positions(float dt);
   /// Loads `solver_body_states()` from the bodies for this step (after `find_contacts`).
-  virtual void begin_solver_bodies() = 0;
+  void begin_solver_bodies();
   /// `integrate_velocities` on `solver_body_states()` instead of the bodies.
-  virtual void integrate_solver_velocities(float dt) = 0;
+  void integrate_solver_velocities(float dt);
   /// `integrate_positions` on `solver_body_states()` instead of the bodies (bullets are not
   /// swept: see `sweep_bullets`).
-  virtual void integrate_solver_positions(float dt) = 0;
+  void integrate_solver_positions(float dt);
   /// Moves every bullet back to where its motion over the last `dt` seconds first met another
   /// body (continuous collision, when enabled), on the bodies. The soft step sweeps once a
   /// step, after its sub-steps, as its contacts are found once a step: a bullet stopped
   /// within a sub-step would have no contact to meet in the next one.
-  virtual void sweep_bullets(float dt) = 0;
+  void sweep_bullets(float dt);
   /// Removes overlap left after the velocity solve, by the world's position correction method.
-  virtual void correct_positions() = 0;
+  void correct_positions();
   /// This step's contacts, sorted by pair.
-  virtual std::vector<Contact>& solver_contacts() = 0;
+  std::vector<Contact>& solver_contacts() { return world_.contacts; }
   /// Every body slot (dead slots are never referred to by a contact).
-  virtual std::vector<Body>& solver_bodies() = 0;
+  std::vector<Body>& solver_bodies() { return world_.bodies; }
   /// Scratch of one flag per body slot for the solver's own use (kept to avoid allocating).
-  virtual std::vector<std::uint8_t>& solver_body_flags() = 0;
+  std::vector<std::uint8_t>& solver_body_flags() { return world_.body_flags; }
   /// Scratch for the shock pass's support order (kept to avoid allocating).
-  virtual SupportOrder& solver_support_order() = 0;
+  SupportOrder& solver_support_order() { return world_.support_order; }
   /// The compact body states the soft step integrates and solves on (kept to avoid allocating).
-  virtual SolverBodies& solver_body_states() = 0;
+  SolverBodies& solver_body_states() { return world_.solver_body_states; }
   /// The soft step's coloured contact blocks (kept to avoid allocating).
-  virtual WideContactSolver& solver_wide_contacts() = 0;
+  WideContactSolver& solver_wide_contacts() { return world_.wide_contacts; }
 
- protected:
-  ~SolverStages() = default;
+ private:
+  void set_aside_sleeping_contacts();
+  WorldState& world_;
 };
 
 /// A solver method: how one step turns contacts into impulses and motion. Stateless (all

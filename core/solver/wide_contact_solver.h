@@ -10,7 +10,7 @@
 /// `finish_step` packs them into blocks in colour order; the passes work on the step's
 /// `SolverBodies` (`solver_bodies.h`), and `store_impulses` writes the impulses back to the
 /// contacts (and `load_points` reads them in again after the bounce stages changed them).
-#include "core/body.h"
+#include "core/solver/body_state.h"
 #include "core/contact.h"
 #include "core/solver/contact_block.h"
 #include "core/solver/contact_colouring.h"

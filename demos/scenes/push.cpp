@@ -48,7 +48,7 @@ class PushScript final : public StepScript {
   void before_step(World& world, std::int64_t) override {
     int lane = 0;
     for (const BodyId id : world.body_ids()) {
-      const Body& body = world.body(id);
+      const BodyView body = world.body(id);
       if (body.type != BodyType::Dynamic || lane >= lane_count) continue;
       const float weight = body.mass * -world.settings().gravity.y;
       world.apply_force_to_center(id, {ratios_[lane] * box_material().static_friction * weight, 0.0f});

@@ -38,7 +38,7 @@ GoldenRun::GoldenRun(const GoldenSpec& spec, const SceneVariant& variant) {
 std::vector<BodyPose> body_poses(const World& world) {
   std::vector<BodyPose> poses;
   for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     poses.push_back(
         BodyPose{body_name(id), body.transform.position.x, body.transform.position.y, body.angle});
   }
@@ -50,7 +50,7 @@ PhysicsSample sample_physics(const World& world) {
   sample.step = world.step_count();
   sample.energy = demos::mechanical_energy(world);
   for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     if (body.type != BodyType::Dynamic) continue;
     const double mass = body.mass;
     const double px = mass * body.linear_velocity.x;

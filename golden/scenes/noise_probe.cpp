@@ -51,7 +51,7 @@ SceneVariant nudge_dynamic_bodies(int ulps) {
     scene.build = [build = scene.build, ulps](World& world, const demos::Params& params) {
       build(world, params);
       for (const BodyId id : world.body_ids()) {
-        const Body& body = world.body(id);
+        const BodyView body = world.body(id);
         if (body.type != BodyType::Dynamic) continue;
         world.set_transform(id,
                             vec2(move_ulps(body.transform.position.x, ulps),

@@ -63,7 +63,7 @@ inline std::vector<double> bounce_apexes(WorldSettings settings, float e, float 
   ApexTracker tracker;
   for (int step = 0; step < 200000 && static_cast<int>(tracker.apexes().size()) < bounces; ++step) {
     world.step();
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     tracker.sample(body.transform.position.y - radius, body.linear_velocity.y);
   }
   return tracker.apexes();

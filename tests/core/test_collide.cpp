@@ -324,7 +324,7 @@ Triangle right_triangle() {
 
 TEST(CollidePolygonCircle, FaceRegion) {
   const Triangle triangle = right_triangle();
-  const Manifold manifold = collide_polygon_circle(triangle.shape.polygon, triangle.transform,
+  const Manifold manifold = collide_polygon_circle(triangle.shape.polygon(), triangle.transform,
                                                    Circle{0.5f}, at({1.0f, -0.25f}));
   ASSERT_EQ(manifold.point_count, 1);
   expect_vec_near(manifold.normal, {0.0f, -1.0f}, tolerance());
@@ -335,7 +335,7 @@ TEST(CollidePolygonCircle, FaceRegion) {
 TEST(CollidePolygonCircle, VertexRegion) {
   const Triangle triangle = right_triangle();
   // 0.5 from vertex 1 (2, 0) along (0.6, -0.8).
-  const Manifold manifold = collide_polygon_circle(triangle.shape.polygon, triangle.transform,
+  const Manifold manifold = collide_polygon_circle(triangle.shape.polygon(), triangle.transform,
                                                    Circle{1.0f}, at({2.3f, -0.4f}));
   ASSERT_EQ(manifold.point_count, 1);
   expect_vec_near(manifold.normal, {0.6f, -0.8f}, tolerance(2.0f));
@@ -343,7 +343,7 @@ TEST(CollidePolygonCircle, VertexRegion) {
   expect_point(manifold, make_feature_id(vertex_feature(1), circle_feature), {1.85f, 0.2f}, 0.5f,
                tolerance(4.0f));
   // Same centre, radius 0.45: the bottom face is only 0.4 away, but the vertex is 0.5 away.
-  EXPECT_EQ(collide_polygon_circle(triangle.shape.polygon, triangle.transform, Circle{0.45f},
+  EXPECT_EQ(collide_polygon_circle(triangle.shape.polygon(), triangle.transform, Circle{0.45f},
                                    at({2.3f, -0.4f}))
                 .point_count,
             0);
@@ -352,7 +352,7 @@ TEST(CollidePolygonCircle, VertexRegion) {
 TEST(CollidePolygonCircle, CentreInside) {
   const Triangle triangle = right_triangle();
   // Centre (0.5, 0.25): 0.25 above the bottom face, further from the others.
-  const Manifold manifold = collide_polygon_circle(triangle.shape.polygon, triangle.transform,
+  const Manifold manifold = collide_polygon_circle(triangle.shape.polygon(), triangle.transform,
                                                    Circle{0.25f}, at({0.5f, 0.25f}));
   ASSERT_EQ(manifold.point_count, 1);
   expect_vec_near(manifold.normal, {0.0f, -1.0f}, tolerance());
@@ -365,7 +365,7 @@ TEST(CollidePolygonCircle, TurnedPolygonVertexRegion) {
   // A 2 x 2 square turned 45 degrees: its top vertex is at (0, sqrt 2).
   const Shape diamond = make_oriented_box({1.0f, 1.0f});
   const float top = std::sqrt(2.0f);
-  const Manifold manifold = collide_polygon_circle(diamond.polygon, at({0.0f, 0.0f}, 0.25f * pi),
+  const Manifold manifold = collide_polygon_circle(diamond.polygon(), at({0.0f, 0.0f}, 0.25f * pi),
                                                    Circle{0.5f}, at({0.0f, top + 0.25f}));
   ASSERT_EQ(manifold.point_count, 1);
   expect_vec_near(manifold.normal, {0.0f, 1.0f}, tolerance(2.0f));
@@ -375,15 +375,15 @@ TEST(CollidePolygonCircle, TurnedPolygonVertexRegion) {
 
 TEST(CollidePolygonCircle, SeparatedAndTouchingMakeNoContact) {
   const Triangle triangle = right_triangle();
-  EXPECT_EQ(collide_polygon_circle(triangle.shape.polygon, triangle.transform, Circle{0.5f},
+  EXPECT_EQ(collide_polygon_circle(triangle.shape.polygon(), triangle.transform, Circle{0.5f},
                                    at({1.0f, -1.0f}))
                 .point_count,
             0);
-  EXPECT_EQ(collide_polygon_circle(triangle.shape.polygon, triangle.transform, Circle{0.5f},
+  EXPECT_EQ(collide_polygon_circle(triangle.shape.polygon(), triangle.transform, Circle{0.5f},
                                    at({-1.0f, 1.0f}))
                 .point_count,
             0);
-  EXPECT_EQ(collide_polygon_circle(triangle.shape.polygon, triangle.transform, Circle{0.5f},
+  EXPECT_EQ(collide_polygon_circle(triangle.shape.polygon(), triangle.transform, Circle{0.5f},
                                    at({3.0f, 3.0f}))
                 .point_count,
             0);
@@ -440,8 +440,8 @@ TEST(CollidePolygons, SlightlyTurnedCrate) {
   for (float height : {0.9f, 0.99f}) {
     const Transform crate_at = at({0.0f, height}, angle);
     // Expected: each bottom corner below the ground's top (y = 0.5) is a point.
-    const vec2 corners[2] = {crate_at.apply(crate.polygon.vertices[0]),
-                             crate_at.apply(crate.polygon.vertices[1])};
+    const vec2 corners[2] = {crate_at.apply(crate.polygon().vertices[0]),
+                             crate_at.apply(crate.polygon().vertices[1])};
     const Manifold manifold = collide(ground, at({0.0f, 0.0f}), crate, crate_at);
     EXPECT_EQ(manifold.normal, vec2(0.0f, 1.0f));
     int expected_count = 0;
@@ -546,7 +546,7 @@ TEST(CollideBoxPolygon, MatchesBoxVsBoxAndFlips) {
   const Transform ground_at = at({0.0f, 0.0f}, 1.0f);  // ignored for the box
   const Manifold manifold = collide(ground, ground_at, crate, at({0.25f, 0.875f}));
   const Manifold boxes =
-      collide_boxes(ground.box, ground_at, Box{{0.5f, 0.5f}}, at({0.25f, 0.875f}));
+      collide_boxes(ground.box(), ground_at, Box{{0.5f, 0.5f}}, at({0.25f, 0.875f}));
   ASSERT_EQ(manifold.point_count, 2);
   EXPECT_EQ(manifold.normal, boxes.normal);
   for (int i = 0; i < 2; ++i) {
@@ -601,11 +601,11 @@ TEST(CollisionTable, EveryPairBothOrders) {
   const std::vector<Placed> shapes = overlapping_shapes();
   for (const Placed& a : shapes) {
     for (const Placed& b : shapes) {
-      ASSERT_NE(collide_function(a.shape.type, b.shape.type), nullptr);
+      ASSERT_NE(collide_function(a.shape.type(), b.shape.type()), nullptr);
       const Manifold manifold = collide(a.shape, a.transform, b.shape, b.transform);
       const Manifold swapped = collide(b.shape, b.transform, a.shape, a.transform);
       SCOPED_TRACE(testing::Message()
-                   << "A type " << int(a.shape.type) << ", B type " << int(b.shape.type));
+                   << "A type " << int(a.shape.type()) << ", B type " << int(b.shape.type()));
       ASSERT_GT(manifold.point_count, 0);
       expect_unit(manifold.normal);
       for (int i = 0; i < manifold.point_count; ++i) {
@@ -615,7 +615,7 @@ TEST(CollisionTable, EveryPairBothOrders) {
       if (&a == &b) continue;  // a shape against itself is symmetric, not flipped
       expect_swapped(manifold, swapped, tolerance(2.0f));
       // Mixed kinds go through one function and a flip: bit-identical points.
-      if (a.shape.type != b.shape.type) {
+      if (a.shape.type() != b.shape.type()) {
         for (int i = 0; i < manifold.point_count; ++i) {
           const ManifoldPoint* other =
               find_point(swapped, collide_detail::swap_feature_id(manifold.points[i].feature_id));

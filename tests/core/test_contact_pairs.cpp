@@ -74,7 +74,7 @@ Material material_with(float restitution, float static_friction = Material{}.sta
 double kinetic_energy(const World& world, const std::vector<BodyId>& ids) {
   double energy = 0.0;
   for (const BodyId id : ids) {
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     const double vx = body.linear_velocity.x, vy = body.linear_velocity.y;
     const double w = body.angular_velocity;
     energy += 0.5 * body.mass * (vx * vx + vy * vy) + 0.5 * body.inertia * w * w;
@@ -135,8 +135,8 @@ TEST_P(NearMiss, PassingBodiesKeepTheirVelocitiesAndEnergy) {
   const int steps = static_cast<int>(std::lround(1.5 / dt));
   for (int i = 0; i < steps; ++i) world.step();
 
-  const Body& A = world.body(a);
-  const Body& B = world.body(b);
+  const BodyView A = world.body(a);
+  const BodyView B = world.body(b);
   const double energy = kinetic_energy(world, ids);
   std::printf("[measured] NearMiss %s v=%g gap=%g e=%g: A v=(%.9g, %.9g) w=%.9g; "
               "B v=(%.9g, %.9g) w=%.9g; energy %+.3g relative\n",
@@ -219,8 +219,8 @@ TEST_P(HeadOn, BulletsSwapVelocitiesAndNeverPassThrough) {
     if (first_swap < 0 && !(xa < xb)) first_swap = i + 1;
     deepest_overlap = std::max(deepest_overlap, 2.0f * pair_half_size - (xb - xa));
   }
-  const Body& A = world.body(a);
-  const Body& B = world.body(b);
+  const BodyView A = world.body(a);
+  const BodyView B = world.body(b);
   std::printf("[measured] HeadOn %s v=%g: A v=(%.7g, %.3g), B v=(%.7g, %.3g); order swapped "
               "at step %d; deepest overlap %.3g m\n",
               kind_name(kind), speed, A.linear_velocity.x, A.linear_velocity.y,
@@ -516,10 +516,10 @@ Shape drop_shape(DropShape shape) {
 
 // Distance from the centroid down to the bottom face at angle 0.
 float bottom_offset(const Shape& shape) {
-  if (shape.type == ShapeType::Box) return shape.box.half_extents.y;
+  if (shape.type() == ShapeType::Box) return shape.box().half_extents.y;
   float lowest = 0.0f;
-  for (int i = 0; i < shape.polygon.count; ++i)
-    lowest = std::min(lowest, shape.polygon.vertices[static_cast<std::size_t>(i)].y);
+  for (int i = 0; i < shape.polygon().count; ++i)
+    lowest = std::min(lowest, shape.polygon().vertices[static_cast<std::size_t>(i)].y);
   return -lowest;
 }
 
@@ -555,7 +555,7 @@ TEST_P(FlatDrop, ApexesFollowESquaredPowersAndTheDropStaysStraight) {
   float first_tilt_angle = 0.0f;
   for (int step = 0; step < 240; ++step) {  // 4 s: apex 2 of e = 0.8 from 2 m is at ~2.1 s
     world.step();
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     worst_angle = std::max(worst_angle, std::fabs(static_cast<double>(body.angle)));
     if (first_tilt_step < 0 && std::fabs(body.angle) >= 1e-4f) {
       first_tilt_step = step + 1;
@@ -633,8 +633,8 @@ struct MirrorBody {
 double mirror_error(const World& world, const std::vector<MirrorBody>& bodies) {
   double worst = 0.0;
   for (const MirrorBody& entry : bodies) {
-    const Body& a = world.body(entry.id);
-    const Body& b = world.body(bodies[static_cast<std::size_t>(entry.mirror)].id);
+    const BodyView a = world.body(entry.id);
+    const BodyView b = world.body(bodies[static_cast<std::size_t>(entry.mirror)].id);
     const double errors[] = {
         std::fabs(static_cast<double>(a.transform.position.x) + b.transform.position.x),
         std::fabs(static_cast<double>(a.transform.position.y) - b.transform.position.y),
@@ -745,7 +745,7 @@ TEST(ReadmeExample, ADroppedCrateLandsFlatAndStaysPut) {
   float turn = 0.0f, spin = 0.0f, side = 0.0f;
   for (int i = 0; i < 120; ++i) {
     world.step();
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     turn = std::max(turn, std::fabs(body.angle));
     spin = std::max(spin, std::fabs(body.angular_velocity));
     side = std::max(side, std::fabs(body.transform.position.x));

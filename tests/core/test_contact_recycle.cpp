@@ -2,6 +2,7 @@
 // fresh one for small motions, is recomputed once the relative pose moves past the recycle
 // distance or a body turns past 11.5 degrees, and never for bullets.
 #include "core/solver/contact_recycle.h"
+#include "core/solver/world_state.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -30,7 +31,7 @@ struct Pair {
     return settings;
   }
   const Contact& contact() const { return world.contacts().at(0); }
-  const Body& body(BodyId id) const { return world.body_slots()[id.index]; }
+  const Body& body(BodyId id) const { return WorldState::of(world).bodies[id.index]; }
 };
 
 TEST(ContactRecycle, AFreshManifoldIsRecordedAndAStillPairIsKept) {

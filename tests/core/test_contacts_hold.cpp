@@ -422,7 +422,7 @@ struct HeavyOnLight {
   std::pair<float, float> worst_move() const {
     float distance = 0.0f, turn = 0.0f;
     for (std::size_t i = 0; i < start.size(); ++i) {
-      const Body& body = world.body(i < light.size() ? light[i] : heavy);
+      const BodyView body = world.body(i < light.size() ? light[i] : heavy);
       distance = std::max(distance, glm::length(body.transform.position - start[i]));
       turn = std::max(turn, std::fabs(body.angle));
     }

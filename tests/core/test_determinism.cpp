@@ -88,13 +88,13 @@ TEST(Determinism, RemoveAndReAddGivesTheSameStateAsBuildingFresh) {
   build_mixed_scene(fresh);
   const std::vector<BodyId> ids = reused.body_ids();
   const BodyId removed = ids[10];
-  const Body copy = reused.body(removed);
+  const BodyView copy = reused.body(removed);
   reused.remove_body(removed);
   BodyDef def;
   def.position = copy.transform.position;
   def.angle = copy.angle;
-  def.material = copy.material;
-  const BodyId again = reused.create_body(def, copy.shape);
+  def.material = *copy.material;
+  const BodyId again = reused.create_body(def, *copy.shape);
   EXPECT_EQ(again.index, removed.index);
   EXPECT_FALSE(reused.is_valid(removed));
   EXPECT_TRUE(reused.is_valid(again));

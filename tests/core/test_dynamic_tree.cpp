@@ -1,5 +1,6 @@
 // The dynamic tree and the persistent tree pairs against brute force on random boxes (insert,
 // move, remove), and the world's queries and raycasts against a scan of every body.
+#include "core/solver/world_state.h"
 #include "core/collide/broad_phase.h"
 #include "core/collide/dynamic_tree.h"
 #include "core/world.h"
@@ -237,13 +238,14 @@ TEST(TreeQueries, QueriesAndRaycastsMatchAScanOfEveryBody) {
     const std::vector<BodyId> ids = world.body_ids();
     world.set_transform(ids[10 + round], {random.uniform(-20.0f, 20.0f), 12.0f}, 0.3f);
     world.remove_body(ids[20 + round]);
-    const std::vector<Body>& slots = world.body_slots();
+    const WorldState& state = WorldState::of(world);
+    const std::vector<Body>& slots = state.bodies;
     for (int q = 0; q < 60; ++q) {
       const Aabb box = random_box(random, 25.0f);
       std::vector<std::uint32_t> expected;
       std::vector<std::uint32_t> found;
       for (std::uint32_t i = 0; i < slots.size(); ++i) {
-        if (world.slot_alive(i) && compute_aabb(slots[i].shape, slots[i].transform).overlaps(box)) {
+        if (state.alive[i] && compute_aabb(slots[i].shape, slots[i].transform).overlaps(box)) {
           expected.push_back(i);
         }
       }
@@ -257,7 +259,7 @@ TEST(TreeQueries, QueriesAndRaycastsMatchAScanOfEveryBody) {
       expected.clear();
       found.clear();
       for (std::uint32_t i = 0; i < slots.size(); ++i) {
-        if (world.slot_alive(i) && shape_contains_point(slots[i].shape, slots[i].transform, point)) {
+        if (state.alive[i] && shape_contains_point(slots[i].shape, slots[i].transform, point)) {
           expected.push_back(i);
         }
       }
@@ -273,7 +275,7 @@ TEST(TreeQueries, QueriesAndRaycastsMatchAScanOfEveryBody) {
       std::vector<RayHit> scanned;
       for (std::uint32_t i = 0; i < slots.size(); ++i) {
         ShapeRayHit hit;
-        if (world.slot_alive(i) && (slots[i].collision_layers & layers) != 0 &&
+        if (state.alive[i] && (slots[i].collision_layers & layers) != 0 &&
             raycast_shape(slots[i].shape, slots[i].transform, origin, translation, &hit)) {
           scanned.push_back(RayHit{slots[i].id, origin + translation * hit.fraction, hit.normal, hit.fraction});
         }

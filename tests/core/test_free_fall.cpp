@@ -33,7 +33,7 @@ Flight fly(Integrator integrator, float dt, int steps, vec2 v0) {
   def.linear_velocity = v0;
   const BodyId body = world.create_body(def, make_circle(0.25f));
   for (int i = 0; i < steps; ++i) world.step();
-  const Body& b = world.body(body);
+  const BodyView b = world.body(body);
   return {b.transform.position.x, b.transform.position.y, b.linear_velocity.x, b.linear_velocity.y};
 }
 

@@ -6,6 +6,7 @@
 // with each solver method, an axis-aligned `Box` and a rotating box (`make_oriented_box`).
 #include "core/solver/contact_friction_state.h"
 #include "core/solver/contact_prepare.h"
+#include "core/solver/world_state.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -229,8 +230,8 @@ TEST(FrictionState, BreaksLooseIffTheSlipNeedsMoreThanMuSTimesTheCarriedLoad) {
   float load = 0.0f;
   for (int i = 0; i < contact.point_count; ++i) load += contact.points[i].normal_impulse;
   EXPECT_NEAR(load, flat.weight * dt, 1e-3f * flat.weight * dt);  // at rest: W dt
-  const Body& ground = flat.world.body(contact.body_a);
-  const Body& resting = flat.world.body(contact.body_b);
+  const Body& ground = WorldState::of(flat.world).bodies[contact.body_a.index];
+  const Body& resting = WorldState::of(flat.world).bodies[contact.body_b.index];
   const float limit_speed = mu_s * load / resting.mass;  // 8.2 cm/s
   const SolverContext context = resolve_solver_context(flat.world.settings());
   // Whether `prepared` starts the step sliding with the box moving at `speed` along the

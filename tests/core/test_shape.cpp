@@ -55,7 +55,7 @@ TEST(ShapeValidation, CircleRadiusMustBeFinitePositive) {
   for (float radius : {0.0f, -1.0f, not_a_number, infinity}) {
     expect_error([&] { make_circle(radius); }, {"make_circle", "radius"});
   }
-  EXPECT_EQ(make_circle(0.25f).circle.radius, 0.25f);
+  EXPECT_EQ(make_circle(0.25f).circle().radius, 0.25f);
 }
 
 TEST(ShapeValidation, BoxHalfExtentsMustBeFinitePositive) {
@@ -66,8 +66,8 @@ TEST(ShapeValidation, BoxHalfExtentsMustBeFinitePositive) {
   expect_error([] { make_oriented_box(vec2(1.0f, 0.0f)); },
                {"make_oriented_box", "half_extents.y"});
   const Shape box = make_box(vec2(1.0f, 2.0f));
-  EXPECT_EQ(box.type, ShapeType::Box);
-  EXPECT_EQ(box.box.half_extents, vec2(1.0f, 2.0f));
+  EXPECT_EQ(box.type(), ShapeType::Box);
+  EXPECT_EQ(box.box().half_extents, vec2(1.0f, 2.0f));
 }
 
 TEST(ShapeValidation, PolygonVertexCount) {
@@ -157,24 +157,24 @@ TEST(ShapeValidation, PolygonNearZeroArea) {
 TEST(ShapeValidation, PolygonIsRecentredWithUnitOutwardNormals) {
   vec2 centroid;
   const Shape triangle = polygon_from({{0, 0}, {3, 0}, {0, 3}}, &centroid);
-  ASSERT_EQ(triangle.type, ShapeType::Polygon);
-  ASSERT_EQ(triangle.polygon.count, 3);
+  ASSERT_EQ(triangle.type(), ShapeType::Polygon);
+  ASSERT_EQ(triangle.polygon().count, 3);
   expect_vec_near(centroid, vec2(1.0f, 1.0f), tolerance());
-  expect_vec_near(triangle.polygon.vertices[0], vec2(-1.0f, -1.0f), tolerance(3.0f));
-  expect_vec_near(triangle.polygon.vertices[1], vec2(2.0f, -1.0f), tolerance(3.0f));
-  expect_vec_near(triangle.polygon.normals[0], vec2(0.0f, -1.0f), tolerance());
+  expect_vec_near(triangle.polygon().vertices[0], vec2(-1.0f, -1.0f), tolerance(3.0f));
+  expect_vec_near(triangle.polygon().vertices[1], vec2(2.0f, -1.0f), tolerance(3.0f));
+  expect_vec_near(triangle.polygon().normals[0], vec2(0.0f, -1.0f), tolerance());
   const float diagonal = std::sqrt(0.5f);
-  expect_vec_near(triangle.polygon.normals[1], vec2(diagonal, diagonal), tolerance());
-  expect_vec_near(triangle.polygon.normals[2], vec2(-1.0f, 0.0f), tolerance());
+  expect_vec_near(triangle.polygon().normals[1], vec2(diagonal, diagonal), tolerance());
+  expect_vec_near(triangle.polygon().normals[2], vec2(-1.0f, 0.0f), tolerance());
 }
 
 TEST(ShapeValidation, OrientedBoxIsACounterClockwiseRectangle) {
   const Shape box = make_oriented_box(vec2(2.0f, 1.0f));
-  ASSERT_EQ(box.type, ShapeType::Polygon);
-  ASSERT_EQ(box.polygon.count, 4);
-  EXPECT_EQ(box.polygon.vertices[0], vec2(-2.0f, -1.0f));
-  EXPECT_EQ(box.polygon.vertices[2], vec2(2.0f, 1.0f));
-  EXPECT_EQ(box.polygon.normals[1], vec2(1.0f, 0.0f));
+  ASSERT_EQ(box.type(), ShapeType::Polygon);
+  ASSERT_EQ(box.polygon().count, 4);
+  EXPECT_EQ(box.polygon().vertices[0], vec2(-2.0f, -1.0f));
+  EXPECT_EQ(box.polygon().vertices[2], vec2(2.0f, 1.0f));
+  EXPECT_EQ(box.polygon().normals[1], vec2(1.0f, 0.0f));
 }
 
 // ---- mass ------------------------------------------------------------------------------

@@ -3,6 +3,7 @@
 // contact hertz 30, damping ratio 10, push-out at most 3 m/s.
 #include "bounce_apexes.h"
 #include "core/error.h"
+#include "core/solver/softness.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -132,7 +133,7 @@ TEST(SoftStep, RestingBoxDoesNotDrift) {
   for (int i = 0; i < 60; ++i) world.step();
   const vec2 settled = world.body(box).transform.position;
   for (int i = 0; i < 600; ++i) world.step();
-  const Body& body = world.body(box);
+  const BodyView body = world.body(box);
   EXPECT_LT(glm::length(body.transform.position - settled), world.settings().slop);
   EXPECT_LT(std::fabs(body.angle), 1e-3f);
   EXPECT_GT(body.transform.position.y, 0.5f - world.settings().slop);

@@ -1,5 +1,6 @@
 // The soft step's wide contact solver: graph colouring (no two contacts of one colour move the
 // same body), and results that do not depend on the lane count (4 or 8 contacts per vector).
+#include "core/solver/world_state.h"
 #include "core/solver/contact_colouring.h"
 #include "core/error.h"
 #include "core/solver/wide_contact_solver.h"
@@ -68,7 +69,7 @@ TEST(ContactColouring, NoColourMovesABodyTwiceAndEveryContactIsColouredOnce) {
   const std::vector<Contact>& contacts = world.contacts();
   ASSERT_GT(contacts.size(), 150u);
   ContactColouring colouring;
-  colouring.begin(world.body_slots().size());
+  colouring.begin(WorldState::of(world).bodies.size());
   for (const Contact& contact : contacts) colouring.add(contact);
   ASSERT_GT(colouring.colour_count(), 1);
   bool static_body_shared = false;

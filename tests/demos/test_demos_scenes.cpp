@@ -30,7 +30,7 @@ Params small_params(const Scene& scene) {
 
 bool all_finite(const World& world) {
   for (const BodyId id : world.body_ids()) {
-    const Body& body = world.body(id);
+    const BodyView body = world.body(id);
     if (!is_finite(body.transform.position) || !is_finite(body.linear_velocity) ||
         !std::isfinite(body.angle) || !std::isfinite(body.angular_velocity)) {
       return false;

@@ -325,8 +325,8 @@ TEST(OneWayRule, DecidesByNormalAndRisingSpeedAndChainsTheUserFilter) {
   const BodyId crate = world.create_body(crate_def, make_box({0.5f, 0.5f}));
   OneWayPlatforms platforms;
   platforms.add(platform);
-  const Body& p = world.body(platform);
-  Body c = world.body(crate);
+  const BodyView p = world.body(platform);
+  BodyView c = world.body(crate);
   Manifold from_above;
   from_above.normal = {0.0f, 1.0f};  // platform (A) -> crate (B)
   from_above.point_count = 1;
@@ -343,7 +343,7 @@ TEST(OneWayRule, DecidesByNormalAndRisingSpeedAndChainsTheUserFilter) {
   EXPECT_TRUE(platforms.allows(p, c, from_above));
   // A pair without a platform is left to the user's filter.
   int user_calls = 0;
-  const ContactFilter chained = platforms.filter([&](const Body&, const Body&, const Manifold&) {
+  const ContactFilter chained = platforms.filter([&](const BodyView&, const BodyView&, const Manifold&) {
     ++user_calls;
     return false;
   });

@@ -366,7 +366,7 @@ TEST(Ceiling, StopsTheRiseAndEndsTheHeldPhase) {
   std::int64_t first_ceiling_update = -1;
   float scale_after_hit = 0.0f;
   run(world, character, script, 120, [&](std::int64_t step) {
-    const Body& body = world.body(character.body());
+    const BodyView body = world.body(character.body());
     highest_top = std::max(highest_top, static_cast<double>(body.transform.position.y) + 0.5);
     if (first_ceiling_update < 0 && step > 20 && body.linear_velocity.y <= 0.0f) {
       first_ceiling_update = step;

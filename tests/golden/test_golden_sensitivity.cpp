@@ -36,7 +36,7 @@ SceneVariant scale_friction(float factor) {
     scene.build = [build = scene.build, factor](World& world, const demos::Params& params) {
       build(world, params);
       for (const BodyId id : world.body_ids()) {
-        Material material = world.body(id).material;
+        Material material = *world.body(id).material;
         material.static_friction *= factor;
         material.dynamic_friction *= factor;
         world.set_material(id, material);

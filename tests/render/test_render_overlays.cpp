@@ -206,20 +206,20 @@ TEST(RenderOverlays, ContactMarksDrawNormalsBesideImpulsesAndRestingPenetration)
 TEST(RenderOverlays, IslandsJoinDynamicBodiesThroughContactsOnly) {
   const World world = support::make_overlay_scene(60);
   const std::vector<int> island = island_of_slots(world);
-  ASSERT_EQ(island.size(), world.body_slots().size());
+  ASSERT_EQ(island.size(), static_cast<std::size_t>(world.body_count()));  // no slot is free
   int joined = 0;
   for (const Contact& contact : world.contacts()) {
-    const Body& a = world.body_slots()[contact.body_a.index];
-    const Body& b = world.body_slots()[contact.body_b.index];
+    const BodyView a = world.body(contact.body_a);
+    const BodyView b = world.body(contact.body_b);
     if (a.type == BodyType::Dynamic && b.type == BodyType::Dynamic && contact.enabled) {
       EXPECT_EQ(island[contact.body_a.index], island[contact.body_b.index]);
       ++joined;
     }
   }
   EXPECT_GT(joined, 0) << "the overlay scene's stack has dynamic-dynamic contacts";
-  for (std::uint32_t slot = 0; slot < island.size(); ++slot) {
-    if (world.body_slots()[slot].type != BodyType::Dynamic) {
-      EXPECT_EQ(island[slot], -1);
+  for (const BodyId id : world.body_ids()) {
+    if (world.body(id).type != BodyType::Dynamic) {
+      EXPECT_EQ(island[id.index], -1);
     }
   }
   EXPECT_EQ(*std::max_element(island.begin(), island.end()) + 1,

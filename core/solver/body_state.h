@@ -1,0 +1,73 @@
+#pragma once
+/// @file body_state.h
+/// The state the world keeps for one body (internal: users read a `BodyView`).
+
+#include "core/body.h"
+
+namespace impulse2d {
+
+/// The state the world keeps for one body. Users read it through `World::body(id)`.
+/// The fields the step reads for every contact and sub-step come first, so that they share
+/// the first two cache lines; the shape and material (read by the narrow phase alone) last.
+struct Body {
+  BodyId id;                  ///< this body's handle
+  BodyType type = BodyType::Dynamic;  ///< how it moves
+  bool awake = true;             ///< false while sleeping
+  bool fixed_rotation = false;   ///< inertia treated as infinite
+  bool is_bullet = false;        ///< swept against other bodies each step (no tunnelling)
+  Transform transform;        ///< position (centre of mass) and rotation
+  float angle = 0.0f;         ///< radians, unwrapped (keeps counting past pi)
+  vec2 linear_velocity{0.0f, 0.0f};  ///< m/s
+  float angular_velocity = 0.0f;     ///< rad/s
+  float inverse_mass = 0.0f;     ///< 1/kg
+  float inverse_inertia = 0.0f;  ///< 1/(kg m^2); 0 when rotation is fixed
+  vec2 force{0.0f, 0.0f};  ///< N, accumulated until the next step, then cleared
+  float torque = 0.0f;     ///< N m, accumulated until the next step, then cleared
+  float gravity_scale = 1.0f;    ///< multiplies the world's gravity
+  float linear_damping = 0.0f;   ///< 1/s
+  float angular_damping = 0.0f;  ///< 1/s
+  float mass = 0.0f;             ///< kg (0 for static and kinematic bodies)
+  float inertia = 0.0f;          ///< kg m^2 about the centre of mass
+  vec2 previous_position{0.0f, 0.0f};  ///< at the start of the last step (for interpolation)
+  float previous_angle = 0.0f;          ///< at the start of the last step
+  float sleep_time = 0.0f;       ///< seconds the body has been slow
+  /// Farthest distance (m) of the shape's surface from the centre of mass (`shape_extent`),
+  /// kept here beside the fields contact recycling reads, away from the shape's cold bytes.
+  float extent = 0.0f;
+  bool speculative = true;       ///< its pairs get speculative contacts
+  std::uint32_t collision_layers = 1;  ///< bitmask
+  Aabb aabb;                     ///< world bounds, updated each step
+  std::uint64_t user_data = 0;   ///< the caller's value
+  Material material;          ///< what it is made of
+  Shape shape;                ///< in body-local coordinates, centroid at the origin
+};
+
+/// The view of `body` that `World::body` hands out.
+inline BodyView view_of(const Body& body) {
+  BodyView view;
+  view.id = body.id;
+  view.type = body.type;
+  view.awake = body.awake;
+  view.fixed_rotation = body.fixed_rotation;
+  view.is_bullet = body.is_bullet;
+  view.transform = body.transform;
+  view.angle = body.angle;
+  view.linear_velocity = body.linear_velocity;
+  view.angular_velocity = body.angular_velocity;
+  view.previous_position = body.previous_position;
+  view.previous_angle = body.previous_angle;
+  view.mass = body.mass;
+  view.inertia = body.inertia;
+  view.inverse_inertia = body.inverse_inertia;
+  view.gravity_scale = body.gravity_scale;
+  view.linear_damping = body.linear_damping;
+  view.angular_damping = body.angular_damping;
+  view.collision_layers = body.collision_layers;
+  view.aabb = body.aabb;
+  view.user_data = body.user_data;
+  view.shape = &body.shape;
+  view.material = &body.material;
+  return view;
+}
+
+}  // namespace impulse2d
