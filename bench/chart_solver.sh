@@ -32,7 +32,7 @@ plot series("tutorial") using 4:5 with linespoints lw 2 pt 7 title "tutorial per
      series("cold") using 4:5 with linespoints lw 2 pt 5 title "accumulated, no warm start + linear", \
      series("warm") using 4:5 with linespoints lw 2 pt 9 title "accumulated + warm start + block + NGS", \
      series("substeps") using 4:5 with linespoints lw 2 pt 11 title "accumulated, 1 iteration x substeps", \
-     series("soft") using 4:5 with linespoints lw 2 pt 13 title "soft step (the default at 4), 1 + 1 relax x substeps", \
+     series("soft_step") using 4:5 with linespoints lw 2 pt 13 title "soft step (the default at 4), 1 + 1 relax x substeps", \
      "< tail -n +2 $csv" using 4:5:(\$3>1 ? sprintf("%ds", \$3) : sprintf("%d", \$2)) with labels offset 0.9,0.7 font ",8" notitle
 GNUPLOT
 mv "$tmp" "$chart"

@@ -36,7 +36,7 @@ std::vector<Method> methods(int lanes) {
   WorldSettings soft;  // the default: the soft step, 4 substeps of 1 soft and 1 relax pass
   soft.gravity = {0.0f, -10.0f};
   soft.solver_lanes = lanes;
-  WorldSettings accumulated = settings_for(SolverMethod::AccumulatedImpulses);
+  WorldSettings accumulated = settings_for(SolverMethod::Accumulated);
   accumulated.gravity = soft.gravity;
   return {{"accumulated, 16 iterations", accumulated},
           {"default: soft step, 4 substeps x 1 + 1 relax", soft}};

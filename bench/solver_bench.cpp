@@ -12,7 +12,7 @@
 //            contacts may keep), metres: the accuracy axis of the speed/accuracy chart
 // With --sweep it instead runs the solver families over iteration (and substep) budgets and
 // writes one CSV row per run (family,iterations,substeps,ms_per_step,error_m; family is
-// tutorial, cold, warm, substeps or soft)
+// tutorial, cold, warm, substeps or soft_step)
 // for bench/chart_solver.sh to plot.
 // Usage: bench_solver [--steps N] [--rows R] [--csv FILE] [--sweep]
 #include "core/world.h"
@@ -46,7 +46,7 @@ std::vector<Method> methods() {
   tutorial.restitution_mixing = RestitutionMixing::Minimum;
   list.push_back({"tutorial per-iteration + linear projection", tutorial});
 
-  WorldSettings cold = settings_for(SolverMethod::AccumulatedImpulses);
+  WorldSettings cold = settings_for(SolverMethod::Accumulated);
   cold.warm_starting = false;
   cold.block_solver = false;
   cold.position_correction = PositionCorrection::LinearProjection;
@@ -171,7 +171,7 @@ void sweep(int rows, int steps, const std::string& csv_path) {
     WorldSettings settings = all.back().settings;  // the soft step
     settings.substeps = substeps;
     const Result r = run(settings, rows, steps);
-    csv << "soft,1," << substeps << ',' << r.median_ms << ',' << r.error << '\n';
+    csv << "soft_step,1," << substeps << ',' << r.median_ms << ',' << r.error << '\n';
     std::printf("%-44s substeps %2d: %7.3f ms/step, error %.4f m\n", "soft step, substeps x 1 + 1 relax", substeps,
                 r.median_ms, r.error);
   }

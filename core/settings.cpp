@@ -5,16 +5,40 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace impulse2d {
 
 const char* solver_name(SolverMethod method) {
   switch (method) {
     case SolverMethod::PerIteration: return "per_iteration";
-    case SolverMethod::AccumulatedImpulses: return "accumulated";
+    case SolverMethod::Accumulated: return "accumulated";
     case SolverMethod::SoftStep: return "soft_step";
   }
   return "?";
+}
+
+const std::vector<SolverMethod>& solver_methods() {
+  static const std::vector<SolverMethod> methods{SolverMethod::PerIteration,
+                                                 SolverMethod::Accumulated, SolverMethod::SoftStep};
+  return methods;
+}
+
+std::optional<SolverMethod> retired_solver_name(const std::string& name) {
+  static const std::pair<const char*, SolverMethod> retired[] = {
+      {"iter", SolverMethod::PerIteration},
+      {"PerIteration", SolverMethod::PerIteration},
+      {"acc", SolverMethod::Accumulated},
+      {"Accumulated", SolverMethod::Accumulated},
+      {"AccumulatedImpulses", SolverMethod::Accumulated},
+      {"accumulated_impulses", SolverMethod::Accumulated},
+      {"soft", SolverMethod::SoftStep},
+      {"SoftStep", SolverMethod::SoftStep},
+  };
+  for (const auto& [spelling, method] : retired) {
+    if (name == spelling) return method;
+  }
+  return std::nullopt;
 }
 
 WorldSettings settings_for(SolverMethod method) {

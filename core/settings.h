@@ -5,9 +5,15 @@
 #include "core/material.h"
 #include "core/math.h"
 
+#include <optional>
+#include <string>
+#include <vector>
+
 namespace impulse2d {
 
-/// How contact impulses are computed.
+/// How contact impulses are computed. Each method has one name, the enumerator's in snake
+/// case (`solver_name`: "per_iteration", "accumulated", "soft_step"), in scene files, the lab's
+/// labels, the CLI and charts alike.
 enum class SolverMethod {
   /// The tutorial's form: each iteration computes a fresh impulse per contact point from the
   /// current relative velocity and applies it (no memory between iterations or steps);
@@ -17,7 +23,7 @@ enum class SolverMethod {
   /// warm-started from the previous step through persistent contacts (Box2D's form).
   /// Static/dynamic friction: the accumulated tangent impulse is clamped to mu_s * Pn while
   /// the point sticks, and to mu_d * Pn once it slides.
-  AccumulatedImpulses,
+  Accumulated,
   /// Box2D v3's "soft step": collide once per step, then per sub-step integrate velocities,
   /// warm start, solve with soft contacts (a spring-damper of `contact_hertz` and
   /// `contact_damping_ratio` pushing out at most `contact_push_max_speed`, on the separation
@@ -25,7 +31,7 @@ enum class SolverMethod {
   /// without the soft push-out); restitution is applied once at the end of the step.
   /// Uses `substeps` sub-steps of `velocity_iterations` soft passes each; the soft push-out
   /// replaces position correction, so `position_correction` and its parameters, `block_solver`
-  /// and `integrator` (always semi-implicit) are ignored. Friction as for AccumulatedImpulses.
+  /// and `integrator` (always semi-implicit) are ignored. Friction as for Accumulated.
   SoftStep,
 };
 
@@ -73,15 +79,15 @@ struct WorldSettings {
   /// CPUs that have it); 0 picks the widest this CPU runs. The result is bit-identical
   /// whichever is chosen (see `wide_contact_solver.h`), so this only changes the speed.
   int solver_lanes = 0;
-  bool warm_starting = true;    ///< carry accumulated impulses over (AccumulatedImpulses only)
+  bool warm_starting = true;    ///< carry accumulated impulses over (Accumulated only)
   /// Solve the two normal impulses of a 2-point manifold together as a 2x2 linear
   /// complementarity problem (Box2D's block solver) instead of one after the other, which keeps
-  /// stacks from rocking (AccumulatedImpulses only).
+  /// stacks from rocking (Accumulated only).
   bool block_solver = true;
   /// Shock propagation: after the velocity iterations, one more pass over the contacts that
   /// carry load, from the ground up, with the lower body of each held fixed (see
   /// `shock_propagation.h`). Holds heavy bodies on light ones (1:1000) where plain iterations
-  /// let the light one be squeezed out (AccumulatedImpulses).
+  /// let the light one be squeezed out (Accumulated).
   bool shock_propagation = true;
 
   /// Speculative contacts: pairs closer than this (metres), plus the distance their bodies can
@@ -133,12 +139,21 @@ struct WorldSettings {
 };
 
 /// The default settings with `method` at the sub-steps and passes it is measured at:
-/// SoftStep 4 sub-steps of 1 pass (the default), AccumulatedImpulses and PerIteration 1 step
+/// SoftStep 4 sub-steps of 1 pass (the default), Accumulated and PerIteration 1 step
 /// of 16 passes.
 WorldSettings settings_for(SolverMethod method);
 
-/// The solver's name as scene files write it: "accumulated", "per_iteration", "soft_step".
+/// The method's one name (scene files, lab labels, CLI, charts): "per_iteration",
+/// "accumulated", "soft_step".
 const char* solver_name(SolverMethod method);
+
+/// Every solver method, in the order of `SolverMethod`.
+const std::vector<SolverMethod>& solver_methods();
+
+/// The method that a spelling other than its name stands for: the lab's old labels ("iter",
+/// "acc", "soft") and the C++ enumerators ("PerIteration", "AccumulatedImpulses", ...), so
+/// that a scene reader can refuse it by naming the right spelling; empty for any other text.
+std::optional<SolverMethod> retired_solver_name(const std::string& name);
 
 /// Throws `Error` naming the field unless every setting is finite and in range
 /// (time_step > 0, substeps >= 1, iterations >= 0, 0 <= percent <= 1, slop >= 0, ...).

@@ -122,7 +122,7 @@ void run_stability(bool quick, bool charts, bool quiet, const std::string& direc
   // Contact sheets of a few boundaries: the final frame on each side.
   // (Only cells with a boundary are drawn: a method that passes a whole ladder has none.)
   const std::string standard = method_label(LabMethod{});
-  const std::string accumulated = method_label(method_for(SolverMethod::AccumulatedImpulses));
+  const std::string accumulated = method_label(method_for(SolverMethod::Accumulated));
   const std::vector<std::pair<std::string, std::string>> boundaries = {
       {standard, "stack_height"},   {standard, "time_step"},
       {standard, "friction_angle"}, {standard, "elastic_pile"},

@@ -75,11 +75,7 @@ std::string method_label(const LabMethod& method) {
     text << "chipmunk " << method.velocity_iterations << "i";
   } else {
     const LabMethod base;
-    switch (method.solver) {
-      case SolverMethod::PerIteration: text << "iter"; break;
-      case SolverMethod::AccumulatedImpulses: text << "acc"; break;
-      case SolverMethod::SoftStep: text << "soft"; break;
-    }
+    text << solver_name(method.solver);
     if (method.substeps != 1) text << " " << method.substeps << "s x";
     else text << " ";
     text << method.velocity_iterations << "i";
@@ -107,12 +103,6 @@ std::string method_label(const LabMethod& method) {
       text << " e:" << restitution_mixing_name(method.restitution_mixing);
   }
   return text.str();
-}
-
-const std::vector<SolverMethod>& solver_methods() {
-  static const std::vector<SolverMethod> solvers{
-      SolverMethod::PerIteration, SolverMethod::AccumulatedImpulses, SolverMethod::SoftStep};
-  return solvers;
 }
 
 std::vector<LabMethod> method_space(bool quick) {
@@ -166,7 +156,7 @@ std::vector<LabMethod> method_space(bool quick) {
   // integrates semi-implicitly, and solves its pairs through their 2x2 inverse), one at a time
   // from accumulated impulses at their own 16 iterations.
   const auto vary_accumulated = [&](auto change) {
-    LabMethod method = method_for(SolverMethod::AccumulatedImpulses);
+    LabMethod method = method_for(SolverMethod::Accumulated);
     change(method);
     methods.push_back(method);
   };

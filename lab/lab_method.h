@@ -47,10 +47,10 @@ struct LabMethod {
 /// 16 iterations.
 LabMethod method_for(SolverMethod solver);
 
-/// A short label: the solver and its budget, always ("soft 4s x1i" is the default, "acc 16i"
-/// accumulated impulses at 1 step of 16 iterations, "iter 2s x4i"), then only the settings that
-/// differ from the default and that the solver uses, e.g. "soft 4s x1i dt1/120",
-/// "soft 4s x1i nospec", "acc 16i linpc", "box2d 8/3".
+/// A short label: the solver and its budget, always ("soft_step 4s x1i" is the default, "accumulated 16i"
+/// accumulated impulses at 1 step of 16 iterations, "per_iteration 2s x4i"), then only the settings that
+/// differ from the default and that the solver uses, e.g. "soft_step 4s x1i dt1/120",
+/// "soft_step 4s x1i nospec", "accumulated 16i linpc", "box2d 8/3".
 std::string method_label(const LabMethod& method);
 
 /// The configurations swept by `impulse2d lab`: every solver at one step of 1, 2, 4, 8, 16, 32
@@ -72,10 +72,6 @@ demos::Scene apply_method(const LabMethod& method, const demos::Scene& scene);
 
 /// The method the scene itself declares (its settings with its model applied).
 LabMethod scene_method(const demos::Scene& scene);
-
-/// Every solver method of `core/settings.h`, in sweep order (a new solver is added here, in
-/// `solver_name` (core/settings.h) and in `method_label`).
-const std::vector<SolverMethod>& solver_methods();
 
 /// Names as in scene files: "accumulated", "nonlinear_gauss_seidel", "geometric_mean", ...
 const char* engine_name(Engine engine);

@@ -116,7 +116,7 @@ std::vector<LabMethod> tune_candidates(const demos::Scene& scene, bool quick) {
   const std::vector<int> iterations = quick ? std::vector<int>{1, 2, 4, 8} : std::vector<int>{1, 2, 4, 8, 16};
   const std::vector<int> substeps = quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4};
   for (const SolverMethod solver :
-       {SolverMethod::AccumulatedImpulses, SolverMethod::SoftStep, SolverMethod::PerIteration}) {
+       {SolverMethod::Accumulated, SolverMethod::SoftStep, SolverMethod::PerIteration}) {
     if (quick && solver == SolverMethod::PerIteration) continue;
     for (const int steps : substeps) {
       for (const int count : iterations) {
@@ -124,7 +124,7 @@ std::vector<LabMethod> tune_candidates(const demos::Scene& scene, bool quick) {
         method.solver = solver;
         method.substeps = steps;
         method.velocity_iterations = count;
-        if (solver == SolverMethod::AccumulatedImpulses) {
+        if (solver == SolverMethod::Accumulated) {
           method.warm_starting = true;
           method.block_solver = true;
           method.shock_propagation = true;
@@ -133,7 +133,7 @@ std::vector<LabMethod> tune_candidates(const demos::Scene& scene, bool quick) {
       }
     }
   }
-  const int accumulated_substeps = settings_for(SolverMethod::AccumulatedImpulses).substeps;
+  const int accumulated_substeps = settings_for(SolverMethod::Accumulated).substeps;
   for (const int count : {2, 4, 8}) {
     for (const PositionCorrection correction :
          {PositionCorrection::None, PositionCorrection::LinearProjection,
@@ -141,7 +141,7 @@ std::vector<LabMethod> tune_candidates(const demos::Scene& scene, bool quick) {
       // Position correction serves accumulated impulses at one step a frame (settings_for's
       // sub-steps; the soft step ignores it).
       LabMethod method = own;
-      method.solver = SolverMethod::AccumulatedImpulses;
+      method.solver = SolverMethod::Accumulated;
       method.substeps = accumulated_substeps;
       method.velocity_iterations = count;
       method.position_correction = correction;
@@ -150,7 +150,7 @@ std::vector<LabMethod> tune_candidates(const demos::Scene& scene, bool quick) {
     if (!fixed_step) {
       for (const float factor : {2.0f, 0.5f}) {
         LabMethod method = own;
-        method.solver = SolverMethod::AccumulatedImpulses;
+        method.solver = SolverMethod::Accumulated;
         method.substeps = accumulated_substeps;
         method.velocity_iterations = count;
         method.time_step = own.time_step * factor;

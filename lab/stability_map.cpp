@@ -45,7 +45,7 @@ std::vector<LabMethod> stability_methods(bool quick) {
     methods.push_back(method);
   };
   const LabMethod standard;  // the default: the soft step, 4 sub-steps of 1 pass
-  const LabMethod accumulated = method_for(SolverMethod::AccumulatedImpulses);  // 1 x 16
+  const LabMethod accumulated = method_for(SolverMethod::Accumulated);  // 1 x 16
   // The tutorial's solver at its 10 iterations and linear projection, one step a frame.
   add(method_for(SolverMethod::PerIteration), [](LabMethod& m) {
     m.velocity_iterations = 10;

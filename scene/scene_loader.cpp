@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "core/error.h"
@@ -38,10 +39,13 @@ WorldSettings read_settings(const JsonCursor& node) {
   // A named solver starts from its own sub-steps and passes (`settings_for`).
   WorldSettings settings;
   if (auto field = node.optional_field("solver")) {
-    settings = settings_for(
-        field->choice<SolverMethod>({{"accumulated", SolverMethod::AccumulatedImpulses},
-                                     {"per_iteration", SolverMethod::PerIteration},
-                                     {"soft_step", SolverMethod::SoftStep}}));
+    if (const std::optional<SolverMethod> meant = retired_solver_name(field->string())) {
+      field->fail("\"" + field->string() + "\" is no longer a solver's name: write \"" +
+                  solver_name(*meant) + "\"");
+    }
+    std::vector<std::pair<const char*, SolverMethod>> names;
+    for (const SolverMethod method : solver_methods()) names.emplace_back(solver_name(method), method);
+    settings = settings_for(field->choice<SolverMethod>(names));
   }
   if (auto field = node.optional_field("gravity")) {
     settings.gravity = field->vector_at_most(limits::max_gravity, limits::gravity_reason);

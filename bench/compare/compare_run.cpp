@@ -95,7 +95,7 @@ double median(std::vector<double> values) {
 std::vector<Contender> contenders(std::vector<std::string>& notes) {
   // The default (the soft step, 4 sub-steps x 1 pass) and the accumulated solver at the
   // sub-steps and passes it is measured at (settings_for).
-  const WorldSettings accumulated_settings = impulse2d::settings_for(SolverMethod::AccumulatedImpulses);
+  const WorldSettings accumulated_settings = impulse2d::settings_for(SolverMethod::Accumulated);
   lab::LabMethod accumulated;
   accumulated.solver = accumulated_settings.solver;
   accumulated.substeps = accumulated_settings.substeps;

@@ -16,7 +16,7 @@ namespace impulse2d::compare {
 
 /// One engine of the comparison, with its settings.
 struct Contender {
-  std::string label;      ///< short name for tables and the chart, e.g. "impulse2d acc 16i"
+  std::string label;      ///< short name for tables and the chart, e.g. "impulse2d accumulated 16i"
   lab::LabMethod method;  ///< engine and settings (a peer's iteration counts)
 };
 

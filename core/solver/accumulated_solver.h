@@ -1,6 +1,6 @@
 #pragma once
 /// @file accumulated_solver.h
-/// `SolverMethod::AccumulatedImpulses`: sequential impulses with accumulated, clamped normal
+/// `SolverMethod::Accumulated`: sequential impulses with accumulated, clamped normal
 /// and friction impulses per point, warm-started from the previous step (Box2D v2's form),
 /// with speculative targets, bounces timed at impact, Coulomb's static/dynamic switch per
 /// contact, and position correction after each (sub-)step.

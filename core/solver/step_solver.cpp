@@ -10,7 +10,7 @@ namespace impulse2d {
 std::shared_ptr<const StepSolver> make_step_solver(SolverMethod method) {
   switch (method) {
     case SolverMethod::PerIteration: return std::make_shared<PerIterationSolver>();
-    case SolverMethod::AccumulatedImpulses: return std::make_shared<AccumulatedSolver>();
+    case SolverMethod::Accumulated: return std::make_shared<AccumulatedSolver>();
     case SolverMethod::SoftStep: return std::make_shared<SoftStepSolver>();
   }
   throw Error("make_step_solver: unknown solver method");

@@ -1,12 +1,12 @@
 #pragma once
 /// @file step_solver.h
 /// One small interface per solver method: a method drives the stages of a step (collide,
-/// integrate, solve contacts, correct positions) in its own order. Adding a method touches
-/// eight files: an enumerator in `SolverMethod` (core/settings.h); its name in `solver_name`
-/// and its budget in `settings_for` (core/settings.cpp); a `StepSolver` in its own file pair in
-/// core/solver/, listed in core/CMakeLists.txt; one line in `make_step_solver`
-/// (core/solver/step_solver.cpp); its name in the scene loader's list
-/// (scene/scene_loader.cpp); and its place in the lab's list and labels (lab/lab_method.cpp).
+/// integrate, solve contacts, correct positions) in its own order. Adding a method touches six
+/// files: an enumerator in `SolverMethod` (core/settings.h); its name in `solver_name`, its
+/// place in `solver_methods` and its budget in `settings_for` (core/settings.cpp); a
+/// `StepSolver` in its own file pair in core/solver/, listed in core/CMakeLists.txt; and one
+/// line in `make_step_solver` (core/solver/step_solver.cpp). Scene files, the lab's sweeps and
+/// labels, the CLI and charts take the name and the list from there.
 
 #include "core/contact.h"
 #include "core/solver/body_state.h"

@@ -38,7 +38,7 @@ struct WorldState {
   std::vector<Contact> sleeping_contacts; ///< pairs with no moving body, sorted by pair
   std::vector<Contact> merged_contacts;   ///< scratch for sleeping_contacts (reused)
   std::shared_ptr<const StepSolver> solver;  ///< made for solver_method (re-made when it changes)
-  SolverMethod solver_method = SolverMethod::AccumulatedImpulses;  ///< what `solver` was made for
+  SolverMethod solver_method = SolverMethod::Accumulated;  ///< what `solver` was made for
   std::vector<float> speculative_reach;   ///< per slot, metres (reused)
   std::vector<Aabb> speculative_bounds;   ///< per slot (reused)
   std::vector<std::uint8_t> body_flags;   ///< per slot, solver scratch (reused)

@@ -126,7 +126,7 @@ Scene platformer() {
       "slope, coyote + double jump, buffered jump, moving platform, wall jumps";
   // The character controller is tuned and tested on the accumulated solver at one sub-step
   // (tests/test_character_*.cpp); the scene picks it.
-  scene.settings = settings_for(SolverMethod::AccumulatedImpulses);
+  scene.settings = settings_for(SolverMethod::Accumulated);
   scene.model.velocity_iterations = scene.settings.velocity_iterations;
   scene.model.boxes = true;
   scene.model.polygons = true;

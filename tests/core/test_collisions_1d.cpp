@@ -35,7 +35,7 @@ Outcome collide_head_on(float radius1, float radius2, float v1, float v2, float 
 }  // namespace
 
 TEST(Collision1D, ElasticKeepsMomentumAndEnergyAndMatchesTheFormula) {
-  for (SolverMethod solver : {SolverMethod::AccumulatedImpulses, SolverMethod::PerIteration}) {
+  for (SolverMethod solver : {SolverMethod::Accumulated, SolverMethod::PerIteration}) {
     const float v1 = 3.0f, v2 = -1.0f;
     const Outcome out = collide_head_on(0.5f, 0.3f, v1, v2, 1.0f, solver);
     const double m1 = out.m1, m2 = out.m2;
@@ -53,7 +53,7 @@ TEST(Collision1D, ElasticKeepsMomentumAndEnergyAndMatchesTheFormula) {
 }
 
 TEST(Collision1D, InelasticEndsWithACommonVelocity) {
-  const Outcome out = collide_head_on(0.5f, 0.5f, 2.0f, 0.0f, 0.0f, SolverMethod::AccumulatedImpulses);
+  const Outcome out = collide_head_on(0.5f, 0.5f, 2.0f, 0.0f, 0.0f, SolverMethod::Accumulated);
   EXPECT_NEAR(out.v1, 1.0f, 1e-5f);
   EXPECT_NEAR(out.v2, 1.0f, 1e-5f);
 }

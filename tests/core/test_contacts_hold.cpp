@@ -209,7 +209,7 @@ TEST(TimedBounce, ApexesOfADropFromFiveMetresStayWithinADerivedBound) {
   // 3..12 %, Chipmunk loses 1..3 %); the bound is tighter.
   const float e = 0.8f, h0 = 5.0f;
   for (SolverMethod solver :
-       {SolverMethod::AccumulatedImpulses, SolverMethod::PerIteration, SolverMethod::SoftStep}) {
+       {SolverMethod::Accumulated, SolverMethod::PerIteration, SolverMethod::SoftStep}) {
     WorldSettings settings;
     settings.solver = solver;
     if (solver == SolverMethod::SoftStep) settings.substeps = 4;
@@ -264,7 +264,7 @@ TEST(SpeculativeContacts, TouchingBoxesNeverFreeFallForAStep) {
   // its load (18 um), the accumulated solver's rigid one less than 10 um.
   const float free_fall = g * world.settings().time_step * world.settings().time_step;
   EXPECT_NEAR(world.body(box).transform.position.y, 0.5f, 0.01f * free_fall);
-  World rigid{settings_for(SolverMethod::AccumulatedImpulses)};
+  World rigid{settings_for(SolverMethod::Accumulated)};
   const BodyId rigid_box = place_touching_box(rigid);
   rigid.step();
   EXPECT_NEAR(rigid.body(rigid_box).transform.position.y, 0.5f, 1e-5f);

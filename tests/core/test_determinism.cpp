@@ -36,7 +36,7 @@ void build_mixed_scene(World& world) {
 }  // namespace
 
 TEST(Determinism, TwoWorldsBuiltAlikeHaveIdenticalHashesAfter600Steps) {
-  for (SolverMethod solver : {SolverMethod::AccumulatedImpulses, SolverMethod::PerIteration}) {
+  for (SolverMethod solver : {SolverMethod::Accumulated, SolverMethod::PerIteration}) {
     WorldSettings settings;
     settings.solver = solver;
     World first(settings);

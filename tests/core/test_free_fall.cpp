@@ -23,7 +23,7 @@ struct Flight {
 Flight fly(Integrator integrator, float dt, int steps, vec2 v0) {
   // One sub-step of the chosen integrator (the soft step always integrates semi-implicitly,
   // in sub-steps: SubstepsShrinkTheErrorByTheirCount below).
-  WorldSettings settings = settings_for(SolverMethod::AccumulatedImpulses);
+  WorldSettings settings = settings_for(SolverMethod::Accumulated);
   settings.time_step = dt;
   settings.integrator = integrator;
   settings.gravity = {0.0f, -9.81f};
@@ -87,7 +87,7 @@ TEST(Projectile, SubstepsShrinkTheErrorByTheirCount) {
 
 TEST(Projectile, GravityScaleAndDampingFollowTheirFormulas) {
   // The formulas of one step of dt (damping is applied per sub-step).
-  WorldSettings settings = settings_for(SolverMethod::AccumulatedImpulses);
+  WorldSettings settings = settings_for(SolverMethod::Accumulated);
   World world(settings);
   BodyDef def;
   def.gravity_scale = 0.5f;

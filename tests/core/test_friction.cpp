@@ -19,7 +19,7 @@ Material surface(float static_friction, float dynamic_friction) {
   return Material{"Surface", 1.0f, 0.0f, static_friction, dynamic_friction};
 }
 
-WorldSettings friction_settings(SolverMethod solver = SolverMethod::AccumulatedImpulses) {
+WorldSettings friction_settings(SolverMethod solver = SolverMethod::Accumulated) {
   WorldSettings settings;
   settings.friction_mixing = FrictionMixing::Minimum;  // both bodies carry the same coefficients
   settings.solver = solver;
@@ -112,7 +112,7 @@ TEST(Incline, HoldsJustBelowAndSlidesJustAboveTheCriticalAngle) {
 
 TEST(Slide, StoppingDistanceIsV0SquaredOverTwoMuG) {
   // Axis-aligned boxes: no rotation, two contact points, the model a platformer uses.
-  for (SolverMethod solver : {SolverMethod::AccumulatedImpulses, SolverMethod::PerIteration}) {
+  for (SolverMethod solver : {SolverMethod::Accumulated, SolverMethod::PerIteration}) {
     World world(friction_settings(solver));
     const float mu_d = 0.4f, v0 = 5.0f;
     BodyDef ground;

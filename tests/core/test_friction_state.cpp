@@ -40,7 +40,7 @@ const char* solver_label(Solver solver) {
 // Each method at the sub-steps and passes it is measured at (core's `settings_for`).
 WorldSettings method_settings(Solver solver) {
   switch (solver) {
-    case Solver::Accumulated: return settings_for(SolverMethod::AccumulatedImpulses);
+    case Solver::Accumulated: return settings_for(SolverMethod::Accumulated);
     case Solver::SoftStep4: return settings_for(SolverMethod::SoftStep);
     case Solver::PerIteration: return settings_for(SolverMethod::PerIteration);
   }
@@ -222,7 +222,7 @@ TEST(FrictionState, SlowBumpIsStoppedByStaticFrictionWithinTheStep) {
 TEST(FrictionState, BreaksLooseIffTheSlipNeedsMoreThanMuSTimesTheCarriedLoad) {
   // One impulse interval a step: the accumulated solver's (the soft step's carries W h per
   // sub-step, counted by the last case below).
-  Flat flat(settings_for(SolverMethod::AccumulatedImpulses), BoxKind::AxisAligned);
+  Flat flat(settings_for(SolverMethod::Accumulated), BoxKind::AxisAligned);
   ASSERT_EQ(flat.world.contacts().size(), 1u);
   const Contact& contact = flat.world.contacts()[0];
   ASSERT_FALSE(contact.sliding);

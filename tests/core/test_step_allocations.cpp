@@ -57,7 +57,7 @@ TEST(StepAllocations, SteadyStateStepAllocatesNothing) {
   for (BroadPhaseMethod broad_phase : {BroadPhaseMethod::SortAndSweep, BroadPhaseMethod::BruteForce,
                                        BroadPhaseMethod::DynamicTree}) {
     for (SolverMethod solver :
-         {SolverMethod::AccumulatedImpulses, SolverMethod::PerIteration, SolverMethod::SoftStep}) {
+         {SolverMethod::Accumulated, SolverMethod::PerIteration, SolverMethod::SoftStep}) {
       WorldSettings settings;
       settings.enable_sleeping = true;
       settings.broad_phase = broad_phase;

@@ -185,8 +185,10 @@ INSTANTIATE_TEST_SUITE_P(
                 scene_with_body(R"({"shape": {"type": "circle", "radius": 1}, "position": [0]})"),
                 "bodies[0].position: expected [x, y]"},
         BadFile{"BadSolver", R"({"settings": {"solver": "magic"}, "bodies": []})",
-                "settings.solver: unknown value \"magic\" (expected one of: accumulated, "
-                "per_iteration, soft_step)"},
+                "settings.solver: unknown value \"magic\" (expected one of: per_iteration, "
+                "accumulated, soft_step)"},
+        BadFile{"RetiredSolverName", R"({"settings": {"solver": "iter"}, "bodies": []})",
+                "settings.solver: \"iter\" is no longer a solver's name: write \"per_iteration\""},
         BadFile{"BadTimeStep", R"({"settings": {"time_step": 0}, "bodies": []})",
                 "settings.time_step: must be in 1e-05..0.1 (s;"},
         BadFile{"UnknownEventBody",

@@ -18,7 +18,7 @@ inline Material ground_material() { return Material{"Ground", 0.0f, 0.0f, 0.6f, 
 /// A world at time step `dt` on the accumulated solver at one sub-step, which the character
 /// controller is tuned for (its scenes pick it), with default settings otherwise.
 inline WorldSettings settings_at(float dt) {
-  WorldSettings settings = settings_for(SolverMethod::AccumulatedImpulses);
+  WorldSettings settings = settings_for(SolverMethod::Accumulated);
   settings.time_step = dt;
   return settings;
 }

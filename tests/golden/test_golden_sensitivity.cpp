@@ -143,7 +143,7 @@ INSTANTIATE_TEST_SUITE_P(
         inherited("gravity", &WorldSettings::gravity, vec2(0.0f, -9.81f * 1.05f)),
         inherited("time_step", &WorldSettings::time_step, 1.05f / 60.0f),
         inherited("substeps", &WorldSettings::substeps, 2),
-        inherited("solver", &WorldSettings::solver, SolverMethod::AccumulatedImpulses),
+        inherited("solver", &WorldSettings::solver, SolverMethod::Accumulated),
         inherited_iterations("velocity_iterations", &demos::SceneModel::velocity_iterations,
                              &WorldSettings::velocity_iterations,
                              WorldSettings{}.velocity_iterations - 1),

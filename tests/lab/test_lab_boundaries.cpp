@@ -49,7 +49,7 @@ LabMethod per_iteration() {
 }
 
 /// Accumulated impulses at their own budget (settings_for: one step of 16 iterations).
-LabMethod accumulated() { return method_for(SolverMethod::AccumulatedImpulses); }
+LabMethod accumulated() { return method_for(SolverMethod::Accumulated); }
 
 /// Discrete collision of the bullet stressor's ball (radius 0.1 m, from x = -3 m at v m/s, one
 /// step of 1/60 s) with the wall (half thickness 0.05 m, centred at x = 0): contacts are found

@@ -50,7 +50,7 @@ TEST(LabScenarios, EveryShippedFileLoadsWithAMetricUnitAndThreshold) {
 // and with a constant x velocity those roundings can all lean one way.
 TEST(LabScenarios, ProjectileErrorIsSemiImplicitEulersKnownError) {
   const LabScenario scenario = shipped("projectile");
-  for (const LabMethod& base : {LabMethod{}, method_for(SolverMethod::AccumulatedImpulses)}) {
+  for (const LabMethod& base : {LabMethod{}, method_for(SolverMethod::Accumulated)}) {
     for (const float step : {1.0f / 60.0f, 1.0f / 240.0f}) {
       LabMethod method = base;
       method.time_step = step;
