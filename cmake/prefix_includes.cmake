@@ -5,11 +5,20 @@
 # consumers' include tree. Called by impulse2d_library().
 cmake_minimum_required(VERSION 3.20)
 file(MAKE_DIRECTORY ${OUTPUT_DIR})
-# A header removed from the list leaves no stale copy behind.
 file(GLOB_RECURSE staged RELATIVE ${OUTPUT_DIR} ${OUTPUT_DIR}/*.h)
+# A header removed from the list leaves no stale copy behind, nor an emptied sub-folder.
 foreach(name ${staged})
   if(NOT name IN_LIST HEADERS)
     file(REMOVE ${OUTPUT_DIR}/${name})
+  endif()
+endforeach()
+file(GLOB_RECURSE folders LIST_DIRECTORIES true ${OUTPUT_DIR}/*)
+foreach(folder ${folders})
+  if(IS_DIRECTORY ${folder})
+    file(GLOB_RECURSE inside ${folder}/*)
+    if(NOT inside)
+      file(REMOVE_RECURSE ${folder})
+    endif()
   endif()
 endforeach()
 foreach(name ${HEADERS})
