@@ -137,7 +137,8 @@ for page in "${pages[@]}"; do
         "$expected" "$line" "$n" "$status"
     } >> "$script"
   done <<< "$entries"
-  timeout 100 bash "$script" < /dev/null > /dev/null 2>&1
+  # As a user runs them on their own machine: outside CI (under CI `golden update` refuses).
+  timeout 100 env -u CI bash "$script" < /dev/null > /dev/null 2>&1
   rc=$?
   [ "$rc" -eq 124 ] && fail "$name: its commands took over 100 s and were stopped"
   [ "$rc" -eq 99 ] && fail "$name: could not enter the scratch directory"
