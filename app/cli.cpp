@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "app/command.h"
@@ -33,13 +34,16 @@ const char* const exit_status_footer =
     "`golden check`: a golden failed); 2 bad usage or invalid input (unknown command, option, "
     "scene or parameter, invalid scene file); 128+N stopped by signal N (130 for Ctrl-C).";
 
-/// Flushes stdout and reports a failed write (a full disk, a closed pipe): exit status 1
-/// with the reason, instead of 0 with the output cut.
+/// Flushes stdout and reports a failed write (a full disk): exit status 1 with the reason,
+/// instead of 0 with the output cut. A reader that closed the pipe early (`impulse2d list |
+/// head -1`) wanted no more: the program ends quietly with the status a program killed by
+/// SIGPIPE has (128 + 13), as GNU tools do.
 int check_standard_output() {
   std::cout.flush();
   const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
   if (!failed) return 0;
   const int reason = errno;
+  if (reason == EPIPE) return 128 + SIGPIPE;
   std::cerr << "impulse2d: error: writing to standard output failed: "
             << (reason != 0 ? std::strerror(reason) : "stream error") << "\n";
   return exit_runtime_error;
@@ -54,6 +58,24 @@ void choose_backend(const std::string& backend) {
   } catch (const render::RenderError& error) {
     throw UsageError(error.what());
   }
+}
+
+/// `impulse2d help [COMMAND]` as the parser understands it: `--help` of the program or of
+/// that command. Throws `UsageError` for an unknown command or more than one.
+std::vector<std::string> help_as_flag(const std::vector<std::string>& arguments,
+                                      const std::vector<Command>& commands) {
+  if (arguments.size() == 1) return {"--help"};
+  std::string names;
+  for (const Command& command : commands) {
+    const std::string& name = command.parser->get_name();
+    if (arguments.size() == 2 && arguments[1] == name) return {name, "--help"};
+    names += (names.empty() ? "" : ", ") + name;
+  }
+  if (arguments.size() > 2) {
+    throw UsageError("help: one command at most (impulse2d help COMMAND), got " +
+                     std::to_string(arguments.size() - 1) + " words");
+  }
+  throw UsageError("help: unknown command '" + arguments[1] + "' (commands: " + names + ")");
 }
 
 /// Runs the command the command line named (the default demo when none); returns the exit
@@ -84,13 +106,13 @@ int run_cli(int argc, char** argv) {
       "impulse2d: a 2D impulse-based rigid-body engine; renders scenes to PNG frames.\n"
       "Without a command it renders the default demo (" +
           default_scene().name + ") into out/,\nwith the overlays " + default_demo_overlays +
-          ".",
+          ".\n`impulse2d help COMMAND` (or COMMAND --help) lists a command's options.",
       "impulse2d"};
   app.require_subcommand(0, 1);
   // Options of the program (--quiet, --version) may also come after the command's name.
   app.fallthrough();
   app.footer(exit_status_footer);
-  app.set_version_flag("--version", "impulse2d " + program_version(), "print the version and exit");
+  app.set_version_flag("--version,-V", "impulse2d " + program_version(), "print the version and exit");
   ProgramOptions options;
   app.add_flag("--quiet,-q", options.quiet,
                "no progress and no summary lines (render, sheet, lab, lab merge); errors and "
@@ -106,12 +128,23 @@ int run_cli(int argc, char** argv) {
       add_diff_command(app, options),  add_golden_command(app, options),
       add_lab_command(app, options),   add_tune_command(app, options)};
 
+  std::vector<std::string> arguments(argv + 1, argv + argc);
+  if (!arguments.empty() && arguments.front() == "help") {
+    try {
+      arguments = help_as_flag(arguments, commands);
+    } catch (const UsageError& error) {
+      std::cerr << "impulse2d: " << error.what() << "\n";
+      return exit_usage_error;
+    }
+  }
   try {
-    app.parse(argc, argv);
+    // CLI11 parses a vector given in reverse order (and consumes it).
+    std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());
+    app.parse(reversed);
   } catch (const CLI::Success& done) {
     return app.exit(done);  // --help, --version
   } catch (const CLI::ParseError& error) {
-    std::cerr << parse_error_message(app, error, std::vector<std::string>(argv + 1, argv + argc));
+    std::cerr << parse_error_message(app, error, arguments);
     return exit_usage_error;
   }
 

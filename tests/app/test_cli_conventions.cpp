@@ -74,12 +74,44 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST_F(CliTest, VersionPrintsTheProgramVersion) {
-  for (const char* arguments : {"--version", "render --version"}) {
+  for (const char* arguments : {"--version", "-V", "render --version", "render -V"}) {
     const Result result = run(arguments);
     EXPECT_EQ(result.status, 0) << arguments << result.err;
     EXPECT_EQ(result.out.rfind("impulse2d ", 0), 0u) << result.out;
     EXPECT_NE(result.out.find('.'), std::string::npos) << result.out;  // "impulse2d 0.1.0"
   }
+}
+
+TEST_F(CliTest, HelpCommandIsTheHelpFlag) {
+  const Result program = run("help");
+  EXPECT_EQ(program.status, 0) << program.err;
+  EXPECT_EQ(program.out, run("--help").out);
+  EXPECT_NE(program.out.find("impulse2d help COMMAND"), std::string::npos) << program.out;
+  const Result render = run("help render");
+  EXPECT_EQ(render.status, 0) << render.err;
+  EXPECT_EQ(render.out, run("render --help").out);
+  EXPECT_NE(render.out.find("Usage: impulse2d render"), std::string::npos) << render.out;
+
+  const Result unknown = run("help rendr");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_EQ(unknown.err, "impulse2d: help: unknown command 'rendr' (commands: list, render, "
+                         "trace, sheet, diff, golden, lab, tune)\n");
+  const Result two = run("help render sheet");
+  EXPECT_EQ(two.status, 2);
+  EXPECT_NE(two.err.find("one command at most"), std::string::npos) << two.err;
+}
+
+// A reader that stops early (`impulse2d list | head -1`) is no error: no message, and the
+// status of a program ended by SIGPIPE (141), as GNU tools; 0 when the output fit in the pipe
+// before the reader closed it.
+TEST_F(CliTest, ClosedPipeEndsQuietly) {
+  const std::string command = "cd '" + dir_.string() + "' && bash -c \"( '" IMPULSE2D_CLI
+                              "' list 2> err.txt; echo \\$? > status.txt ) | "
+                              "(exec 0<&-; sleep 0.3)\"";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const std::string status = read_file(dir_ / "status.txt");
+  EXPECT_TRUE(status == "141\n" || status == "0\n") << status;
+  EXPECT_EQ(read_file(dir_ / "err.txt"), "");
 }
 
 TEST_F(CliTest, QuietPrintsNothingOnSuccess) {
