@@ -158,7 +158,15 @@ Command add_render_command(CLI::App& program, ProgramOptions& options) {
                       "output directory: <scene>_00000.png, <scene>_00001.png, ... (one "
                       "per frame, numbered from 0 whatever steps they show) and "
                       "<scene>_frames.csv (frame,step,time,file)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(
+          [](const std::string& out) -> std::string {
+            const std::string extension = std::filesystem::path(out).extension().string();
+            if (extension != ".mp4" && extension != ".webm" && extension != ".gif") return "";
+            return "-o names the folder of the PNG frames, not a video: write --video " + out +
+                   " (with --no-frames for the video alone)";
+          },
+          "");
   command->add_option("--video", render->video,
                       "also write a video (.mp4, .webm or .gif; needs ffmpeg)");
   command->add_option("--fps", render->fps,

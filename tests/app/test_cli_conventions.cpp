@@ -69,6 +69,12 @@ INSTANTIATE_TEST_SUITE_P(
         Misuse{"BadNumber", "sheet pyramid --count many", "impulse2d: sheet: "},
         Misuse{"NoFramesWithoutVideo", "render pyramid --no-frames",
                "impulse2d: --no-frames needs --video FILE"},
+        Misuse{"OutputNamedLikeAVideo", "render pyramid -o out.mp4",
+               "impulse2d: render: --out: -o names the folder of the PNG frames, not a video: "
+               "write --video out.mp4 (with --no-frames for the video alone)\n"},
+        Misuse{"OutputNamedLikeAVideoInADryRun", "render pyramid -o clip.gif --dry-run",
+               "impulse2d: render: --out: -o names the folder of the PNG frames, not a video: "
+               "write --video clip.gif"},
         Misuse{"FpsWithoutVideo", "render pyramid --fps 30",
                "impulse2d: --fps sets the video's rate: it needs --video FILE"}),
     [](const auto& test) { return std::string(test.param.name); });
