@@ -87,8 +87,8 @@ int run_command(const std::vector<Command>& commands, const ProgramOptions& opti
   }
   if (chosen != nullptr && chosen->renders) choose_backend(options.backend);
   if (options.dry_run) {
-    if (chosen != nullptr && chosen->check) chosen->check();
-    return 0;
+    if (chosen != nullptr && chosen->dry_run) chosen->dry_run(std::cout);
+    return check_standard_output();
   }
   if (chosen == nullptr) {
     render_default_demo(options, std::cout);

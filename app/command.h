@@ -26,9 +26,11 @@ struct ProgramOptions {
 struct Command {
   CLI::App* parser = nullptr;  ///< its CLI11 subcommand (`parsed()` when the command line named it)
   bool renders = false;        ///< draws frames: the backend is checked before anything runs
-  /// With --dry-run: the checks a real run makes before any work (empty: the parser's only).
-  /// Throws `UsageError` as the run would.
-  std::function<void()> check;
+  /// With --dry-run: runs every check a real run makes before any work and writes the plan
+  /// (what would run, the files it would write) to `out`; writes and runs nothing. Throws
+  /// `UsageError` (or the run's other errors) exactly as the run would. Empty: the parser's
+  /// checks only.
+  std::function<void(std::ostream& out)> dry_run;
   /// Runs the command, writing its report to `out`; returns the exit status. Throws
   /// `UsageError` for bad input, `Interrupted` on a signal, other exceptions for failures.
   std::function<int(std::ostream& out)> run;

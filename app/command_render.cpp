@@ -189,7 +189,7 @@ Command add_render_command(CLI::App& program, ProgramOptions& options) {
   Command result;
   result.parser = command;
   result.renders = true;
-  result.check = [render] { check_scene_arguments(render->scene, render->frames); };
+  result.dry_run = [render](std::ostream&) { check_scene_arguments(render->scene, render->frames); };
   result.run = [render, &options](std::ostream& out) {
     render->quiet = options.quiet;
     render_scene(*render, out);

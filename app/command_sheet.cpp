@@ -96,7 +96,7 @@ Command add_sheet_command(CLI::App& program, ProgramOptions& options) {
   Command result;
   result.parser = command;
   result.renders = true;
-  result.check = [sheet] { check_scene_arguments(sheet->scene, sheet->frames); };
+  result.dry_run = [sheet](std::ostream&) { check_scene_arguments(sheet->scene, sheet->frames); };
   result.run = [sheet, &options](std::ostream& out) {
     sheet->quiet = options.quiet;
     sheet_scene(*sheet, out);

@@ -60,7 +60,7 @@ Command add_trace_command(CLI::App& program, const ProgramOptions&) {
 
   Command result;
   result.parser = command;
-  result.check = [trace] { check_scene_arguments(trace->scene, std::nullopt); };
+  result.dry_run = [trace](std::ostream&) { check_scene_arguments(trace->scene, std::nullopt); };
   result.run = [trace](std::ostream& out) {
     trace_scene(*trace, out);
     return 0;

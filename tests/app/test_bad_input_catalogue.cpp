@@ -1,13 +1,30 @@
-// The bad-input catalogue (tests/bad_inputs/catalogue.json): broken scene files and command
-// lines, each run through the impulse2d program in a fresh directory that already holds
-// files. Each case states its exit status and the words its message must contain (the file,
-// field or option, and the reason); a failing case must leave every file as it was and
-// create none. Cases with exit status 0 are valid inputs that must stay accepted.
+// The bad-input catalogue (tests/app/bad_inputs/*.json): broken scene files, command lines,
+// signals and write failures, each run through the impulse2d program in a fresh directory
+// that already holds files. Each case states its exit status and the words its message must
+// contain (the file, field or option, and the reason); a failing case must leave every file
+// as it was and create none, and no case may leave files in its private $TMPDIR. Cases with
+// exit status 0 are valid inputs that must stay accepted.
+//
+// catalogue.json holds `base_scene` and `existing` (shared by every file) and its cases; each
+// other .json file of the folder holds `about` and `cases` of one area (golden, lab, ...).
+// Keys of a case beyond the scene and file set-up:
+//   args         the command line after `impulse2d` (a shell word list; quotes allowed)
+//   environment  shell words before the program (e.g. `ulimit -f 8; trap '' XFSZ;` for a
+//                write that fails once a file reaches 4 KiB, as on a full disk)
+//   signal       {"name": "INT"|"TERM"|"HUP", "after_path": P, "after_ms": N}: the signal
+//                is sent N ms after the path P (relative to the work folder, or to the
+//                case's $TMPDIR when it starts with "$TMPDIR/") first exists (at once
+//                without after_path)
+//   files        "unchanged" (the default when exit != 0) or "any"
+//   absent       substrings no path under the work folder may contain after the run
+//   timeout_s    the program is killed (and the case fails) after this long (default 300)
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +34,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -36,24 +54,90 @@ void write_file(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-/// The catalogue: `base_scene`, `existing` files and `cases`.
+/// The main catalogue: `base_scene`, `existing` files and `cases`.
 const json& catalogue() {
-  static const json document = json::parse(read_file(IMPULSE2D_CATALOGUE));
+  static const json document = json::parse(read_file(fs::path(IMPULSE2D_CATALOGUE_DIR) / "catalogue.json"));
   return document;
 }
 
-/// One case, expanded: the scene file text (if any) and the command line.
+/// One case: its name, the file it comes from and its specification.
 struct Case {
   std::string name;
+  std::string file;
   json spec;
 };
 
+/// Every case of every .json file of the catalogue folder, files in name order.
 std::vector<Case> cases() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(IMPULSE2D_CATALOGUE_DIR)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
   std::vector<Case> result;
-  for (const json& spec : catalogue().at("cases")) {
-    result.push_back(Case{spec.at("name").get<std::string>(), spec});
+  for (const fs::path& file : files) {
+    const json document = json::parse(read_file(file));
+    for (const json& spec : document.at("cases")) {
+      result.push_back(Case{spec.at("name").get<std::string>(), file.filename().string(), spec});
+    }
   }
   return result;
+}
+
+/// The signal named in a case ("INT", "TERM", "HUP").
+int signal_number(const std::string& name) {
+  if (name == "INT") return SIGINT;
+  if (name == "TERM") return SIGTERM;
+  if (name == "HUP") return SIGHUP;
+  ADD_FAILURE() << "unknown signal name " << name;
+  return SIGTERM;
+}
+
+/// Runs `command` with /bin/sh (the last command `exec`s the program, so the shell's process
+/// becomes the program's), sends the case's signal when due, and returns the wait status
+/// (-1 when it had to be killed after `timeout`).
+int run_case(const std::string& command, const json& spec, const fs::path& work, const fs::path& tmp,
+             std::chrono::seconds timeout) {
+  const pid_t child = fork();
+  if (child == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  using clock = std::chrono::steady_clock;
+  const clock::time_point start = clock::now();
+  std::optional<clock::time_point> signal_due;
+  bool signalled = false;
+  std::string after_path;
+  if (spec.contains("signal")) {
+    after_path = spec.at("signal").value("after_path", std::string());
+    if (after_path.empty()) signal_due = start + std::chrono::milliseconds(spec.at("signal").value("after_ms", 0));
+  }
+  int status = 0;
+  while (waitpid(child, &status, WNOHANG) == 0) {
+    const clock::time_point now = clock::now();
+    if (now - start > timeout) {
+      kill(child, SIGKILL);
+      waitpid(child, &status, 0);
+      ADD_FAILURE() << "still running after " << timeout.count() << " s; killed";
+      return -1;
+    }
+    if (!signalled && !signal_due && !after_path.empty()) {
+      const std::string prefix = "$TMPDIR/";
+      const fs::path watched = after_path.rfind(prefix, 0) == 0 ? tmp / after_path.substr(prefix.size())
+                                                                : work / after_path;
+      std::error_code error;
+      if (fs::exists(watched, error)) {
+        signal_due = now + std::chrono::milliseconds(spec.at("signal").value("after_ms", 0));
+      }
+    }
+    if (!signalled && signal_due && now >= *signal_due) {
+      kill(child, signal_number(spec.at("signal").at("name").get<std::string>()));
+      signalled = true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  if (spec.contains("signal") && !signalled) ADD_FAILURE() << "the program ended before the signal was due";
+  return status;
 }
 
 /// The scene file of a case: `scene_text` verbatim, or `base_scene` with `set` (JSON pointer
@@ -87,7 +171,7 @@ std::map<std::string, std::string> snapshot(const fs::path& root) {
 }
 
 /// gtest prints a case by its name.
-void PrintTo(const Case& each, std::ostream* out) { *out << each.name; }
+void PrintTo(const Case& each, std::ostream* out) { *out << each.file << ": " << each.name; }
 
 class BadInputCatalogue : public ::testing::TestWithParam<Case> {};
 
@@ -97,8 +181,10 @@ TEST_P(BadInputCatalogue, ExitStatusMessageAndNoFileChanged) {
   const fs::path root = fs::temp_directory_path() /
                         ("impulse2d_catalogue_" + GetParam().name + "_" + std::to_string(getpid()));
   const fs::path work = root / "work";
+  const fs::path tmp = root / "tmp";
   fs::remove_all(root);
   fs::create_directories(work);
+  fs::create_directories(tmp);
   for (const auto& [path, text] : catalogue().at("existing").items()) {
     write_file(work / path, text.get<std::string>());
   }
@@ -130,13 +216,17 @@ TEST_P(BadInputCatalogue, ExitStatusMessageAndNoFileChanged) {
   if (const std::optional<std::string> text = scene_text(spec)) write_file(work / "scene.json", *text);
   const std::map<std::string, std::string> before = snapshot(work);
 
-  const std::string command = "cd '" + work.string() + "' && " +
-                              spec.value("environment", std::string()) + " '" IMPULSE2D_CLI "' " +
+  const std::string command = "cd '" + work.string() + "' && export TMPDIR='" + tmp.string() + "' && " +
+                              spec.value("environment", std::string()) + " exec '" IMPULSE2D_CLI "' " +
                               spec.at("args").get<std::string>() + " > '" +
                               spec.value("stdout", (root / "stdout").string()) + "' 2> '" + (root / "stderr").string() +
                               "' < /dev/null";
-  const int status = std::system(command.c_str());
-  const int exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const int status = run_case(command, spec, work, tmp, std::chrono::seconds(spec.value("timeout_s", 300)));
+  // A program killed by signal N reports it as the shell would: 128 + N.
+  const int exit_status = status == -1         ? -1
+                          : WIFEXITED(status)   ? WEXITSTATUS(status)
+                          : WIFSIGNALED(status) ? 128 + WTERMSIG(status)
+                                                : -1;
   const std::string err = read_file(root / "stderr");
   const std::string out = read_file(root / "stdout");
 
@@ -147,9 +237,15 @@ TEST_P(BadInputCatalogue, ExitStatusMessageAndNoFileChanged) {
     EXPECT_NE(message_stream.find(word.get<std::string>()), std::string::npos)
         << "message lacks \"" << word.get<std::string>() << "\": " << message_stream;
   }
-  if (expected != 0) {
+  if (spec.value("files", std::string(expected != 0 ? "unchanged" : "any")) == "unchanged") {
     EXPECT_EQ(snapshot(work), before) << "a failed run created or changed files";
   }
+  for (const json& word : spec.value("absent", json::array())) {
+    for (const auto& [path, contents] : snapshot(work)) {
+      EXPECT_EQ(path.find(word.get<std::string>()), std::string::npos) << "left behind: " << path;
+    }
+  }
+  for (const auto& [path, contents] : snapshot(tmp)) ADD_FAILURE() << "left in $TMPDIR: " << path;
   fs::remove_all(root);
 }
 
