@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "app/command.h"
+#include "scene/usage_error.h"
 #include "golden/scenes/golden_command.h"
 
 namespace impulse2d::demos {
@@ -49,12 +50,23 @@ Command add_golden_command(CLI::App& program, const ProgramOptions&) {
   Command result;
   result.parser = command;
   result.own_exit_status = true;  // `golden check`: 1 when a golden failed
-  result.run = [golden, check, update, frame](std::ostream& out) {
-    golden::GoldenCommandArguments& chosen = golden->command;
-    chosen.action = check->parsed() ? "check" : update->parsed() ? "update" : "frame";
-    if (frame->parsed()) chosen.files = {golden->frame_file};
-    chosen.executable = "/proc/self/exe";  // this program, for the second process
-    return golden::run_golden_command(chosen, out, std::cerr);
+  // The arguments as the library takes them, once the command line is parsed.
+  auto chosen = [golden, check, update, frame]() -> golden::GoldenCommandArguments& {
+    golden::GoldenCommandArguments& arguments = golden->command;
+    arguments.action = check->parsed() ? "check" : update->parsed() ? "update" : "frame";
+    if (frame->parsed()) arguments.files = {golden->frame_file};
+    arguments.executable = "/proc/self/exe";  // this program, for the second process
+    return arguments;
+  };
+  result.dry_run = [chosen](std::ostream& out) {
+    try {
+      golden::dry_run_golden_command(chosen(), out);
+    } catch (const UsageError& error) {
+      throw UsageError(std::string("golden: ") + error.what());
+    }
+  };
+  result.run = [chosen](std::ostream& out) {
+    return golden::run_golden_command(chosen(), out, std::cerr);
   };
   return result;
 }

@@ -3,6 +3,7 @@
 #include "golden/artifacts.h"
 
 #include "golden/compare_json.h"
+#include "golden/json_output.h"
 #include "golden/diff_images.h"
 #include "golden/error.h"
 #include "image/file_io.h"
@@ -111,8 +112,9 @@ std::filesystem::path write_failure_artifacts(const std::filesystem::path& root,
       write_artifact("heatmap", diff_heatmap(*expected, actual));
     }
   }
-  image::write_text_file_atomically(directory / "metrics.json",
-                             check_to_json(check, files).dump(2) + "\n");
+  const std::filesystem::path metrics = directory / "metrics.json";
+  image::write_text_file_atomically(
+      metrics, dump_json_for_file(check_to_json(check, files), metrics.string()));
   return directory;
 }
 

@@ -194,8 +194,12 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
     actual_sidecar.noise = measure_noise();
   }
   if (write_golden) {
-    image::save_png(pixel_png, actual.image);
-    write_sidecar(sidecar_path_for(pixel_png), actual_sidecar);
+    const fs::path written =
+        settings.write_dir.empty()
+            ? pixel_png
+            : settings.write_dir / pixel_png.lexically_relative(settings.golden_dir);
+    image::save_png(written, actual.image);
+    write_sidecar(sidecar_path_for(written), actual_sidecar);
     outcome.golden_written = true;
   }
 

@@ -45,6 +45,9 @@ using NoiseMeasurer = std::function<NoiseEnvelope()>;
 /// What a check needs besides the frame.
 struct CheckSettings {
   std::filesystem::path golden_dir;  ///< the golden set, e.g. <source>/golden_images
+  /// Where written goldens go, with `golden_dir`'s layout (a `StagedUpdate`'s folder, moved
+  /// into place by its commit); empty: into `golden_dir` itself.
+  std::filesystem::path write_dir;
   /// Where failures leave their artifacts and index.html; empty: write none.
   std::filesystem::path artifact_root;
   UpdateMode update_mode = UpdateMode::None;  ///< which goldens this run may write

@@ -3,13 +3,11 @@
 
 #include <sstream>
 
-#include "image/file_io.h"
 #include "golden/report.h"
 
 namespace impulse2d::golden {
 
-void write_junit(const std::filesystem::path& file, const std::string& suite,
-                 const std::vector<JUnitCase>& cases) {
+std::string junit_xml(const std::string& suite, const std::vector<JUnitCase>& cases) {
   int failures = 0;
   int skipped = 0;
   double seconds = 0.0;
@@ -39,7 +37,7 @@ void write_junit(const std::filesystem::path& file, const std::string& suite,
         << "</failure>\n    </testcase>\n";
   }
   xml << "  </testsuite>\n</testsuites>\n";
-  image::write_text_file_atomically(file, xml.str());
+  return xml.str();
 }
 
 }  // namespace impulse2d::golden

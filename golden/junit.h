@@ -3,7 +3,6 @@
 /// A JUnit XML report of golden checks, the format CI test reporters (GitLab, Jenkins,
 /// GitHub actions that publish test results) read.
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -20,9 +19,8 @@ struct JUnitCase {
   std::string failure_message;  ///< the full failure message
 };
 
-/// Writes `<testsuites><testsuite name=suite ...><testcase .../>...` to `file` atomically.
-/// Throws `GoldenError` when the write fails.
-void write_junit(const std::filesystem::path& file, const std::string& suite,
-                 const std::vector<JUnitCase>& cases);
+/// `<testsuites><testsuite name=suite ...><testcase .../>...` as text.
+std::string junit_xml(const std::string& suite, const std::vector<JUnitCase>& cases);
+
 
 }  // namespace impulse2d::golden

@@ -5,6 +5,7 @@
 #include "image/file_io.h"
 #include "image/hex_hash.h"
 #include "golden/json_fields.h"
+#include "golden/json_output.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +14,14 @@
 namespace impulse2d::golden {
 
 using nlohmann::json;
+
+namespace {
+
+/// A pose field as read: the single-precision value it was written from (older sidecars
+/// hold the float's exact double, newer ones its shortest decimal form; both give it).
+double as_float(double value) { return static_cast<float>(value); }
+
+}  // namespace
 
 RendererFingerprint split_fingerprint(const std::string& fingerprint) {
   const std::string separator = " | ";
@@ -69,8 +78,9 @@ Sidecar sidecar_from_json(const json& object, const std::string& origin) {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       const FieldReader body(bodies[i], origin, "bodies[" + std::to_string(i) + "].");
       body.reject_unknown({"name", "x", "y", "angle"});
-      sidecar.bodies.push_back(
-          {body.string("name", false), body.number("x"), body.number("y"), body.number("angle")});
+      // Poses are the world's single-precision values, written in their shortest float form.
+      sidecar.bodies.push_back({body.string("name", false), as_float(body.number("x")),
+                                as_float(body.number("y")), as_float(body.number("angle"))});
     }
   }
   if (top.has("noise")) sidecar.noise = noise_envelope_from_json(top.get("noise"), origin);
@@ -80,7 +90,10 @@ Sidecar sidecar_from_json(const json& object, const std::string& origin) {
 json sidecar_to_json(const Sidecar& sidecar) {
   json bodies = json::array();
   for (const BodyPose& pose : sidecar.bodies) {
-    bodies.push_back({{"name", pose.name}, {"x", pose.x}, {"y", pose.y}, {"angle", pose.angle}});
+    bodies.push_back({{"name", pose.name},
+                      {"x", float_for_json(static_cast<float>(pose.x))},
+                      {"y", float_for_json(static_cast<float>(pose.y))},
+                      {"angle", float_for_json(static_cast<float>(pose.angle))}});
   }
   json object = {{"format", kSidecarFormat},
                  {"scene", sidecar.scene},
@@ -112,8 +125,9 @@ Sidecar read_sidecar(const std::filesystem::path& file, const std::string& displ
 
 void write_sidecar(const std::filesystem::path& file, const Sidecar& sidecar) {
   const json object = sidecar_to_json(sidecar);
+  const std::string text = dump_json_for_file(object, "sidecar '" + file.string() + "'");
   sidecar_from_json(object, "sidecar '" + file.string() + "' (not written)");  // readable back
-  image::write_text_file_atomically(file, object.dump(2) + "\n");
+  image::write_text_file_atomically(file, text);
 }
 
 }  // namespace impulse2d::golden

@@ -10,7 +10,8 @@
 ///   "state_hash": "0123456789abcdef",
 ///   "renderer": {"gl_renderer": "llvmpipe (LLVM 15.0.6, 256 bits)", "gl_version": "4.5 ..."},
 ///   "tolerance": {"max_channel_delta": 0, ...},            (optional; strict when absent)
-///   "bodies": [{"name": "body 0", "x": 0.0, "y": 1.5, "angle": 0.0}, ...],  (optional)
+///   "bodies": [{"name": "body 0", "x": 0.0, "y": 1.5, "angle": 0.0}, ...],  (optional;
+///              single precision, as the world holds them: 11.23 is read as 11.23f)
 ///   "noise": {...}   the golden's noise envelope (noise_envelope.h)             (optional)
 /// }
 
@@ -77,9 +78,9 @@ nlohmann::json sidecar_to_json(const Sidecar& sidecar);
 /// name it (default: the path as given). Throws `GoldenError` naming the file and field.
 Sidecar read_sidecar(const std::filesystem::path& file, const std::string& display_name = "");
 
-/// Writes a sidecar file atomically (pretty-printed, trailing newline). Throws
-/// `GoldenError`, writing nothing, when `read_sidecar` would reject the result (e.g. an
-/// empty scene name) or the write fails.
+/// Writes a sidecar file atomically (pretty-printed, trailing newline; shortest numbers, body
+/// poses as floats). Throws `GoldenError`, writing nothing, for a non-finite number, when
+/// `read_sidecar` would reject the result (e.g. an empty scene name) or the write fails.
 void write_sidecar(const std::filesystem::path& file, const Sidecar& sidecar);
 
 }  // namespace impulse2d::golden

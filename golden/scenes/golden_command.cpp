@@ -1,9 +1,6 @@
 /// @file golden_command.cpp
-#include "image/png.h"
 #include "golden/scenes/golden_command.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -12,31 +9,33 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
-#include <stdexcept>
+#include <set>
 
-#include "scene/usage_error.h"
-#include "render/frame_renderer.h"
 #include "golden/error.h"
-#include "image/file_io.h"
-#include "image/hex_hash.h"
+#include "golden/json_output.h"
 #include "golden/junit.h"
+#include "golden/pending_output.h"
 #include "golden/report.h"
+#include "golden/staged_update.h"
 #include "golden/update_mode.h"
-#include "golden/scenes/golden_block.h"
+#include "golden/scenes/golden_plan.h"
 #include "golden/scenes/noise_probe.h"
 #include "golden/scenes/scene_frame.h"
-
-extern char** environ;
+#include "golden/scenes/second_process.h"
+#include "image/file_io.h"
+#include "image/hex_hash.h"
+#include "image/png.h"
+#include "render/frame_renderer.h"
+#include "scene/interrupt.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::golden {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-/// The file that marks a directory as this command's report, so a run may empty it.
-constexpr const char* kReportMarker = ".impulse2d-golden-report";
 
 /// One renderer per frame size, created on first use.
 class Renderers {
@@ -51,58 +50,9 @@ class Renderers {
   std::map<std::pair<int, int>, std::unique_ptr<render::FrameRenderer>> renderers_;
 };
 
-/// Runs `arguments` as a child process and waits; returns its exit status (-1: not run).
-int run_child(const std::vector<std::string>& arguments) {
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-  pid_t child = 0;
-  if (::posix_spawn(&child, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  int status = 0;
-  if (::waitpid(child, &status, 0) != child) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-/// `impulse2d golden frame` of `spec` in a child process.
-FrameProducer other_process_producer(const std::string& executable, const GoldenSpec& spec) {
-  return [executable, spec] {
-    const fs::path directory =
-        fs::temp_directory_path() / ("impulse2d-golden-" + std::to_string(::getpid()));
-    fs::create_directories(directory);
-    const fs::path png = directory / "frame.png";
-    const int status = run_child(
-        {executable, "golden", "frame", spec.scene_file, spec.name, "--out", png.string()});
-    ProducedFrame frame;
-    std::optional<std::uint64_t> hash;
-    if (status == 0 && fs::exists(png)) {
-      frame.image = image::load_png(png);
-      hash = image::parse_hex_hash(image::read_text_file(png.string() + ".hash"));
-    }
-    std::error_code ignored;
-    fs::remove_all(directory, ignored);
-    if (!hash) {
-      throw GoldenError("golden '" + spec.id() + "': the second process (" + executable +
-                        " golden frame) failed with status " + std::to_string(status));
-    }
-    frame.state_hash = *hash;
-    return frame;
-  };
-}
-
-/// Empties the report directory of an earlier run (only one this command made) and writes
-/// this run's metadata into it.
-void prepare_report(const fs::path& root, const GoldenCommandArguments& arguments) {
-  if (fs::exists(root)) {
-    if (!fs::is_directory(root) ||
-        (!fs::is_empty(root) && !fs::exists(root / kReportMarker))) {
-      throw demos::UsageError("--report " + root.string() +
-                              ": exists and is not a golden report of an earlier run; choose "
-                              "another directory or remove it");
-    }
-    fs::remove_all(root);
-  }
-  fs::create_directories(root);
-  image::write_text_file_atomically(root / kReportMarker, "");
+/// Writes the marker and this run's metadata (run.json) into the report being built.
+void write_report_metadata(const fs::path& report, const GoldenCommandArguments& arguments) {
+  image::write_text_file_atomically(report / kReportMarker, "");
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
@@ -113,68 +63,87 @@ void prepare_report(const fs::path& root, const GoldenCommandArguments& argument
                                            : "check, repeat " + std::to_string(arguments.repeat)},
                               {"date", date},
                               {"scene_files", files}};
-  image::write_text_file_atomically(root / "run.json", run.dump(2) + "\n");
+  const fs::path file = report / "run.json";
+  image::write_text_file_atomically(file, dump_json_for_file(run, file.string()));
 }
 
-/// `read_scene_goldens`, its errors as usage errors (bad input, exit status 2).
-SceneGoldens read_goldens(const std::string& file) {
-  try {
-    return read_scene_goldens(file);
-  } catch (const GoldenError& error) {
-    throw demos::UsageError(error.what());
-  }
-}
-
-int render_one_frame(const GoldenCommandArguments& arguments) {
-  if (arguments.files.size() != 1 || arguments.out.empty()) {
-    throw demos::UsageError("golden frame: give one scene file, a frame name and --out PNG");
-  }
-  const SceneGoldens goldens = read_goldens(arguments.files[0]);
-  for (const GoldenSpec& spec : goldens.frames) {
+int render_one_frame(const GoldenCommandArguments& arguments, const GoldenPlan& plan) {
+  for (const GoldenSpec& spec : plan.scenes[0].frames) {
     if (spec.name != arguments.frame) continue;
     Renderers renderers;
     const ProducedFrame frame = produce_scene_frame(spec, renderers.of(spec.width, spec.height));
     image::save_png(arguments.out, frame.image);
     image::write_text_file_atomically(arguments.out + ".hash", image::to_hex_hash(frame.state_hash));
-    return kGoldenPassed;
   }
-  throw demos::UsageError(arguments.files[0] + ": no golden frame named '" + arguments.frame +
-                          "'");
+  return kGoldenPassed;
 }
 
-int check_or_update(const GoldenCommandArguments& arguments, std::ostream& out) {
-  if (arguments.files.empty()) throw demos::UsageError("golden: give at least one scene file");
-  if (arguments.repeat != 1 && arguments.repeat != 2) {
-    throw demos::UsageError("--repeat " + std::to_string(arguments.repeat) + ": must be 1 or 2");
+/// Finishes or undoes, before anything reads them, the updates of `plan`'s golden folders
+/// that a killed process left half-done, and says so on `err`.
+void recover_interrupted_updates(const GoldenPlan& plan, std::ostream& err) {
+  std::set<fs::path> done;
+  for (const SceneGoldens& scene : plan.scenes) {
+    if (!done.insert(scene.golden_dir).second) continue;
+    const fs::path staging = scene.golden_dir / kStagingFolderName;
+    switch (recover_interrupted_update(scene.golden_dir)) {
+      case Recovery::RolledBack:
+        err << "impulse2d: golden: removed " << staging.string()
+            << ", left by an update that stopped before its commit (the goldens stayed as "
+               "they were)\n";
+        break;
+      case Recovery::RolledForward:
+        err << "impulse2d: golden: finished the commit of an update that stopped half-way ("
+            << staging.string() << "): the goldens are its new set\n";
+        break;
+      case Recovery::None:
+      case Recovery::Busy:
+        break;
+    }
   }
-  const bool update = arguments.action == "update";
-  if (update && is_ci(std::getenv("CI"))) {
-    throw demos::UsageError("golden update refused: CI is set, and CI never writes its own "
-                            "goldens; run it locally and commit the reviewed goldens");
-  }
-  std::vector<SceneGoldens> scenes;
-  for (const std::string& file : arguments.files) scenes.push_back(read_goldens(file));
+}
 
-  const fs::path root = arguments.report_dir;
-  prepare_report(root, arguments);
+/// The check or update itself: every file it writes is prepared beside its place (the new
+/// goldens in each golden folder's staging folder, the report as a hidden sibling, the JUnit
+/// file under a hidden name) and moved into place only when all are ready.
+int check_or_update(const GoldenCommandArguments& arguments, const GoldenPlan& plan,
+                    std::ostream& out) {
+  const bool update = arguments.action == "update";
+  std::map<fs::path, std::unique_ptr<StagedUpdate>> staged;
+  if (update) {
+    for (const SceneGoldens& scene : plan.scenes) {
+      auto& update_of_folder = staged[scene.golden_dir];
+      if (!update_of_folder) update_of_folder = std::make_unique<StagedUpdate>(scene.golden_dir);
+    }
+  }
+  PendingDirectory report(arguments.report_dir);
+  write_report_metadata(report.path(), arguments);
   Renderers renderers;
   std::vector<JUnitCase> cases;
   int failed = 0;
-  for (const SceneGoldens& scene : scenes) {
+  for (const SceneGoldens& scene : plan.scenes) {
     CheckSettings settings;
     settings.golden_dir = scene.golden_dir;
-    settings.artifact_root = root;
+    settings.artifact_root = report.path();
     settings.update_mode = !update ? UpdateMode::None
                            : arguments.all ? UpdateMode::All
                                            : UpdateMode::Changed;
     settings.repeat = arguments.repeat;
     settings.tolerance = scene.tolerance;
+    if (update) settings.write_dir = staged.at(scene.golden_dir)->path();
+    const fs::path second_process_folder =
+        update ? staged.at(scene.golden_dir)->scratch()
+               : fs::temp_directory_path() / ("impulse2d-golden-" + std::to_string(::getpid()));
     for (const GoldenSpec& spec : scene.frames) {
+      demos::check_interrupt();
       const auto start = std::chrono::steady_clock::now();
-      const CheckOutcome outcome = run_golden_check(
+      CheckOutcome outcome = run_golden_check(
           spec.id(), spec.scene, static_cast<int>(spec.step),
           scene_frame_producer(spec, renderers.of(spec.width, spec.height)), settings,
-          scene_noise_measurer(spec), other_process_producer(arguments.executable, spec));
+          scene_noise_measurer(spec),
+          other_process_producer(arguments.executable, spec, second_process_folder));
+      // Named as they will be once the report is in place.
+      if (!outcome.artifact_dir.empty()) outcome.artifact_dir = report.final_path(outcome.artifact_dir);
+      if (!outcome.report.empty()) outcome.report = report.final_path(outcome.report);
       JUnitCase test;
       test.classname = spec.scene;
       test.name = spec.name;
@@ -196,8 +165,16 @@ int check_or_update(const GoldenCommandArguments& arguments, std::ostream& out) 
       cases.push_back(std::move(test));
     }
   }
-  write_html_report(root);
-  if (!arguments.junit.empty()) write_junit(arguments.junit, "impulse2d golden", cases);
+  write_html_report(report.path());
+  std::optional<PendingFile> junit;
+  if (!arguments.junit.empty()) junit.emplace(arguments.junit, junit_xml("impulse2d golden", cases));
+  demos::check_interrupt();
+
+  // The commit: renames only. A signal from here on is acted on once it is done.
+  for (auto& [folder, update_of_folder] : staged) update_of_folder->commit();
+  if (junit) junit->commit();
+  report.commit();
+
   std::size_t physics_only = 0;
   for (const JUnitCase& test : cases) physics_only += test.skipped.empty() ? 0 : 1;
   out << cases.size() - failed << " of " << cases.size() << " goldens "
@@ -205,17 +182,55 @@ int check_or_update(const GoldenCommandArguments& arguments, std::ostream& out) 
   if (physics_only > 0) {
     out << " (" << physics_only << " by their physics only: no baseline for this renderer)";
   }
-  out << "; report: " << (root / "index.html").string() << "\n";
+  out << "; report: " << (fs::path(arguments.report_dir) / "index.html").string() << "\n";
   return failed == 0 ? kGoldenPassed : kGoldenFailed;
+}
+
+/// What an interrupted or failed run left, for its message.
+std::string nothing_changed(const GoldenCommandArguments& arguments) {
+  std::vector<std::string> kept;
+  if (arguments.action == "update") kept.push_back("the goldens");
+  kept.push_back("the report");
+  if (!arguments.junit.empty()) kept.push_back("the JUnit file");
+  std::string text = "; nothing was changed: ";
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    text += (i == 0 ? "" : i + 1 == kept.size() ? " and " : ", ") + kept[i];
+  }
+  return text + (kept.size() == 1 ? " is" : " are") +
+         " as they were (what was staged for them was removed)";
 }
 
 }  // namespace
 
+void dry_run_golden_command(const GoldenCommandArguments& arguments, std::ostream& out) {
+  print_golden_plan(arguments, plan_golden_command(arguments), out);
+}
+
 int run_golden_command(const GoldenCommandArguments& arguments, std::ostream& out,
                        std::ostream& err) {
   try {
-    if (arguments.action == "frame") return render_one_frame(arguments);
-    return check_or_update(arguments, out);
+    const GoldenPlan plan = plan_golden_command(arguments);
+    if (arguments.action == "frame") return render_one_frame(arguments, plan);
+    recover_interrupted_updates(plan, err);
+    int status = kGoldenFailed;
+    try {
+      status = check_or_update(arguments, plan, out);
+    } catch (const demos::Interrupted& interrupted) {
+      throw demos::Interrupted(interrupted.signal_number(),
+                               interrupted.what() + nothing_changed(arguments));
+    } catch (const GoldenError& error) {
+      throw GoldenError(error.what() + nothing_changed(arguments));
+    }
+    // A signal during the commit (renames only) is acted on once it is done.
+    const int signal_number = demos::pending_signal();
+    if (signal_number != 0) {
+      throw demos::Interrupted(signal_number, "interrupted by " + demos::signal_name(signal_number) +
+                                                  " after the run had finished and its files "
+                                                  "were in place");
+    }
+    return status;
+  } catch (const demos::Interrupted&) {
+    throw;
   } catch (const demos::UsageError& error) {
     err << "impulse2d: golden: " << error.what() << "\n";
     return kGoldenBadInput;

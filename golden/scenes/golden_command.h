@@ -12,6 +12,8 @@
 ///   two) into PNG and its state hash into PNG.hash.
 /// Failures leave their artifacts and index.html in `--report DIR` (default
 /// golden_artifacts), which holds only this run's results; `--junit FILE` writes JUnit XML.
+/// An update is a transaction (staged_update.h): an interrupted or failed one leaves the
+/// whole old set of goldens, a finished one the whole new set.
 
 #include <iosfwd>
 #include <string>
@@ -40,9 +42,18 @@ inline constexpr int kGoldenFailed = 1;
 /// Exit status: bad usage or input (nothing checked or written).
 inline constexpr int kGoldenBadInput = 2;
 
-/// Runs the command; progress and verdicts to `out`, errors to `err`. Every scene file is
-/// read and validated before any frame is rendered or any file written.
+/// Runs the command; progress and verdicts to `out`, errors to `err`. Every scene file and
+/// output path is validated before any frame is rendered or any file written
+/// (`plan_golden_command`). Every file a check or update writes (goldens, report, JUnit) is
+/// prepared beside its place and moved in only when the whole run has succeeded: a failed
+/// write or a signal leaves them all as they were. Throws `demos::Interrupted` on SIGINT,
+/// SIGTERM or SIGHUP (the second process ended and every staged file removed first).
 int run_golden_command(const GoldenCommandArguments& arguments, std::ostream& out,
                        std::ostream& err);
+
+/// `--dry-run`: runs the checks a run makes before any work and prints the plan (scene
+/// files, goldens, the files it would write); renders and writes nothing. Throws
+/// `demos::UsageError` as the run would fail with exit status 2.
+void dry_run_golden_command(const GoldenCommandArguments& arguments, std::ostream& out);
 
 }  // namespace impulse2d::golden
