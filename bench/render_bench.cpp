@@ -108,7 +108,7 @@ FrameOptions overlay_options(std::uint32_t flags) {
 HudInfo hud_for(std::int64_t frame) {
   HudInfo info;
   info.scene_name = "bin1000";
-  info.frame = frame;
+  info.step = frame;
   return info;
 }
 

@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
     options.trails = &trails;
     HudInfo hud;
     hud.scene_name = "overlays";
-    hud.frame = kSteps;
+    hud.step = kSteps;
     image::save_png(output, renderer.render(world, camera, options, hud));
   } catch (const std::exception& error) {
     std::fprintf(stderr, "render_example: %s\n", error.what());

@@ -128,12 +128,11 @@ std::vector<OverlayName> overlay_cover(std::uint32_t flags, bool composites) {
 }
 
 std::string overlay_list(std::uint32_t flags) {
-  if (flags == 0) return "none";
   std::string text;
   for (const OverlayName& each : overlay_cover(flags, true)) {
     text += (text.empty() ? "" : ", ") + std::string(each.name);
   }
-  return text;
+  return text.empty() ? "none" : text;  // shapes alone are no overlay
 }
 
 std::pair<int, int> contact_sheet_size(int frame_count, const ContactSheetOptions& options) {
@@ -191,6 +190,7 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
     }
     frame_options.show_legend = frames.empty() && run.scene().view.show_legend;  // on the first tile
     render::HudInfo hud;
+    hud.step = step;
     update_view_frame(run, frame_options, hud);
     frames.push_back(tiles.render(run.world(), frame_camera(camera, run), frame_options, hud));
     labels.push_back(step_label(step, run.world().time()));

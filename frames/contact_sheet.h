@@ -50,7 +50,8 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
 std::vector<OverlayName> overlay_cover(std::uint32_t flags, bool composites);
 
 /// "normals, penetration" for a set of `DebugDrawFlag`s, by the overlay names `--overlays`
-/// takes (the widest names first: "contacts" rather than its four parts); "none" for 0.
+/// takes (the widest names first: "contacts" rather than its four parts); "none" when no
+/// overlay is on (shapes alone, or 0).
 std::string overlay_list(std::uint32_t flags);
 
 }  // namespace impulse2d::demos

@@ -152,7 +152,8 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
       if (!options.trails.empty()) record_trails(options.trails, run.world(), trails);
     }
     check_interrupt();
-    hud.frame = frame_step;
+    hud.step = frame_step;
+    hud.frame_index = result.frame_count;  // the file's number
     update_view_frame(run, frame_options, hud);
     render::Frame frame = writer ? writer->take_spare_frame() : render::Frame{};
     renderer.render(run.world(), frame_camera(camera, run), frame_options, hud, frame);

@@ -225,7 +225,7 @@ void draw_boundary_sheet(const Stressor& stressor, const StabilityCell& cell,
     render::HudInfo hud;
     hud.scene_name = stressor.name + " " + value_text(values[side]) + " " + stressor.unit + ", " +
                      method_label(cell.method) + ": " + (side == 0 ? "passes" : "fails");
-    hud.frame = steps;
+    hud.step = steps;
     const render::Frame frame = renderer.render(simulation.world(), camera, options, hud);
     for (int y = 0; y < tile_height; ++y) {
       std::copy_n(frame.rgba.begin() + static_cast<std::ptrdiff_t>(y) * tile_width * 4, tile_width * 4,

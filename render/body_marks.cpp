@@ -2,6 +2,7 @@
 #include "render/body_marks.h"
 
 #include "core/world.h"
+#include "render/label_placement.h"
 #include "render/primitive_renderer.h"
 
 #include <algorithm>
@@ -18,13 +19,20 @@ void draw_bounding_boxes(PrimitiveRenderer& renderer, const World& world, Color 
 void draw_body_labels(PrimitiveRenderer& renderer, const World& world, const DebugDrawOptions& options,
                       const BodyLabeler& labeler) {
   const float alpha = std::clamp(options.interpolation_alpha, 0.0f, 1.0f);
+  const PrimitiveStyle& marks = renderer.style();
+  // Clear of the centre-of-mass dot (`World::draw`'s, 5 px at frame scale 1) by two font pixels.
+  const float clearance = 2.5f * marks.point_scale + 2.0f * static_cast<float>(marks.label_scale);
   for (const BodyId id : world.body_ids()) {
     const std::uint32_t slot = id.index;
     const BodyView body = world.body(id);
     const vec2 centre = body.previous_position * (1.0f - alpha) + body.transform.position * alpha;
     std::string label = labeler ? labeler(slot) : std::string();
     if (label.empty()) label = std::to_string(slot);
-    renderer.draw_text(centre, label, options.palette.label);
+    // Opposite the velocity arrow (screen y points down); up and to the right at rest.
+    const vec2 away = body.type == BodyType::Static ? vec2(0.0f)
+                                                     : vec2(-body.linear_velocity.x, body.linear_velocity.y);
+    draw_label_beside(renderer, renderer.camera().world_to_pixel(centre), away, clearance, label,
+                      options.palette.label);
   }
 }
 

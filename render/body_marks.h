@@ -27,8 +27,9 @@ constexpr Color highlight_color{0.95f, 0.05f, 0.55f, 1.0f};
 /// box (`World::draw` would draw four segments each for `draw_aabbs`).
 void draw_bounding_boxes(PrimitiveRenderer& renderer, const World& world, Color color);
 
-/// Writes each living body's label (`labeler`'s name, else its slot index) at its drawn centre
-/// (interpolated by `options.interpolation_alpha`) in `options.palette.label`.
+/// Writes each living body's label (`labeler`'s name, else its slot index) beside its drawn
+/// centre (interpolated by `options.interpolation_alpha`) in `options.palette.label`: clear of
+/// the centre-of-mass dot, on the side away from its velocity arrow (up and to the right at rest).
 void draw_body_labels(PrimitiveRenderer& renderer, const World& world, const DebugDrawOptions& options,
                       const BodyLabeler& labeler);
 

@@ -26,13 +26,19 @@ void check_size(const char* caller, int width, int height) {
 }  // namespace
 
 Camera Camera::fit(const Aabb& bounds, int width, int height, float margin_pixels) {
+  return fit_between_bands(bounds, width, height, margin_pixels, 0.0f, 0.0f);
+}
+
+Camera Camera::fit_between_bands(const Aabb& bounds, int width, int height, float margin_pixels, float top_pixels,
+                                 float bottom_pixels) {
   check_size("Camera::fit", width, height);
   if (!is_finite(bounds.lower) || !is_finite(bounds.upper) || !std::isfinite(margin_pixels) ||
-      margin_pixels < 0.0f) {
-    throw RenderError("Camera::fit: bounds and margin must be finite (margin >= 0)");
+      margin_pixels < 0.0f || !std::isfinite(top_pixels) || !std::isfinite(bottom_pixels) || top_pixels < 0.0f ||
+      bottom_pixels < 0.0f) {
+    throw RenderError("Camera::fit: bounds, margin and bands must be finite (margin and bands >= 0)");
   }
   const float usable_width = static_cast<float>(width) - 2.0f * margin_pixels;
-  const float usable_height = static_cast<float>(height) - 2.0f * margin_pixels;
+  const float usable_height = static_cast<float>(height) - 2.0f * margin_pixels - top_pixels - bottom_pixels;
   if (usable_width <= 0.0f || usable_height <= 0.0f) {
     throw RenderError("Camera::fit: margin of " + std::to_string(margin_pixels) +
                       " pixels leaves no room in a " + std::to_string(width) + "x" +
@@ -47,7 +53,10 @@ Camera Camera::fit(const Aabb& bounds, int width, int height, float margin_pixel
   } else if (extent.y > 0.0f) {
     zoom = usable_height / extent.y;
   }
-  return Camera(0.5f * (bounds.lower + bounds.upper), zoom, width, height);
+  // The bounds' centre goes to the middle of the space between the bands: (top - bottom) / 2
+  // pixels below the image centre.
+  const vec2 shift(0.0f, 0.5f * (top_pixels - bottom_pixels) / zoom);
+  return Camera(0.5f * (bounds.lower + bounds.upper) + shift, zoom, width, height);
 }
 
 Camera Camera::centered(vec2 center, float pixels_per_metre, int width, int height) {

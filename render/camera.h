@@ -22,6 +22,12 @@ class Camera {
   /// side. Zero-size bounds get 50 pixels per metre. Throws `RenderError` when the image is
   /// smaller than twice the margin, or for non-finite bounds.
   static Camera fit(const Aabb& bounds, int width, int height, float margin_pixels = 16.0f);
+  /// As `fit`, into the image less a band `top_pixels` tall along its top edge and one
+  /// `bottom_pixels` tall along its bottom edge (kept free for the HUD and legend): `bounds`
+  /// whole and centred in what is left, at least `margin_pixels` from its every side. Throws
+  /// `RenderError` when the bands and margins leave no room, or for non-finite values.
+  static Camera fit_between_bands(const Aabb& bounds, int width, int height, float margin_pixels,
+                                  float top_pixels, float bottom_pixels);
   /// A camera with `center` (metres) at the image centre and `pixels_per_metre` zoom (> 0).
   /// Throws `RenderError` for a non-positive size or zoom, or non-finite values.
   static Camera centered(vec2 center, float pixels_per_metre, int width, int height);

@@ -2,6 +2,7 @@
 #include "render/contact_overlay.h"
 
 #include "core/world.h"
+#include "render/label_placement.h"
 #include "render/primitive_renderer.h"
 
 #include <algorithm>
@@ -52,26 +53,50 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
   if (flags == 0 && !style.feature_ids) return;
   const DebugPalette& palette = options.palette;
   const float s = static_cast<float>(std::max(scale, 1));
-  const float metre_per_pixel = 1.0f / renderer.camera().pixels_per_metre();
+  const float pixels_per_metre = renderer.camera().pixels_per_metre();
+  const float metre_per_pixel = 1.0f / pixels_per_metre;
   const float max_arrow = style.max_arrow_pixels * s;
-  const float offset = style.arrow_offset_pixels * s * metre_per_pixel;
   const float min_bar = style.min_penetration_pixels * s * metre_per_pixel;
   const float bar_width = style.penetration_bar_pixels * s;
-  auto draw_contact = [&](const Contact& contact, bool dimmed) {
-    if (!contact.enabled) return;
+  const PrimitiveStyle& marks = renderer.style();
+  // Where a bar is drawn the arrows stand clear of it: half the bar, half an arrow head and a line.
+  const float clear_of_bar = 0.5f * bar_width + 0.5f * marks.arrow_head_width + marks.line_width;
+  const auto bar_half_length = [&](const ContactPoint& point) {  // metres; 0 without a bar
+    if (!(flags & draw_penetration) || point.depth <= 0.0f) return 0.0f;
+    return 0.5f * std::max(point.depth * options.penetration_scale, min_bar);
+  };
+  const auto for_each_contact = [&](const auto& draw_contact) {
+    for (const Contact& contact : world.contacts()) {
+      if (!contact.enabled) continue;
+      draw_contact(contact, sleeping_dynamic(world, contact.body_a) || sleeping_dynamic(world, contact.body_b));
+    }
+    for (const Contact& contact : world.sleeping_contacts()) {
+      if (contact.enabled) draw_contact(contact, true);
+    }
+  };
+  // Dots and penetration bars first, in a layer of their own: the arrows and ids go over them.
+  for_each_contact([&](const Contact& contact, bool dimmed) {
+    const float opacity = dimmed ? style.sleeping_opacity : 1.0f;
+    for (int i = 0; i < contact.point_count; ++i) {
+      const ContactPoint& point = contact.points[i];
+      if (flags & draw_contact_points) renderer.draw_point(point.point, 6.0f, faded(palette.contact_point, opacity));
+      const float half = bar_half_length(point);
+      if (half > 0.0f) {
+        renderer.draw_band(point.point - contact.normal * half, point.point + contact.normal * half, bar_width,
+                           faded(palette.penetration, opacity));
+      }
+    }
+  });
+  renderer.next_layer();
+  for_each_contact([&](const Contact& contact, bool dimmed) {
     const float opacity = dimmed ? style.sleeping_opacity : 1.0f;
     const vec2 normal = contact.normal;
     const vec2 tangent = right_perpendicular(normal);
     for (int i = 0; i < contact.point_count; ++i) {
       const ContactPoint& point = contact.points[i];
-      // The dot first: the penetration bar (narrower, longer) shows across it.
-      if (flags & draw_contact_points) {
-        renderer.draw_point(point.point, 6.0f * s, faded(palette.contact_point, opacity));
-      }
-      if ((flags & draw_penetration) && point.depth > 0.0f) {
-        const vec2 along = normal * (0.5f * std::max(point.depth * options.penetration_scale, min_bar));
-        renderer.draw_band(point.point - along, point.point + along, bar_width, faded(palette.penetration, opacity));
-      }
+      const float half = bar_half_length(point);
+      const float offset =
+          std::max(style.arrow_offset_pixels * s, half > 0.0f ? clear_of_bar : 0.0f) * metre_per_pixel;
       if (flags & draw_contact_normals) {
         const vec2 start = point.point - tangent * offset;
         draw_clamped_arrow(renderer, start, start + normal * options.normal_length,
@@ -82,22 +107,24 @@ void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugD
         draw_clamped_arrow(renderer, start, start + normal * (point.normal_impulse * options.impulse_scale),
                            faded(palette.normal_impulse, opacity), max_arrow);
       }
-      if (style.feature_ids) {
-        char text[16];
-        std::snprintf(text, sizeof(text), "%X", static_cast<unsigned>(point.feature_id));
-        renderer.draw_text(point.point + tangent * (2.0f * offset), text, faded(palette.label, opacity));
-      }
       if ((flags & draw_friction_impulses) && point.tangent_impulse != 0.0f) {
         draw_clamped_arrow(renderer, point.point,
                            point.point + tangent * (point.tangent_impulse * options.impulse_scale),
                            faded(palette.friction_impulse, opacity), max_arrow);
       }
+      if (style.feature_ids) {
+        // Behind the point (against the normal, where no arrow goes), clear of the bar and dot.
+        char text[16];
+        std::snprintf(text, sizeof(text), "%X", static_cast<unsigned>(point.feature_id));
+        const float clearance = std::max({half * pixels_per_metre, 3.0f * marks.point_scale,
+                                          0.5f * marks.arrow_head_width + marks.line_width}) +
+                                2.0f * s;
+        const vec2 anchor = renderer.camera().world_to_pixel(point.point);
+        draw_label_beside(renderer, anchor, vec2(-normal.x, normal.y), clearance, text,
+                          faded(palette.label, opacity));
+      }
     }
-  };
-  for (const Contact& contact : world.contacts()) {
-    draw_contact(contact, sleeping_dynamic(world, contact.body_a) || sleeping_dynamic(world, contact.body_b));
-  }
-  for (const Contact& contact : world.sleeping_contacts()) draw_contact(contact, true);
+  });
 }
 
 }  // namespace impulse2d::render

@@ -21,7 +21,8 @@ struct ContactOverlayStyle {
   /// Arrows (normals, impulses) longer than this are cut to it and get a break mark, pixels.
   float max_arrow_pixels = 120.0f;
   /// Normals start this far to one side of the contact point and normal impulses this far
-  /// to the other, so the two never hide each other, pixels.
+  /// to the other, so the two never hide each other, pixels; farther where a penetration bar
+  /// is drawn, so that neither touches it.
   float arrow_offset_pixels = 3.0f;
   /// Penetration bars shorter than this (after magnification) are drawn this long, pixels.
   float min_penetration_pixels = 8.0f;
@@ -30,7 +31,8 @@ struct ContactOverlayStyle {
   /// Opacity multiplier of the marks of a contact whose dynamic bodies all sleep or touch a
   /// sleeping body (Box2D's dimmed sleeping contacts), 0..1.
   float sleeping_opacity = 0.35f;
-  /// Also write each point's feature id (hexadecimal, as `ContactPoint::feature_id`) beside it.
+  /// Also write each point's feature id (hexadecimal, as `ContactPoint::feature_id`) beside it,
+  /// on the side its normal points away from.
   bool feature_ids = false;
 };
 
@@ -46,7 +48,9 @@ constexpr std::uint32_t contact_overlay_flags = draw_contact_points | draw_conta
 bool draw_clamped_arrow(PrimitiveRenderer& renderer, vec2 from, vec2 to, Color color, float max_pixels);
 
 /// Draws the contact overlays of `world` that are on in `options.flags` (with its palette and
-/// scales) at integer frame scale `scale`. Dimmed: the contacts the world keeps aside between
+/// scales) at integer frame scale `scale`: dots and penetration bars, then (in the next layer,
+/// over them) the arrows, which stand clear of a bar where there is one, and the feature ids,
+/// behind each point where no arrow goes. Dimmed: the contacts the world keeps aside between
 /// sleeping bodies (or a sleeping and a static one, `World::sleeping_contacts`) and those of an
 /// awake body on a sleeping one.
 void draw_contacts(PrimitiveRenderer& renderer, const World& world, const DebugDrawOptions& options,

@@ -19,10 +19,40 @@ PrimitiveStyle scaled_style(PrimitiveStyle style, int scale) {
   style.arrow_head_length *= s;
   style.arrow_head_width *= s;
   style.label_scale *= scale;
+  style.point_scale *= s;
   return style;
 }
 
 }  // namespace
+
+int frame_text_scale(const FrameOptions& options, int width, int height) {
+  return options.text_scale > 0 ? options.text_scale : frame_scale(width, height);
+}
+
+HudLayout frame_hud_layout(const World& world, const Camera& camera, const FrameOptions& options,
+                           const HudInfo& hud) {
+  const int width = camera.width();
+  const int height = camera.height();
+  const float scale = static_cast<float>(frame_scale(width, height));
+  HudText text;
+  if (options.show_hud) text = hud_text(hud, hud_counts(world));
+  std::vector<LegendEntry> entries;
+  std::vector<LegendEntry> notes;
+  if (options.show_legend) {
+    const ThemePalette palette = theme_palette(options.theme);
+    DebugDrawOptions draw_options = options.draw;
+    draw_options.palette = palette.debug;
+    const std::uint32_t drawn = drawn_overlay_flags(world, draw_options.flags);
+    const bool trails_on = options.trails != nullptr && !options.trails->empty();
+    entries = legend_entries(draw_options, drawn, trails_on, palette.trail);
+    if (options.islands) entries.push_back({island_color(0), "island"});
+    if (options.contacts.feature_ids && !world.contacts().empty()) entries.push_back({palette.debug.label, "feature id"});
+    if (options.highlight) entries.push_back({highlight_color, "highlight"});
+    notes = legend_notes(draw_options, drawn, camera, options.contacts.max_arrow_pixels * scale,
+                         options.contacts.min_penetration_pixels * scale);
+  }
+  return layout_hud(width, height, text, entries, notes, frame_text_scale(options, width, height));
+}
 
 FrameRenderer::FrameRenderer(int width, int height, const PrimitiveStyle& style)
     : FrameRenderer(create_offscreen_context(width, height), style) {}
@@ -66,7 +96,6 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   DebugDrawOptions draw_options = options.draw;
   draw_options.palette = palette.debug;
   const int scale = frame_scale(width(), height());
-  const int text_scale = options.text_scale > 0 ? options.text_scale : scale;
 
   context_->make_current();
   primitives_->begin(camera);
@@ -88,7 +117,7 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   primitives_->next_layer();
   draw_world(draw_broad_phase);
   draw_world(draw_velocities | draw_center_of_mass);
-  if (options.islands) draw_islands(*primitives_, world, scale);
+  if (options.islands) draw_islands(*primitives_, world);
   primitives_->next_layer();
   draw_contacts(*primitives_, world, draw_options, options.contacts, scale);
   primitives_->next_layer();
@@ -97,30 +126,10 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   if (options.extra_overlays) options.extra_overlays(*primitives_, draw_options);
   primitives_->next_layer();
   if (options.highlight) draw_highlight(*primitives_, world, *options.highlight, scale);
-  const bool trails_on = options.trails != nullptr && !options.trails->empty();
-  if (trails_on) options.trails->draw(*primitives_, palette.trail);
+  if (options.trails != nullptr && !options.trails->empty()) options.trails->draw(*primitives_, palette.trail);
   primitives_->next_layer();
   if (options.show_hud || options.show_legend) {
-    std::vector<std::string> lines;
-    if (options.show_hud) {
-      HudCounts counts;
-      counts.simulated_time = world.time();
-      counts.body_count = world.body_count();
-      counts.contact_count = static_cast<int>(world.contacts().size());
-      for (const Contact& contact : world.contacts()) counts.contact_point_count += contact.point_count;
-      counts.sleeping_contact_count = static_cast<int>(world.sleeping_contacts().size());
-      lines = hud_lines(hud, counts);
-    }
-    std::vector<LegendEntry> legend;
-    if (options.show_legend) {
-      legend = legend_entries(draw_options, camera, trails_on, palette.trail,
-                              options.contacts.max_arrow_pixels * static_cast<float>(scale),
-                              options.contacts.min_penetration_pixels * static_cast<float>(scale));
-      if (options.islands) legend.push_back({island_color(0), "islands (one colour each)"});
-      if (options.contacts.feature_ids) legend.push_back({palette.debug.label, "contact feature ids (hex)"});
-      if (options.highlight) legend.push_back({highlight_color, "highlighted body"});
-    }
-    draw_hud(*primitives_, lines, legend, palette, text_scale);
+    draw_hud(*primitives_, frame_hud_layout(world, camera, options, hud), palette);
   }
   primitives_->finish(palette.background);
   context_->read_pixels(frame);

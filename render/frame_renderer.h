@@ -18,6 +18,7 @@
 #include "render/contact_overlay.h"
 #include "render/frame.h"
 #include "render/hud.h"
+#include "render/hud_layout.h"
 #include "render/island_overlay.h"
 #include "render/palette.h"
 #include "render/primitive_renderer.h"
@@ -42,9 +43,8 @@ struct FrameOptions {
   /// Overlay flags and arrow scales. Its `palette` is replaced by the theme's.
   DebugDrawOptions draw;
   Theme theme = Theme::Light;  ///< background, outlines and overlay colours
-  bool show_hud = true;        ///< scene, frame, simulated time and counts, top-left
-  /// Colour key of the overlays that are on: top-right, or another corner that leaves the HUD
-  /// readable (`layout_hud`).
+  bool show_hud = true;        ///< scene, step, simulated time and counts: one line, top-left
+  /// Colour key of the overlays drawn in the frame: short entries, bottom-left (`layout_hud`).
   bool show_legend = true;
   /// Integer magnification of HUD, legend and label text (1 = 7 px capitals); 0 = the frame's
   /// `frame_scale` (1 up to 959 px on the shorter side, 6 at 4000x3000).
@@ -64,6 +64,16 @@ struct FrameOptions {
   /// it can use the theme's palette and scales.
   std::function<void(DebugDraw&, const DebugDrawOptions&)> extra_overlays;
 };
+
+/// The integer text magnification of a width x height frame drawn with `options`: its
+/// `text_scale`, else the frame's `frame_scale`.
+int frame_text_scale(const FrameOptions& options, int width, int height);
+
+/// Where the HUD and legend of `world` seen through `camera` with `options` and `hud` go, and
+/// what they say (`layout_hud`): what `FrameRenderer::render` draws, for tools and tests that
+/// need the panels' rectangles.
+HudLayout frame_hud_layout(const World& world, const Camera& camera, const FrameOptions& options,
+                           const HudInfo& hud);
 
 /// Owns an offscreen GL context and the primitive batch, and renders frames of a fixed size.
 /// Use it from the thread that created it. Frames depend only on their inputs: the same

@@ -64,7 +64,7 @@ Color island_color(int island) {
   return colors[static_cast<unsigned>(island) % 8u];
 }
 
-void draw_islands(PrimitiveRenderer& renderer, const World& world, int scale) {
+void draw_islands(PrimitiveRenderer& renderer, const World& world) {
   const std::vector<int> island = island_of_slots(world);
   for (const Contact& contact : world.contacts()) {
     if (!contact.enabled || contact.point_count == 0) continue;
@@ -78,10 +78,9 @@ void draw_islands(PrimitiveRenderer& renderer, const World& world, int scale) {
         island[b] >= 0 ? world.body(contact.body_b).transform.position : contact.points[0].point;
     renderer.draw_segment(from, to, island_color(which));
   }
-  const float dot = 5.0f * static_cast<float>(std::max(scale, 1));
   for (const BodyId id : world.body_ids()) {
     const int which = island[id.index];
-    if (which >= 0) renderer.draw_point(world.body(id).transform.position, dot, island_color(which));
+    if (which >= 0) renderer.draw_point(world.body(id).transform.position, 5.0f, island_color(which));
   }
 }
 

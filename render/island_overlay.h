@@ -26,8 +26,8 @@ std::vector<int> island_of_slots(const World& world);
 Color island_color(int island);
 
 /// Draws each island in its colour: a line from body to body (or to the contact point, for a
-/// contact with a non-dynamic body) per enabled contact, and a dot of 5 x `scale` pixels on
-/// each dynamic body's centre.
-void draw_islands(PrimitiveRenderer& renderer, const World& world, int scale);
+/// contact with a non-dynamic body) per enabled contact, and a dot of 5 pixels at frame scale 1
+/// (`PrimitiveStyle::point_scale` scales it) on each dynamic body's centre.
+void draw_islands(PrimitiveRenderer& renderer, const World& world);
 
 }  // namespace impulse2d::render

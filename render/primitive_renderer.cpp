@@ -645,7 +645,7 @@ void PrimitiveRenderer::draw_arrow(vec2 from, vec2 to, Color color) {
 }
 
 void PrimitiveRenderer::draw_point(vec2 position, float size_pixels, Color color) {
-  push_disc(position, 0.5f * size_pixels, color, 0.0f, Color{});
+  push_disc(position, 0.5f * size_pixels * style_.point_scale, color, 0.0f, Color{});
 }
 
 void PrimitiveRenderer::draw_text(vec2 position, const std::string& text, Color color) {

@@ -27,6 +27,7 @@ struct PrimitiveStyle {
   float arrow_head_length = 7.0f;  ///< at most half the arrow's length
   float arrow_head_width = 6.0f;   ///< full width of the head at its base
   int label_scale = 1;             ///< integer magnification of `draw_text` labels (1 = 7 px caps)
+  float point_scale = 1.0f;        ///< factor on `draw_point` sizes (dots are given at frame scale 1)
   /// Largest primitive, in pixels across, drawn as one point sprite (the driver's limit
   /// also applies); larger ones are quads. The pixels are the same either way.
   float max_point_sprite = 255.0f;

@@ -55,7 +55,7 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
       run, draw, spec.dark_theme ? render::Theme::Dark : render::Theme::Light);
   render::HudInfo hud;
   hud.scene_name = demos::scene_title(scene);
-  hud.frame = spec.step;
+  hud.step = spec.step;
   demos::update_view_frame(run, options, hud);
   const render::Frame frame =
       renderer.render(run.world(), demos::frame_camera(camera, run), options, hud);

@@ -84,7 +84,7 @@ TEST_P(BuiltinScene, BuildsUnderItsModelStepsAndRenders) {
   options.draw = scene.view.draw;
   render::HudInfo hud;
   hud.scene_name = scene.name;
-  hud.frame = steps;
+  hud.step = steps;
   const render::Frame frame = renderer.render(run.world(), camera, options, hud);
   ASSERT_EQ(frame.width, 160);
   std::set<std::uint32_t> colours;

@@ -43,17 +43,16 @@ int last_inked_column(const Frame& frame, int row) {
   return last;
 }
 
-// Every HUD line a frame can have: long scene name, big counts, the settings and timings lines.
-std::vector<std::string> worst_hud_lines() {
+// The longest HUD a frame has without extra lines: long scene title, big counts.
+HudText worst_hud() {
   HudInfo info = support::hud("random_polygons - 5 kinds, 40 bodies", 99999);
-  info.extra_lines = {"accumulated  dt 0.01667 s x1  iterations 16/3  warm on  sleep on",
-                      "ms: broad 0.12 narrow 0.34 solve 1.20 integ 0.05 pos 0.30 = 2.01"};
+  info.frame_index = 33333;
   HudCounts counts;
   counts.simulated_time = 999.999;
   counts.body_count = 1000;
   counts.contact_count = 2000;
   counts.contact_point_count = 4000;
-  return hud_lines(info, counts);
+  return hud_text(info, counts);
 }
 
 }  // namespace
@@ -108,66 +107,64 @@ TEST(RenderOverlays, LinesAndTextGrowWithTheFrame) {
   EXPECT_GE(small, 2);
   EXPECT_GE(large, 4 * small - 2);
   // Text: the HUD panel of a 4000x3000 frame is 6 times that of a 320x240 one.
-  const std::vector<std::string> lines = {"frame 00001", "t = 0.000 s"};
-  const HudLayout small_hud = layout_hud(320, lines, {}, frame_scale(320, 240));
-  const HudLayout large_hud = layout_hud(4000, lines, {}, frame_scale(4000, 3000));
+  const HudText text{{"frame 00001", "t = 0.000 s"}, {}};
+  const HudLayout small_hud = layout_hud(320, 240, text, {}, {}, frame_scale(320, 240));
+  const HudLayout large_hud = layout_hud(4000, 3000, text, {}, {}, frame_scale(4000, 3000));
   EXPECT_FLOAT_EQ(large_hud.hud.height, 6.0f * small_hud.hud.height);
 }
 
-TEST(RenderOverlays, LegendNeverCoversTheHudAt320x240AndLarger) {
+TEST(RenderOverlays, HudAndLegendStayInTheirBandsWithinTheAreaBudget) {
   DebugDrawOptions options;
-  options.flags = draw_all;
   options.penetration_scale = 10.0f;
-  const std::vector<std::string> lines = worst_hud_lines();
+  const HudText hud = worst_hud();
   const std::vector<std::pair<int, int>> sizes = {{320, 240}, {400, 300}, {640, 480}, {800, 600},
                                                   {1024, 768}, {1920, 1080}, {3840, 2160}, {4000, 3000}};
   for (const auto& [width, height] : sizes) {
     const int scale = frame_scale(width, height);
     const Camera camera = Camera::centered(vec2(0.0f), 40.0f, width, height);
-    for (const bool trails : {false, true}) {
-      const std::vector<LegendEntry> legend =
-          legend_entries(options, camera, trails, Color{}, 120.0f * static_cast<float>(scale),
-                         8.0f * static_cast<float>(scale));
-      for (std::size_t hud_lines = 2; hud_lines <= lines.size(); ++hud_lines) {
-        const std::vector<std::string> shown(lines.begin(), lines.begin() + static_cast<long>(hud_lines));
-        const HudLayout layout = layout_hud(width, shown, legend, scale);
-        const std::string where = std::to_string(width) + "x" + std::to_string(height) + " with " +
-                                  std::to_string(hud_lines) + " HUD lines";
-        EXPECT_FALSE(layout.hud.empty()) << where;
-        EXPECT_FALSE(layout.legend.empty()) << where;
-        EXPECT_FALSE(layout.hud.overlaps(layout.legend)) << where;
-        if (hud_lines == 2) {  // the default HUD: the legend fits on the frame too
-          EXPECT_LE(layout.legend.top + layout.legend.height, static_cast<float>(height)) << where;
-        }
-        EXPECT_LE(layout.hud.width, static_cast<float>(width)) << where;
-      }
-    }
+    const PanelBands bands = panel_bands(scale);
+    const std::vector<LegendEntry> entries = legend_entries(options, draw_all, false, Color{});
+    const std::vector<LegendEntry> notes = legend_notes(options, draw_all, camera, 120.0f * static_cast<float>(scale),
+                                                        8.0f * static_cast<float>(scale));
+    const HudLayout layout = layout_hud(width, height, hud, entries, notes, scale);
+    const std::string where = std::to_string(width) + "x" + std::to_string(height);
+    EXPECT_FALSE(layout.hud.overlaps(layout.legend)) << where;
+    EXPECT_LE(layout.hud.top + layout.hud.height, bands.top) << where;
+    EXPECT_GE(layout.legend.top, static_cast<float>(height) - bands.bottom) << where;
+    EXPECT_LE(layout.hud.width, static_cast<float>(width)) << where;
+    EXPECT_LE(layout.legend.width, static_cast<float>(width)) << where;
+    EXPECT_LE(layout.hud.area() + layout.legend.area(),
+              panel_area_budget * static_cast<float>(width) * static_cast<float>(height))
+        << where;
+    EXPECT_EQ(layout.hud_lines.size(), 1u) << where;
+    EXPECT_EQ(layout.hud_lines[0].rfind("random_polygons", 0), 0u) << where;
+    EXPECT_NE(layout.hud_lines[0].find("step 99999"), std::string::npos) << where;
   }
 }
 
-TEST(RenderOverlays, HudLinesWrapAtSpacesToTheFrameWidth) {
-  const std::vector<std::string> wrapped =
-      wrap_lines({"aaaa bbbb  cccc", "dddd"}, text_width("aaaa bbbb") + 1.0f);
-  ASSERT_EQ(wrapped.size(), 3u);
-  EXPECT_EQ(wrapped[0], "aaaa bbbb");
-  EXPECT_EQ(wrapped[1], "cccc");
-  EXPECT_EQ(wrapped[2], "dddd");
-  EXPECT_EQ(wrap_lines({"averyveryverylongword"}, 12.0f), std::vector<std::string>{"averyveryverylongword"});
-  // The tutorial's title at 320x240 keeps its frame counter on screen.
-  const HudLayout layout = layout_hud(
-      320, {"tutorial - left: no friction | right: friction  frame 00300", "t = 5.000 s"}, {}, 1);
-  for (const std::string& line : layout.hud_lines) EXPECT_LE(text_width(line) + 12.0f, 320.0f) << line;
-  bool counter_whole = false;
-  for (const std::string& line : layout.hud_lines) counter_whole |= line.find("frame 00300") != std::string::npos;
-  EXPECT_TRUE(counter_whole);
+TEST(RenderOverlays, HudLineDropsTheDescriptionThenTrailingFieldsToFit) {
+  const HudText text{{"tutorial - left: no friction | right: friction", "step 300", "frame 100", "t = 5.000 s",
+                      "bodies 38", "contacts 14 (19 points)"},
+                     {}};
+  const HudLayout small = layout_hud(320, 240, text, {}, {}, 1);
+  ASSERT_EQ(small.hud_lines.size(), 1u);
+  EXPECT_EQ(small.hud_lines[0].rfind("tutorial  step 300  frame 100", 0), 0u) << small.hud_lines[0];
+  EXPECT_LE(text_width(small.hud_lines[0]) + 2.0f * hud_panel_padding, 320.0f);
+  const HudLayout wide = layout_hud(1600, 1200, text, {}, {}, 1);
+  EXPECT_NE(wide.hud_lines[0].find("no friction"), std::string::npos);
+  EXPECT_NE(wide.hud_lines[0].find("contacts 14"), std::string::npos);
 }
 
-TEST(RenderOverlays, LegendStaysTopRightWhenItFitsBesideTheHud) {
-  const std::vector<std::string> lines = {"scene  frame 00001", "t = 0.000 s"};
-  const std::vector<LegendEntry> legend = {{Color{}, "contact points"}};
-  const HudLayout layout = layout_hud(800, lines, legend, 1);
-  EXPECT_EQ(layout.legend.top, 0.0f);
-  EXPECT_FLOAT_EQ(layout.legend.left + layout.legend.width, 800.0f);
+TEST(RenderOverlays, LegendRowsAreBalancedAndNotesGoWhenTheyDoNotFit) {
+  const std::vector<LegendEntry> entries(8, LegendEntry{Color{}, "normal"});
+  const std::vector<LegendEntry> notes = {{Color{}, "a long note about the scale of the arrows", false}};
+  const HudLayout wide = layout_hud(1600, 1200, HudText{}, entries, notes, 1);
+  EXPECT_EQ(wide.legend_entries.size(), 9u);
+  EXPECT_FLOAT_EQ(wide.legend.top + wide.legend.height, 1200.0f);
+  const HudLayout narrow = layout_hud(160, 120, HudText{}, entries, notes, 1);
+  EXPECT_EQ(narrow.legend_entries.size(), 8u);  // the note would need a third row
+  // Two rows of four: the second row starts with the fifth entry, at the left edge.
+  EXPECT_EQ(narrow.legend_entries[4].text_top, narrow.legend_entries[0].text_top + hud_row_pitch);
 }
 
 TEST(RenderOverlays, ContactMarksDrawNormalsBesideImpulsesAndRestingPenetration) {
@@ -291,7 +288,7 @@ TEST(RenderOverlays, SleepingContactsAreDrawnDimmedAndCountedInTheHud) {
   HudCounts counts;
   counts.contact_count = 0;
   counts.sleeping_contact_count = 3;
-  EXPECT_NE(hud_lines(support::hud("s", 0), counts)[1].find("+ 3 sleeping"), std::string::npos);
+  EXPECT_NE(hud_text(support::hud("s", 0), counts).fields.back().find("+ 3 sleeping"), std::string::npos);
   counts.sleeping_contact_count = 0;
-  EXPECT_EQ(hud_lines(support::hud("s", 0), counts)[1].find("sleeping"), std::string::npos);
+  EXPECT_EQ(hud_text(support::hud("s", 0), counts).fields.back().find("sleeping"), std::string::npos);
 }

@@ -137,40 +137,48 @@ TEST(RenderWorld, WallClockFiguresOnlyWhenAsked) {
   HudInfo info = impulse2d::render::testing::hud("stack", 90);
   const auto joined = [&] {
     std::string text;
-    for (const std::string& line : hud_lines(info, counts)) text += line + "\n";
+    for (const std::string& field : hud_text(info, counts).fields) text += field + "|";
     return text;
   };
   const std::string without = joined();
-  EXPECT_NE(without.find("stack  frame 00090"), std::string::npos) << without;
-  EXPECT_NE(without.find("t = 1.500 s"), std::string::npos) << without;
-  EXPECT_NE(without.find("bodies 7"), std::string::npos) << without;
-  EXPECT_NE(without.find("contacts 3 (5 points)"), std::string::npos) << without;
-  EXPECT_EQ(without.find("ms"), std::string::npos) << without;
-  EXPECT_EQ(without.find("frames/s"), std::string::npos) << without;
+  EXPECT_EQ(without, "stack|step 90|t = 1.500 s|bodies 7|contacts 3 (5 points)|") << without;
+  info.frame_index = 90;  // the same as the step: not repeated
+  EXPECT_EQ(joined(), without);
+  info.frame_index = 30;
+  EXPECT_NE(joined().find("step 90|frame 30|"), std::string::npos) << joined();
   info.step_milliseconds = 1.25;
   info.frames_per_second = 75.0;
   const std::string with = joined();
-  EXPECT_NE(with.find("step 1.25 ms"), std::string::npos) << with;
+  EXPECT_NE(with.find("last step 1.25 ms"), std::string::npos) << with;
   EXPECT_NE(with.find("75.0 frames/s"), std::string::npos) << with;
 }
 
-TEST(RenderWorld, LegendListsTheOverlaysThatAreOnWithScales) {
+TEST(RenderWorld, LegendListsTheOverlaysDrawnWithScalesInItsNotes) {
   DebugDrawOptions options;
-  options.flags = draw_shapes | draw_normal_impulses | draw_velocities;
   options.impulse_scale = 0.5f;
   options.velocity_scale = 0.1f;
   const Camera camera = Camera::centered(vec2(0.0f), 25.0f, 100, 100);  // 50 px = 2 m
-  const std::vector<LegendEntry> entries = legend_entries(options, camera, false, Color{}, 120.0f, 4.0f);
-  ASSERT_EQ(entries.size(), 3u);
-  EXPECT_EQ(entries[0].label, "normal impulses (50 px = 4 N s)");
-  EXPECT_EQ(entries[1].label, "velocities (50 px = 20 m/s)");
-  EXPECT_EQ(entries[2].label, "contact arrows cut at 120 px, marked //");
-  EXPECT_EQ(legend_entries(options, camera, true, Color{}, 120.0f, 4.0f).back().label, "motion trails");
-  options.flags = draw_all;
-  EXPECT_EQ(legend_entries(options, camera, false, Color{}, 120.0f, 4.0f).size(), 12u);
-  options.flags = draw_penetration;
+  const std::uint32_t drawn = draw_shapes | draw_normal_impulses | draw_velocities;
+  const std::vector<LegendEntry> entries = legend_entries(options, drawn, false, Color{});
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].label, "impulse");
+  EXPECT_EQ(entries[1].label, "velocity");
+  const std::vector<LegendEntry> notes = legend_notes(options, drawn, camera, 120.0f, 4.0f);
+  ASSERT_EQ(notes.size(), 3u);
+  EXPECT_EQ(notes[0].label, "impulse 50 px = 4 N s");
+  EXPECT_EQ(notes[1].label, "velocity 50 px = 20 m/s");
+  EXPECT_EQ(notes[2].label, "arrows cut at 120 px //");
+  EXPECT_FALSE(notes[0].swatch);
+  EXPECT_EQ(legend_entries(options, drawn, true, Color{}).back().label, "trail");
+  EXPECT_EQ(legend_entries(options, draw_all, false, Color{}).size(), 11u);
   options.penetration_scale = 10.0f;
-  EXPECT_EQ(legend_entries(options, camera, false, Color{}, 240.0f, 8.0f)[0].label, "penetration (x10, >= 8 px)");
+  EXPECT_EQ(legend_notes(options, draw_penetration, camera, 240.0f, 8.0f)[0].label, "depth x10, >= 8 px");
+  // Only what the world draws: a world without contacts has no contact entries.
+  World world;
+  BodyDef ground;
+  ground.type = BodyType::Static;
+  world.create_body(ground, make_box({2.0f, 0.5f}));
+  EXPECT_EQ(drawn_overlay_flags(world, draw_all), draw_shapes | draw_aabbs | draw_center_of_mass | draw_body_ids);
 }
 
 TEST(RenderWorld, MotionTrailsDrawTheRecordedPath) {

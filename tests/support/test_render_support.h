@@ -17,7 +17,7 @@ namespace impulse2d::render::testing {
 inline HudInfo hud(const std::string& scene_name, std::int64_t frame) {
   HudInfo info;
   info.scene_name = scene_name;
-  info.frame = frame;
+  info.step = frame;
   return info;
 }
 
