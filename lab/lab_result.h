@@ -44,8 +44,4 @@ std::string csv_line(const LabResult& result);
 /// "<file>:<line>: <reason>".
 std::vector<LabResult> parse_csv(const std::string& text, const std::string& file);
 
-/// Writes `text` to `path` through a temporary file renamed into place (nothing half-written).
-/// Throws `std::runtime_error` naming the path when it cannot.
-void write_file_atomically(const std::string& path, const std::string& text);
-
 }  // namespace impulse2d::lab

@@ -10,6 +10,7 @@
 
 #include "lab/instruction_counter.h"
 #include "lab/lab_peers.h"
+#include "scene/interrupt.h"
 
 namespace impulse2d::lab {
 namespace {
@@ -108,6 +109,7 @@ std::vector<LabResult> run_sweep(const std::vector<LabScenario>& scenarios,
   std::int64_t done = 0;
   for (int repeat = 0; repeat < options.repeats; ++repeat) {
     for (Job& job : jobs) {
+      demos::check_interrupt();
       if (!job.exception.empty()) {
         ++done;
         continue;
@@ -121,6 +123,8 @@ std::vector<LabResult> run_sweep(const std::vector<LabScenario>& scenarios,
         if (run.instructions > 0) job.instructions_per_step.push_back(run.instructions / steps);
         if (repeat == 0) job.first = run;
         else if (run.hash != job.first.hash) job.nondeterministic = true;
+      } catch (const demos::Interrupted&) {
+        throw;  // a signal stops the sweep, it does not fail a run
       } catch (const std::exception& error) {
         job.exception = error.what();
       }

@@ -44,6 +44,7 @@ struct SweepOptions {
 };
 
 /// Runs the sweep and returns one result per configuration of this shard, fronts marked.
+/// Throws `demos::Interrupted` when SIGINT, SIGTERM or SIGHUP arrives.
 std::vector<LabResult> run_sweep(const std::vector<LabScenario>& scenarios,
                                  const SweepOptions& options);
 

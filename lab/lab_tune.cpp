@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <sstream>
 
 #include "lab/engine_simulation.h"
+#include "lab/json_number.h"
 
 namespace impulse2d::lab {
 namespace {
@@ -66,9 +66,10 @@ double compare(const Trajectory& run, const Trajectory& reference, TuneMetric me
 }
 
 /// Median wall-clock microseconds per simulated second of each method, repeats interleaved.
+/// `after_run` is called after each run.
 std::vector<double> time_methods(const demos::Scene& scene, const demos::Params& params,
                                  const std::vector<LabMethod>& methods, double duration,
-                                 int repeats) {
+                                 int repeats, const std::function<void()>& after_run) {
   std::vector<std::vector<double>> samples(methods.size());
   for (int repeat = 0; repeat < repeats; ++repeat) {
     for (std::size_t i = 0; i < methods.size(); ++i) {
@@ -79,6 +80,7 @@ std::vector<double> time_methods(const demos::Scene& scene, const demos::Params&
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       samples[i].push_back(seconds * 1e6 / duration);
+      after_run();
     }
   }
   std::vector<double> medians;
@@ -91,12 +93,6 @@ std::vector<double> time_methods(const demos::Scene& scene, const demos::Params&
   return medians;
 }
 
-std::string number(double value) {
-  std::ostringstream text;
-  text.precision(9);
-  text << value;
-  return text.str();
-}
 
 }  // namespace
 
@@ -167,30 +163,45 @@ double tune_error(const demos::Scene& scene, const demos::Params& params, const 
                  record(scene, params, reference, duration), metric);
 }
 
+std::int64_t tune_runs(std::size_t candidates, int repeats) {
+  const auto methods = static_cast<std::int64_t>(candidates) + 2;
+  return methods + methods * repeats;
+}
+
 TuneResult tune_scene(const demos::Scene& scene, const demos::Params& params,
                       const TuneOptions& options) {
+  const std::vector<LabMethod> candidates = tune_candidates(scene, options.quick);
+  std::int64_t done = 0;
+  std::int64_t total = tune_runs(candidates.size(), options.repeats);
+  const auto after_run = [&]() {
+    if (options.progress) options.progress(++done, total);
+  };
   TuneResult result;
   result.reference.method = tune_reference(scene);
   result.scene_default.method = scene_method(scene);
   const Trajectory reference = record(scene, params, result.reference.method, options.duration);
+  after_run();
   result.scene_default.error =
       compare(record(scene, params, result.scene_default.method, options.duration), reference,
               options.metric);
+  after_run();
   std::vector<LabMethod> timed{result.reference.method, result.scene_default.method};
   std::vector<std::size_t> timed_candidates;
-  for (const LabMethod& method : tune_candidates(scene, options.quick)) {
+  for (const LabMethod& method : candidates) {
     TuneCandidate candidate;
     candidate.method = method;
     candidate.error = compare(record(scene, params, method, options.duration), reference,
                               options.metric);
+    after_run();
     if (candidate.error <= options.max_error) {
       timed_candidates.push_back(result.candidates.size());
       timed.push_back(method);
     }
     result.candidates.push_back(candidate);
   }
+  total = done + static_cast<std::int64_t>(timed.size()) * options.repeats;
   const std::vector<double> costs =
-      time_methods(scene, params, timed, options.duration, options.repeats);
+      time_methods(scene, params, timed, options.duration, options.repeats, after_run);
   result.reference.us_per_simulated_second = costs[0];
   result.scene_default.us_per_simulated_second = costs[1];
   for (std::size_t i = 0; i < timed_candidates.size(); ++i) {
@@ -204,31 +215,36 @@ TuneResult tune_scene(const demos::Scene& scene, const demos::Params& params,
   return result;
 }
 
-std::string tuned_settings_json(const LabMethod& method, const demos::SceneModel& model) {
-  std::ostringstream json;
-  json << "\"settings\": {\"solver\": \"" << solver_name(method.solver) << "\", \"time_step\": "
-       << number(method.time_step) << ", \"substeps\": " << method.substeps
-       << ", \"position_correction\": \"" << correction_name(method.position_correction)
-       << "\", \"speculative_margin\": " << number(method.speculative_margin)
-       << ", \"integrator\": \"" << integrator_name(method.integrator)
-       << "\", \"warm_starting\": " << (method.warm_starting ? "true" : "false")
-       << ", \"block_solver\": " << (method.block_solver ? "true" : "false")
-       << ", \"shock_propagation\": " << (method.shock_propagation ? "true" : "false")
-       << ", \"friction_mixing\": \"" << friction_mixing_name(method.friction_mixing)
-       << "\", \"restitution_mixing\": \"" << restitution_mixing_name(method.restitution_mixing)
-       << "\"},\n\"model\": {\"shapes\": [";
-  std::string shapes;
-  if (model.circles) shapes += "\"circle\"";
-  if (model.boxes) shapes += std::string(shapes.empty() ? "" : ", ") + "\"box\"";
-  if (model.polygons) shapes += std::string(shapes.empty() ? "" : ", ") + "\"polygon\"";
-  const auto flag = [](bool on) { return on ? "true" : "false"; };
-  json << shapes << "], \"rotation\": " << flag(model.rotation)
-       << ", \"friction\": " << flag(model.friction)
-       << ", \"restitution\": " << flag(model.restitution) << ", \"ccd\": " << flag(model.ccd)
-       << ", \"sleeping\": " << flag(model.sleeping)
-       << ", \"velocity_iterations\": " << method.velocity_iterations
-       << ", \"position_iterations\": " << method.position_iterations << "}";
-  return json.str();
+nlohmann::ordered_json tuned_settings(const LabMethod& method, const demos::SceneModel& model) {
+  nlohmann::ordered_json settings;
+  settings["solver"] = solver_name(method.solver);
+  settings["time_step"] = json_number(method.time_step, "settings.time_step");
+  settings["substeps"] = method.substeps;
+  settings["position_correction"] = correction_name(method.position_correction);
+  settings["speculative_margin"] = json_number(method.speculative_margin, "settings.speculative_margin");
+  settings["integrator"] = integrator_name(method.integrator);
+  settings["warm_starting"] = method.warm_starting;
+  settings["block_solver"] = method.block_solver;
+  settings["shock_propagation"] = method.shock_propagation;
+  settings["friction_mixing"] = friction_mixing_name(method.friction_mixing);
+  settings["restitution_mixing"] = restitution_mixing_name(method.restitution_mixing);
+  nlohmann::ordered_json shapes = nlohmann::ordered_json::array();
+  if (model.circles) shapes.push_back("circle");
+  if (model.boxes) shapes.push_back("box");
+  if (model.polygons) shapes.push_back("polygon");
+  nlohmann::ordered_json switches;
+  switches["shapes"] = shapes;
+  switches["rotation"] = model.rotation;
+  switches["friction"] = model.friction;
+  switches["restitution"] = model.restitution;
+  switches["ccd"] = model.ccd;
+  switches["sleeping"] = model.sleeping;
+  switches["velocity_iterations"] = method.velocity_iterations;
+  switches["position_iterations"] = method.position_iterations;
+  nlohmann::ordered_json answer;
+  answer["settings"] = settings;
+  answer["model"] = switches;
+  return answer;
 }
 
 }  // namespace impulse2d::lab

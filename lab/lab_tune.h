@@ -3,6 +3,8 @@
 /// "Model no more than a scene needs": the cheapest method whose run stays within an error bound
 /// of a tight reference run of the same scene (4x smaller time step, 4 substeps, 32 iterations).
 
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -25,7 +27,13 @@ struct TuneOptions {
   double duration = 10.0;            ///< simulated seconds
   bool quick = false;                ///< a smaller search space
   int repeats = 3;                   ///< timed repeats per passing candidate (interleaved)
+  /// Called after each run with (runs done, runs at most); may be empty.
+  std::function<void(std::int64_t, std::int64_t)> progress;
 };
+
+/// Runs `tune_scene` makes at most with `candidates` candidates and `repeats` repeats: the
+/// reference, the scene's own method and each candidate once, then every one of them timed.
+std::int64_t tune_runs(std::size_t candidates, int repeats);
 
 /// One candidate of the search.
 struct TuneCandidate {
@@ -59,7 +67,8 @@ double tune_error(const demos::Scene& scene, const demos::Params& params, const 
 TuneResult tune_scene(const demos::Scene& scene, const demos::Params& params,
                       const TuneOptions& options);
 
-/// The `settings` and `model` JSON objects of `method` for a scene file with `model` switches.
-std::string tuned_settings_json(const LabMethod& method, const demos::SceneModel& model);
+/// `{"settings": {...}, "model": {...}}` of `method` for a scene file with `model` switches, ready
+/// to paste (float settings in their shortest form: a time step of 1/60 s as 0.016666668).
+nlohmann::ordered_json tuned_settings(const LabMethod& method, const demos::SceneModel& model);
 
 }  // namespace impulse2d::lab

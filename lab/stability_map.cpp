@@ -15,6 +15,7 @@
 #include "render/camera.h"
 #include "render/frame_renderer.h"
 #include "image/png.h"
+#include "scene/interrupt.h"
 
 namespace impulse2d::lab {
 namespace {
@@ -107,6 +108,7 @@ std::vector<StabilityCell> run_stability_map(const std::vector<Stressor>& stress
       std::size_t passed = 0;
       std::string reason;
       for (; passed < stressor.ladder.size(); ++passed) {
+        demos::check_interrupt();
         ++cell.runs;
         if (!stress_passes(stressor, stressor.ladder[passed], method, &reason)) break;
       }
@@ -122,6 +124,7 @@ std::vector<StabilityCell> run_stability_map(const std::vector<Stressor>& stress
         for (int i = 0; i < bisections; ++i) {
           const double middle = between(stressor, cell.last_pass, cell.first_fail);
           if (middle == cell.last_pass || middle == cell.first_fail) break;
+          demos::check_interrupt();
           ++cell.runs;
           std::string middle_reason;
           if (stress_passes(stressor, middle, method, &middle_reason)) {

@@ -36,7 +36,8 @@ bool stress_passes(const Stressor& stressor, double value, const LabMethod& meth
                    std::string* reason);
 
 /// Finds every cell's boundary (`bisections` halvings between the last pass and first fail).
-/// `progress` (may be empty) is called with (cells done, cells in total).
+/// `progress` (may be empty) is called with (cells done, cells in total). Throws
+/// `demos::Interrupted` when SIGINT, SIGTERM or SIGHUP arrives.
 std::vector<StabilityCell> run_stability_map(const std::vector<Stressor>& stressors,
                                              const std::vector<LabMethod>& methods, int bisections,
                                              const std::function<void(int, int)>& progress);

@@ -3,10 +3,8 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 
 #include "core/error.h"
 #include "core/material.h"
@@ -16,6 +14,7 @@
 #include "scene/overlays.h"
 #include "scene/scene_limits.h"
 #include "scene/usage_error.h"
+#include "scene/user_file.h"
 #include "scene/frame_selection.h"
 
 namespace impulse2d::demos {
@@ -677,26 +676,9 @@ Scene parse_scene(const std::string& text, const std::string& file) {
 }
 
 Scene load_scene_file(const std::string& path) {
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(path, error);
-  if (!std::filesystem::exists(status)) {
-    throw UsageError(path + ": cannot open the scene file (does it exist?)");
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    throw UsageError(path + ": not a regular file (a scene file must be a plain .json file)");
-  }
-  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
-  if (!error && bytes > static_cast<std::uintmax_t>(limits::max_scene_file_bytes)) {
-    throw UsageError(path + ": the scene file has " + std::to_string(bytes) +
-                     " bytes; the limit is " + std::to_string(limits::max_scene_file_bytes) +
-                     " (4 MiB)");
-  }
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw UsageError(path + ": cannot open the scene file (permission denied?)");
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (file.bad()) throw UsageError(path + ": cannot read the scene file");
-  return parse_scene(text.str(), path);
+  const UserFileKind scene_file{"scene file", "a plain .json file",
+                                static_cast<std::uintmax_t>(limits::max_scene_file_bytes), "4 MiB"};
+  return parse_scene(read_user_file(path, scene_file), path);
 }
 
 }  // namespace impulse2d::demos

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "lab/label_layout.h"
-#include "lab/lab_command.h"
+#include "lab/option_numbers.h"
 #include "lab/lab_result.h"
 #include "scene/usage_error.h"
 
@@ -118,7 +118,7 @@ TEST(LabResults, PlacedLabelsNeverOverlapEachOtherOrAPoint) {
 TEST(LabResults, ShardIsKOverN) {
   EXPECT_EQ(parse_shard("2/4"), std::make_pair(2, 4));
   EXPECT_EQ(parse_shard("1/1"), std::make_pair(1, 1));
-  for (const char* bad : {"0/4", "5/4", "2", "2/0", "a/b", "2/4x"}) {
+  for (const char* bad : {"0/4", "5/4", "2", "2/0", "a/b", "2/4x", " 1/ 2", "+1/2", "1/0x2", "1/2 "}) {
     EXPECT_THROW(parse_shard(bad), demos::UsageError) << bad;
   }
 }
