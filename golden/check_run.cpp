@@ -78,8 +78,8 @@ std::string CheckOutcome::message() const {
   }
   if (failure_class == FailureClass::None) return "golden '" + check.name + "' matches";
   std::string text = failure_message(check);
-  if (!artifact_dir.empty()) text += "\nartifacts: " + artifact_dir.string();
-  if (!report.empty()) text += "\nreport: " + report.string();
+  if (!artifact_dir.empty()) text += "\n  artifacts: " + artifact_dir.string();
+  if (!report.empty()) text += "\n  report: " + report.string();
   return text;
 }
 

@@ -4,6 +4,7 @@
 #include "golden/error.h"
 
 #include <limits>
+#include <nlohmann/json.hpp>
 
 namespace impulse2d::golden {
 
@@ -21,7 +22,7 @@ Tolerance tolerance_from_limits(const DiffLimits& limits, const std::string& ori
                       ": must be >= 0");
   }
   if (limits.max_diff_ratio && !(*limits.max_diff_ratio >= 0.0 && *limits.max_diff_ratio <= 1.0)) {
-    throw GoldenError("--max-diff-ratio " + std::to_string(*limits.max_diff_ratio) +
+    throw GoldenError("--max-diff-ratio " + nlohmann::json(*limits.max_diff_ratio).dump() +
                       ": must be in 0..1");
   }
   if (limits.max_diff_pixels || limits.max_diff_ratio) {

@@ -20,10 +20,15 @@ std::string image_text(const GoldenCheck& check) {
   return "Image: " + check.comparison->message();
 }
 
-/// ". Renderer differs: golden drawn by X, this run by Y" when the fingerprints differ.
+/// A failure message's next line: the verdict first, then one line per part (physics,
+/// bodies, image), indented under it.
+constexpr const char* kNextLine = "\n  ";
+
+/// "Renderer differs: golden drawn by X, this run by Y" on its own line when the
+/// fingerprints differ.
 std::string renderer_note(const GoldenCheck& check) {
   if (check.expected_renderer == check.actual_renderer) return "";
-  return ". Renderer differs: golden drawn by '" + check.expected_renderer.describe() +
+  return std::string(kNextLine) + "Renderer differs: golden drawn by '" + check.expected_renderer.describe() +
          "', this run by '" + check.actual_renderer.describe() + "'";
 }
 
@@ -106,25 +111,27 @@ std::string failure_message(const GoldenCheck& check) {
     case FailureClass::SimulationDiverged:
       text << "physics state hash is " << image::to_hex_hash(check.actual_state_hash)
            << ", the golden's sidecar has " << image::to_hex_hash(*check.expected_state_hash)
-           << ". Bodies that moved most: " << describe_drifts(check.moved_bodies) << ". "
+           << " (and no noise envelope: re-promote to get one)" << kNextLine
+           << "bodies that moved most: " << describe_drifts(check.moved_bodies) << kNextLine
            << image_text(check);
       break;
     case FailureClass::NumericalNoise:
       text << "physics state hash is " << image::to_hex_hash(check.actual_state_hash)
            << ", the golden's sidecar has " << image::to_hex_hash(*check.expected_state_hash)
-           << ", but " << check.noise->describe(kEscapesNamed)
-           << ": a chaotic scene amplified a rounding change (reordered arithmetic, another "
-              "compiler or flag). Review the images and promote. Bodies that moved most: "
-           << describe_drifts(check.moved_bodies) << ". " << image_text(check);
+           << ", but " << check.noise->describe(kEscapesNamed, kNextLine) << kNextLine
+           << "a chaotic scene amplified a rounding change (reordered arithmetic, another "
+              "compiler or flag): review the images and promote"
+           << kNextLine << "bodies that moved most: " << describe_drifts(check.moved_bodies)
+           << kNextLine << image_text(check);
       break;
     case FailureClass::BehaviourChanged:
       text << "physics state hash is " << image::to_hex_hash(check.actual_state_hash)
            << ", the golden's sidecar has " << image::to_hex_hash(*check.expected_state_hash)
            << ", and the run left the golden's noise envelope (what rounding-sized perturbations "
-              "do to this scene): "
-           << check.noise->describe(kEscapesNamed)
-           << ". A physics change, not rounding: fix it, or promote only if it was meant. "
-           << image_text(check);
+              "do to this scene):"
+           << kNextLine << check.noise->describe(kEscapesNamed, kNextLine) << kNextLine
+           << "a physics change, not rounding: fix it, or promote only if it was meant"
+           << kNextLine << image_text(check);
       break;
     case FailureClass::NoRendererBaseline:
       text << "physics checked and matches (state hash " << image::to_hex_hash(check.actual_state_hash)

@@ -71,7 +71,7 @@ std::string EnvelopeEscape::describe() const {
   return text.str();
 }
 
-std::string NoiseVerdict::describe(std::size_t count) const {
+std::string NoiseVerdict::describe(std::size_t count, const std::string& separator) const {
   if (escapes.empty()) {
     return "every body and quantity inside the noise envelope (" + std::to_string(compared) +
            " compared)";
@@ -95,7 +95,7 @@ std::string NoiseVerdict::describe(std::size_t count) const {
            " outside)";
   }
   if (!bodies.empty()) {
-    text += (text.empty() ? "bodies: " : "; bodies: ") + bodies + " (" +
+    text += (text.empty() ? "bodies: " : separator + "bodies: ") + bodies + " (" +
             std::to_string(bodies_outside) + " outside)";
   }
   return text;

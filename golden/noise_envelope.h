@@ -96,10 +96,10 @@ struct NoiseVerdict {
 
   /// True when nothing left the envelope.
   bool within() const { return escapes.empty(); }
-  /// "quantities: <the `count` worst whole-world escapes>; bodies: <the `count` worst body
-  /// escapes> (B bodies outside)", each part only when it has escapes; or "every body and
-  /// quantity inside the noise envelope (N compared)".
-  std::string describe(std::size_t count) const;
+  /// "quantities: <the `count` worst whole-world escapes><separator>bodies: <the `count`
+  /// worst body escapes> (B bodies outside)", each part only when it has escapes; or "every
+  /// body and quantity inside the noise envelope (N compared)".
+  std::string describe(std::size_t count, const std::string& separator = "; ") const;
 };
 
 /// Compares a run with the golden run: each body's pose at the frame (matched by name)

@@ -121,6 +121,10 @@ StagedUpdate::StagedUpdate(fs::path golden_dir)
                       " is locked); wait for it to finish");
   }
   std::error_code error;
+  for (fs::path missing = golden_dir_; !missing.empty() && !fs::exists(missing, error);
+       missing = missing.parent_path()) {
+    created_.push_back(missing);
+  }
   fs::create_directories(golden_dir_, error);
   if (error || !fs::create_directory(staging_, error) || error) {
     throw GoldenError("cannot create the staging folder '" + staging_.string() + "': " +
@@ -134,7 +138,10 @@ StagedUpdate::StagedUpdate(fs::path golden_dir)
 
 StagedUpdate::~StagedUpdate() {
   std::error_code ignored;
-  if (!committed_) fs::remove_all(staging_, ignored);
+  if (!committed_) {
+    fs::remove_all(staging_, ignored);
+    for (const fs::path& folder : created_) fs::remove(folder, ignored);  // only when empty
+  }
   ::close(lock_);
 }
 

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace impulse2d::golden {
 
@@ -53,7 +54,8 @@ class StagedUpdate {
   /// Throws `GoldenError` when another update holds the directory or the folder cannot be
   /// created.
   explicit StagedUpdate(std::filesystem::path golden_dir);
-  /// Removes the staging folder unless committed.
+  /// Removes the staging folder (and the golden directory when this update created it and
+  /// it is empty) unless committed.
   ~StagedUpdate();
   StagedUpdate(const StagedUpdate&) = delete;
   StagedUpdate& operator=(const StagedUpdate&) = delete;
@@ -75,6 +77,9 @@ class StagedUpdate {
  private:
   std::filesystem::path golden_dir_;
   std::filesystem::path staging_;
+  /// Folders this update created for the golden directory, deepest first (removed again,
+  /// when still empty, by an update that did not commit).
+  std::vector<std::filesystem::path> created_;
   int lock_ = -1;
   bool committed_ = false;
 };

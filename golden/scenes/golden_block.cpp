@@ -29,11 +29,22 @@ Tolerance read_tolerance(const FieldReader& block, const std::string& file) {
   const FieldReader tolerance(block.get("tolerance"), file, "golden.tolerance.");
   tolerance.reject_unknown({"threshold", "max_diff_pixels", "max_diff_ratio", "masks"});
   DiffLimits limits;
-  if (tolerance.has("threshold")) limits.threshold = tolerance.integer("threshold", 0);
+  if (tolerance.has("threshold")) {
+    limits.threshold = tolerance.integer("threshold", 0);
+    if (limits.threshold > 255) {
+      tolerance.fail("threshold", tolerance.get("threshold").dump() + " is out of range (0..255)");
+    }
+  }
   if (tolerance.has("max_diff_pixels")) {
     limits.max_diff_pixels = tolerance.integer("max_diff_pixels", 0);
   }
-  if (tolerance.has("max_diff_ratio")) limits.max_diff_ratio = tolerance.non_negative("max_diff_ratio");
+  if (tolerance.has("max_diff_ratio")) {
+    limits.max_diff_ratio = tolerance.number("max_diff_ratio");
+    if (!(*limits.max_diff_ratio >= 0.0 && *limits.max_diff_ratio <= 1.0)) {
+      tolerance.fail("max_diff_ratio",
+                     tolerance.get("max_diff_ratio").dump() + " is out of range (0..1)");
+    }
+  }
   if (tolerance.has("masks")) {
     const json& masks = tolerance.array("masks");
     for (std::size_t i = 0; i < masks.size(); ++i) {
@@ -41,12 +52,14 @@ Tolerance read_tolerance(const FieldReader& block, const std::string& file) {
       bool valid = mask.is_array() && mask.size() == 4;
       std::string text;
       for (std::size_t k = 0; valid && k < 4; ++k) {
-        valid = mask[k].is_number_integer();
+        valid = mask[k].is_number_integer() && mask[k].get<std::int64_t>() >= (k < 2 ? 0 : 1) &&
+                mask[k].get<std::int64_t>() <= 1'000'000'000;
         if (valid) text += (k == 0 ? "" : ",") + mask[k].dump();
       }
       if (!valid) {
         tolerance.fail("masks[" + std::to_string(i) + "]",
-                       "expected [x, y, width, height] (integers), got " + mask.dump());
+                       "expected [x, y, width, height] (integers; x, y >= 0; width, height >= "
+                       "1), got " + mask.dump());
       }
       limits.masks.push_back(text);
     }
