@@ -3,13 +3,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "scene/json_cursor.h"
+#include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 #include "scene/usage_error.h"
+#include "scene/user_file.h"
 
 namespace impulse2d::lab {
 namespace {
@@ -82,11 +82,10 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
 }  // namespace
 
 LabScenario load_lab_scenario(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw demos::UsageError(path + ": cannot read the scenario file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parse_lab_scenario(text.str(), path);
+  const demos::UserFileKind scenario_file{
+      "scenario file", "a plain .json file",
+      static_cast<std::uintmax_t>(demos::limits::max_scene_file_bytes), "4 MiB"};
+  return parse_lab_scenario(demos::read_user_file(path, scenario_file), path);
 }
 
 LabScenario parse_lab_scenario(const std::string& text, const std::string& path) {

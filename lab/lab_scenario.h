@@ -32,8 +32,9 @@ struct LabScenario {
   std::string source;       ///< path of the file
 };
 
-/// Reads and validates a scenario file. Throws `demos::UsageError` "<file>: <json path>:
-/// <reason>" for anything wrong, including a metric naming a body the scene does not have.
+/// Reads and validates a scenario file (a regular file of at most 4 MiB: a FIFO or a device is
+/// refused, not read). Throws `demos::UsageError` "<file>: <json path>: <reason>" for anything
+/// wrong, including a metric naming a body the scene does not have.
 LabScenario load_lab_scenario(const std::string& path);
 
 /// As `load_lab_scenario`, from text already read; `file` names it in messages and gives the
