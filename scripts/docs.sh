@@ -39,6 +39,10 @@ run "$cli" sheet shape_pairs --frames 24:24,60:60 --columns 2 --tile 640x480 \
 run "$cli" sheet platformer -f 40,150,190,214,350,455,486,556,760,1000,1040,1100 --columns 3 \
   --tile 480x300 -o docs/images/platformer_contact_sheet.png --quiet
 run "$build_dir/bench/render_example" docs/overlays.png
+small_dir="$(mktemp -d)"
+run "$cli" render shape_pairs --size 320x240 --overlays all -f 180 -o "$small_dir" --quiet
+cp "$small_dir/shape_pairs_00000.png" docs/overlays_small.png
+rm -r "$small_dir"
 if [ "$quick" -eq 0 ]; then
   run "$cli" lab -o docs/lab
   run bench/chart_solver.sh "$build_dir" docs/solver_speed_vs_accuracy.png
