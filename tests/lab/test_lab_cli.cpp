@@ -130,7 +130,7 @@ TEST_F(LabCliTest, BadInputExitsTwoWithAMessageAndWritesNothing) {
   EXPECT_NE(only.err.find("--only nosuch: no such scenario"), std::string::npos) << only.err;
   const Result tune = run("tune pyramid --max-error -1");
   EXPECT_EQ(tune.status, 2);
-  EXPECT_NE(tune.err.find("--max-error must be > 0"), std::string::npos) << tune.err;
+  EXPECT_NE(tune.err.find("--max-error '-1': expected a number in (0, 1000] m"), std::string::npos) << tune.err;
   const Result metric = run("tune pyramid --max-error 0.1 --metric nope");
   EXPECT_EQ(metric.status, 2);
   EXPECT_FALSE(fs::exists(dir_ / "out"));
@@ -139,7 +139,7 @@ TEST_F(LabCliTest, BadInputExitsTwoWithAMessageAndWritesNothing) {
 TEST_F(LabCliTest, TunePrintsJsonSettingsThatTheSceneLoaderAccepts) {
   const Result result = run("tune pyramid --param rows=6 --max-error 0.05 --duration 3 --quick --repeats 1");
   ASSERT_EQ(result.status, 0) << result.err;
-  const std::size_t open = result.out.find("{\n\"settings\"");
+  const std::size_t open = result.out.find("{\n  \"settings\"");
   ASSERT_NE(open, std::string::npos) << result.out;
   // Paste the printed settings into a scene file and load it.
   std::string scene = result.out.substr(open);
@@ -147,6 +147,8 @@ TEST_F(LabCliTest, TunePrintsJsonSettingsThatTheSceneLoaderAccepts) {
   std::ofstream(dir_ / "tuned.json") << scene;
   const Result trace = run("trace tuned.json --steps 2");
   EXPECT_EQ(trace.status, 0) << trace.err << scene;
+  // Float settings print in their shortest form (a 2 cm margin as 0.02, not 0.0199999996).
+  EXPECT_EQ(result.out.find("0.0199999"), std::string::npos) << result.out;
 }
 
 }  // namespace
