@@ -5,4 +5,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build
-build/impulse2d lab --out docs/lab "$@"
+# --clean: the new run replaces the one in docs/lab (all or nothing, at the end).
+build/impulse2d lab --clean --out docs/lab "$@"
