@@ -10,10 +10,12 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "app/command.h"
+#include "app/help_formatter.h"
 #include "app/parse_error_message.h"
 #include "demos/scene_registry.h"
 #include "frames/version.h"
@@ -86,8 +88,8 @@ int run_command(const std::vector<Command>& commands, const ProgramOptions& opti
     if (command.parser->parsed()) chosen = &command;
   }
   if (chosen != nullptr && chosen->renders) choose_backend(options.backend);
-  if (options.dry_run) {
-    if (chosen != nullptr && chosen->dry_run) chosen->dry_run(std::cout);
+  if (options.dry_run && chosen != nullptr) {
+    if (chosen->dry_run) chosen->dry_run(std::cout);
     return check_standard_output();
   }
   if (chosen == nullptr) {
@@ -108,6 +110,8 @@ int run_cli(int argc, char** argv) {
           default_scene().name + ") into out/,\nwith the overlays " + default_demo_overlays +
           ".\n`impulse2d help COMMAND` (or COMMAND --help) lists a command's options.",
       "impulse2d"};
+  // Set before the commands are added: each takes its parent's formatter.
+  app.formatter(std::make_shared<HelpFormatter>());
   app.require_subcommand(0, 1);
   // Options of the program (--quiet, --version) may also come after the command's name.
   app.fallthrough();

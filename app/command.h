@@ -60,7 +60,8 @@ Command add_tune_command(CLI::App& program, const ProgramOptions& options);
 inline constexpr const char* default_demo_overlays = "normals,impulses,penetration";
 
 /// No command: renders the default demo into out/ (replacing its earlier frames there) with
-/// `default_demo_overlays`, as `render <default scene> --overlays ... --clean` would.
+/// `default_demo_overlays`, as `render <default scene> --overlays ... --clean` would; with
+/// --dry-run, prints that render's plan instead.
 void render_default_demo(const ProgramOptions& options, std::ostream& out);
 
 }  // namespace impulse2d::demos

@@ -29,6 +29,11 @@ Command add_list_command(CLI::App& program, const ProgramOptions&) {
   Command command;
   command.parser =
       program.add_subcommand("list", "list the built-in scenes with their parameters and models");
+  command.dry_run = [](std::ostream& out) {
+    out << "dry run: list: the " << builtin_scenes().size()
+        << " built-in scenes with their models and parameters, to standard output\n"
+        << "nothing was run or written\n";
+  };
   command.run = [](std::ostream& out) {
     list_scenes(out);
     return 0;

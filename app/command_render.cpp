@@ -9,14 +9,19 @@
 
 #include "app/command.h"
 #include "app/scene_command.h"
+#include "app/strict_number_check.h"
 #include "app/view_options.h"
 #include "demos/scene_registry.h"
+#include "frames/frame_index.h"
 #include "frames/frame_plan.h"
 #include "frames/frame_sequence.h"
+#include "frames/html_viewer.h"
+#include "frames/overlay_variants.h"
 #include "frames/output_guard.h"
 #include "frames/progress.h"
 #include "frames/video_encoder.h"
-#include "scene/overlays.h"
+#include "render/frame_writer.h"
+#include "frames/contact_sheet.h"
 #include "scene/run_limits.h"
 #include "scene/usage_error.h"
 
@@ -58,14 +63,26 @@ void prepare_video_folder(const std::filesystem::path& video, OutputGuard& guard
   }
 }
 
-/// Renders a frame sequence (and optionally a video); prints where the frames went unless
-/// `arguments.quiet`.
-void render_scene(const RenderArguments& arguments, std::ostream& out) {
-  ResolvedScene resolved = resolve(arguments.scene);
+/// A render, checked and ready: what `render_scene` runs and `print_render_plan` describes.
+struct RenderJob {
+  ResolvedScene resolved;         ///< the scene, its parameters and length
+  FramePlan plan;                 ///< the steps drawn
+  FrameSequenceOptions options;   ///< looks and outputs
+  std::unique_ptr<SceneRun> run;  ///< the run, built and not yet stepped
+  std::vector<std::filesystem::path> replaced;  ///< earlier frames --clean replaces
+};
+
+/// Every check a render makes before any work, in the order the run made them; the run and
+/// --dry-run both start here, so they cannot disagree. Throws `UsageError` for bad input and
+/// `std::runtime_error` for an output that cannot be written or a missing ffmpeg.
+RenderJob prepare_render(const RenderArguments& arguments) {
+  RenderJob job;
+  job.resolved = resolve(arguments.scene);
+  ResolvedScene& resolved = job.resolved;
   apply_view_arguments(arguments.view, resolved.scene);
-  const FramePlan plan = plan_frames(
-      arguments.frames ? *arguments.frames : resolved.scene.view.frames, resolved.steps);
-  FrameSequenceOptions options;
+  job.plan = plan_frames(arguments.frames ? *arguments.frames : resolved.scene.view.frames,
+                         resolved.steps);
+  FrameSequenceOptions& options = job.options;
   std::tie(options.width, options.height) = parse_size(arguments.size, "--size");
   if (static_cast<std::int64_t>(options.width) * options.height > limits::max_frame_pixels) {
     throw UsageError("--size " + arguments.size + ": " +
@@ -75,10 +92,12 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
   }
   options.clean = arguments.clean;
   options.draw = resolved.scene.view.draw;
-  if (arguments.overlays) options.draw.flags = parse_overlays(*arguments.overlays);
+  if (arguments.overlays) options.draw.flags = parse_overlays_option(*arguments.overlays);
   options.theme = theme_of(arguments.theme);
   options.directory = arguments.out;
-  if (arguments.threads < 1 || arguments.threads > 64) throw UsageError("--threads must be 1..64");
+  if (arguments.threads < 1 || arguments.threads > 64) {
+    throw UsageError("--threads " + std::to_string(arguments.threads) + ": must be 1..64");
+  }
   options.writer_threads = arguments.threads;
   if (arguments.trails) options.trails = parse_trails(*arguments.trails, "--trails");
   options.write_frames = !arguments.no_frames;
@@ -107,26 +126,83 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
                           format_param_value(value);
   }
 
-  const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
-  check_trails(options.trails, *run, "--trails");
-  check_view_bodies(arguments.view, *run);
+  job.run = start_run(resolved, arguments.scene);
+  check_trails(options.trails, *job.run, "--trails");
+  check_view_bodies(arguments.view, *job.run);
+  check_camera(arguments.view, *job.run, options.width, options.height);
+  job.replaced = check_sequence_output(resolved.scene.name, options);
+  return job;
+}
+
+/// The PNG bytes of `count` frames, as a range in megabytes: these frames of flat colours
+/// compress to 0.04-0.9 bytes a pixel (800x600 measured: pyramid 20 KB, ball_pit with every
+/// overlay 410 KB). "3..60 MB".
+std::string approximate_size(std::int64_t count, const FrameSequenceOptions& options) {
+  const double pixels = static_cast<double>(count) * options.width * options.height;
+  const auto megabytes = [](double bytes) {
+    return bytes < 1e6 ? std::string("<1") : std::to_string(static_cast<std::int64_t>(bytes / 1e6 + 0.5));
+  };
+  return megabytes(0.04 * pixels) + ".." + megabytes(0.9 * pixels) + " MB";
+}
+
+/// What a render of `job` would do, for --dry-run: the scene, the steps drawn, the frame
+/// size and the files it would write.
+void print_render_plan(const RenderJob& job, std::ostream& out) {
+  const FrameSequenceOptions& options = job.options;
+  const std::string& name = job.resolved.scene.name;
+  const std::int64_t count = static_cast<std::int64_t>(job.plan.frames.size());
+  out << "dry run: render " << name << " (" << job.resolved.scene.source << ")\n"
+      << "  parameters: "
+      << (job.resolved.params.specs().empty() ? "none" : job.resolved.params.summary()) << "\n"
+      << "  steps: " << job.plan.steps << " of " << job.resolved.steps << "\n"
+      << "  frames: " << count << ": " << describe_frame_steps(job.plan) << "\n"
+      << "  frame size: " << options.width << "x" << options.height
+      << ", overlays: " << overlay_list(options.draw.flags) << ", theme " << render::theme_name(options.theme) << "\n";
+  if (options.write_frames) {
+    const int digits = frame_number_digits(count);
+    out << "  writes: " << render::frame_file_path(options.directory, name, 0, digits).string()
+        << " .. " << render::frame_file_path(options.directory, name, count - 1, digits).string()
+        << ", " << frame_index_path(options.directory, name).string();
+    if (options.html) {
+      out << ", " << html_viewer_path(options.directory, name).string() << ", "
+          << overlay_variants_path(options.directory, name).string() << "/";
+    }
+    out << "\n  size: " << approximate_size(count, options)
+        << " of PNG (0.04-0.9 bytes a pixel, by how busy the frames are)\n";
+    if (!job.replaced.empty()) {
+      out << "  replaces: " << job.replaced.size() << " files of an earlier run (--clean)\n";
+    }
+  }
+  if (options.video) {
+    out << "  video: " << options.video->string() << " ("
+        << (options.frames_per_second ? format_param_value(*options.frames_per_second) + " fps"
+                                      : std::string("real time"))
+        << ")\n";
+  }
+  out << "nothing was run or written\n";
+}
+
+/// Renders a frame sequence (and optionally a video); prints where the frames went unless
+/// `quiet`.
+void render_scene(RenderJob& job, bool quiet, std::ostream& out) {
+  const FrameSequenceOptions& options = job.options;
   OutputGuard video_folder;
   if (options.video) prepare_video_folder(*options.video, video_folder);
   std::unique_ptr<Progress> progress;
-  if (!arguments.quiet) {
-    progress = std::make_unique<Progress>(
-        resolved.scene.name, static_cast<std::int64_t>(plan.frames.size()), stderr,
-        is_terminal(stderr));
+  if (!quiet) {
+    progress = std::make_unique<Progress>(job.resolved.scene.name,
+                                          static_cast<std::int64_t>(job.plan.frames.size()),
+                                          stderr, is_terminal(stderr));
   }
   const FrameSequenceResult result = render_frame_sequence(
-      *run, plan, options, [&](std::int64_t done) {
+      *job.run, job.plan, options, [&](std::int64_t done) {
         if (progress) progress->update(done);
       });
   if (progress) progress->finish();
   video_folder.commit();
-  warn_divergences(*run);
-  if (arguments.quiet) return;
-  out << "wrote " << result.frame_count << " frames of " << resolved.scene.name;
+  warn_divergences(*job.run);
+  if (quiet) return;
+  out << "wrote " << result.frame_count << " frames of " << job.resolved.scene.name;
   if (options.write_frames) {
     out << " to " << options.directory.string() << "/ (" << result.first_file.string() << " .. "
         << result.last_file.string() << ", index " << result.index_file.string();
@@ -136,6 +212,16 @@ void render_scene(const RenderArguments& arguments, std::ostream& out) {
   }
   if (options.video) out << " to " << options.video->string();
   out << "\n";
+}
+
+/// The run or, with --dry-run, the plan of `arguments`.
+void render_or_plan(const RenderArguments& arguments, bool dry_run, std::ostream& out) {
+  RenderJob job = prepare_render(arguments);
+  if (dry_run) {
+    print_render_plan(job, out);
+  } else {
+    render_scene(job, arguments.quiet, out);
+  }
 }
 
 }  // namespace
@@ -149,8 +235,9 @@ Command add_render_command(CLI::App& program, ProgramOptions& options) {
       "--frames,-f", render->frames,
       "steps to draw: A:B[:k] ranges, comma-separated (step n = the world after n steps)");
   command->add_option("--steps", render->scene.steps,
-                      "length of the run in steps (default: the scene's)");
-  command->add_option("--size,-s", render->size, "frame size WxH in pixels")
+                      "length of the run in steps (default: the scene's)")
+      ->check(whole_number_check());
+  command->add_option("--size,-s", render->size, "frame size WxH in pixels, each side 16..8192")
       ->capture_default_str();
   command->add_option("--overlays", render->overlays, overlay_help());
   command->add_option("--theme", render->theme, "light or dark")->capture_default_str();
@@ -170,10 +257,12 @@ Command add_render_command(CLI::App& program, ProgramOptions& options) {
   command->add_option("--video", render->video,
                       "also write a video (.mp4, .webm or .gif; needs ffmpeg)");
   command->add_option("--fps", render->fps,
-                      "video frames per second, 1..240 (default: real time)");
+                      "video frames per second, 1..240 (default: real time)")
+      ->check(decimal_check());
   command->add_flag("--no-frames", render->no_frames, "write the --video only, no PNG frames");
-  command->add_option("--threads", render->threads, "PNG encoding threads")
-      ->capture_default_str();
+  command->add_option("--threads", render->threads, "PNG encoding threads, 1..64")
+      ->capture_default_str()
+      ->check(whole_number_check());
   command->add_option("--trails", render->trails,
                       "motion trails: 'dynamic' (every dynamic body) or body indices "
                       "3,7,12 (as the ids overlay shows them)");
@@ -189,10 +278,10 @@ Command add_render_command(CLI::App& program, ProgramOptions& options) {
   Command result;
   result.parser = command;
   result.renders = true;
-  result.dry_run = [render](std::ostream&) { check_scene_arguments(render->scene, render->frames); };
+  result.dry_run = [render](std::ostream& out) { render_or_plan(*render, true, out); };
   result.run = [render, &options](std::ostream& out) {
     render->quiet = options.quiet;
-    render_scene(*render, out);
+    render_or_plan(*render, false, out);
     return 0;
   };
   return result;
@@ -205,7 +294,7 @@ void render_default_demo(const ProgramOptions& options, std::ostream& out) {
   // What the README's first paragraph promises: the contacts' normals, impulses and overlaps.
   demo.overlays = default_demo_overlays;
   demo.clean = true;  // the default demo always refreshes out/<default scene>_*.png
-  render_scene(demo, out);
+  render_or_plan(demo, options.dry_run, out);
 }
 
 }  // namespace impulse2d::demos

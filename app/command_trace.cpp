@@ -5,6 +5,7 @@
 
 #include "app/command.h"
 #include "app/scene_command.h"
+#include "app/strict_number_check.h"
 #include "scene/run_limits.h"
 #include "scene/trace_writer.h"
 #include "scene/usage_error.h"
@@ -19,31 +20,62 @@ struct TraceArguments {
   std::string format = "csv";  ///< csv or json
 };
 
-/// Writes the trace of a run to `out`.
-void trace_scene(const TraceArguments& arguments, std::ostream& out) {
-  const ResolvedScene resolved = resolve(arguments.scene);
-  TraceFormat format = TraceFormat::Csv;
+/// A trace, checked and ready: what `trace_scene` runs and `print_trace_plan` shows.
+struct TraceJob {
+  ResolvedScene resolved;                 ///< the scene, its parameters and length
+  TraceFormat format = TraceFormat::Csv;  ///< csv or json
+  std::int64_t samples = 0;               ///< steps printed: 0, k, 2k, ... and the last
+  std::int64_t moving = 0;                ///< bodies that are not static, one row each
+  std::unique_ptr<SceneRun> run;          ///< the run, built and not yet stepped
+};
+
+/// Every check a trace makes before any work; the run and --dry-run both start here. Throws
+/// `UsageError`.
+TraceJob prepare_trace(const TraceArguments& arguments) {
+  TraceJob job;
+  job.resolved = resolve(arguments.scene);
   if (arguments.format == "json") {
-    format = TraceFormat::Json;
+    job.format = TraceFormat::Json;
   } else if (arguments.format != "csv") {
     throw UsageError("--format '" + arguments.format + "': expected csv or json");
   }
-  const std::unique_ptr<SceneRun> run = start_run(resolved, arguments.scene);
-  if (arguments.every < 1) throw UsageError("--every must be >= 1");
-  std::int64_t moving = 0;
-  for (const BodyId id : run->world().body_ids()) {
-    moving += run->world().body(id).type == BodyType::Static ? 0 : 1;
+  if (arguments.every < 1) {
+    throw UsageError("--every " + std::to_string(arguments.every) + ": must be at least 1");
   }
-  const std::int64_t samples = resolved.steps / arguments.every + 2;
-  if (moving > 0 && samples > limits::max_trace_rows / moving) {
-    throw UsageError("trace: --steps " + std::to_string(resolved.steps) + " --every " +
+  job.run = start_run(job.resolved, arguments.scene);
+  for (const BodyId id : job.run->world().body_ids()) {
+    job.moving += job.run->world().body(id).type == BodyType::Static ? 0 : 1;
+  }
+  const std::int64_t steps = job.resolved.steps;
+  job.samples = steps / arguments.every + 2;
+  if (job.moving > 0 && job.samples > limits::max_trace_rows / job.moving) {
+    throw UsageError("trace: --steps " + std::to_string(steps) + " --every " +
                      std::to_string(arguments.every) + " would print about " +
-                     std::to_string(samples) + " samples of " + std::to_string(moving) +
+                     std::to_string(job.samples) + " samples of " + std::to_string(job.moving) +
                      " bodies; the limit is " + std::to_string(limits::max_trace_rows) +
                      " rows (raise --every or lower --steps)");
   }
-  const std::string text = trace_run(*run, resolved.steps, arguments.every, format);
-  warn_divergences(*run);
+  // Exactly: steps 0, k, 2k, ... and the last step when k does not divide it.
+  job.samples = steps / arguments.every + 1 + (steps % arguments.every != 0 ? 1 : 0);
+  return job;
+}
+
+/// What `trace` would print, for --dry-run.
+void print_trace_plan(const TraceJob& job, const TraceArguments& arguments, std::ostream& out) {
+  out << "dry run: trace " << job.resolved.scene.name << " (" << job.resolved.scene.source << ")\n"
+      << "  parameters: "
+      << (job.resolved.params.specs().empty() ? "none" : job.resolved.params.summary()) << "\n"
+      << "  steps: 0.." << job.resolved.steps << ", every " << arguments.every << ": "
+      << job.samples << " samples of the moving bodies (" << job.moving << " at the start)\n"
+      << "  writes: " << (job.format == TraceFormat::Json ? "JSON" : "CSV")
+      << " to standard output\n"
+      << "nothing was run or written\n";
+}
+
+/// Writes the trace of `job` to `out`.
+void trace_scene(TraceJob& job, std::int64_t every, std::ostream& out) {
+  const std::string text = trace_run(*job.run, job.resolved.steps, every, job.format);
+  warn_divergences(*job.run);
   out << text;
 }
 
@@ -54,15 +86,19 @@ Command add_trace_command(CLI::App& program, const ProgramOptions&) {
   CLI::App* command = program.add_subcommand(
       "trace", "print per-step body states (step,t,body,x,y,angle,vx,vy,omega,contacts,energy)");
   add_scene_options(*command, trace->scene, true);
-  command->add_option("--steps,-n", trace->scene.steps, "steps to simulate (default: the scene's)");
-  command->add_option("--every,-k", trace->every, "sample every k-th step")->capture_default_str();
+  command->add_option("--steps,-n", trace->scene.steps, "steps to simulate (default: the scene's)")
+      ->check(whole_number_check());
+  command->add_option("--every,-k", trace->every, "sample every k-th step")
+      ->capture_default_str()
+      ->check(whole_number_check());
   command->add_option("--format", trace->format, "csv or json")->capture_default_str();
 
   Command result;
   result.parser = command;
-  result.dry_run = [trace](std::ostream&) { check_scene_arguments(trace->scene, std::nullopt); };
+  result.dry_run = [trace](std::ostream& out) { print_trace_plan(prepare_trace(*trace), *trace, out); };
   result.run = [trace](std::ostream& out) {
-    trace_scene(*trace, out);
+    TraceJob job = prepare_trace(*trace);
+    trace_scene(job, trace->every, out);
     return 0;
   };
   return result;

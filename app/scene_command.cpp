@@ -2,13 +2,13 @@
 #include "app/scene_command.h"
 
 #include <CLI/CLI.hpp>
-#include <cstdlib>
+#include <optional>
 #include <iostream>
 
 #include "demos/scene_registry.h"
-#include "frames/frame_plan.h"
 #include "scene/overlays.h"
 #include "scene/run_limits.h"
+#include "scene/strict_number.h"
 #include "scene/usage_error.h"
 
 namespace impulse2d::demos {
@@ -64,14 +64,6 @@ std::unique_ptr<SceneRun> start_run(const ResolvedScene& resolved, const SceneAr
   return run;
 }
 
-void check_scene_arguments(const SceneArguments& arguments,
-                           const std::optional<std::string>& frames) {
-  SceneArguments checked = arguments;
-  if (checked.scene.empty()) checked.scene = default_scene().name;
-  const ResolvedScene resolved = resolve(checked);
-  if (frames) plan_frames(*frames, resolved.steps);
-}
-
 void check_trails(const TrailSelection& trails, const SceneRun& run, const std::string& option) {
   for (const std::uint32_t slot : trails.slots) {
     if (slot >= static_cast<std::uint32_t>(run.bodies_in_run())) {
@@ -102,17 +94,25 @@ render::Theme theme_of(const std::string& name) {
 
 std::pair<int, int> parse_size(const std::string& text, const std::string& option) {
   const std::size_t x = text.find('x');
-  const auto parse = [&](const std::string& part) {
-    char* end = nullptr;
-    const long value = std::strtol(part.c_str(), &end, 10);
-    if (part.empty() || *end != '\0' || value < 16 || value > 8192) {
+  const auto side = [&](const std::string& part) {
+    const std::optional<std::int64_t> value = parse_whole_number(part, 8192);
+    if (!value || *value < 16) {
       throw UsageError(option + " '" + text +
-                       "': expected WxH with each side 16..8192 pixels, e.g. 800x600");
+                       "': expected WxH with each side 16..8192 pixels, e.g. 800x600 (" +
+                       whole_number_syntax + ")");
     }
-    return static_cast<int>(value);
+    return static_cast<int>(*value);
   };
-  if (x == std::string::npos) parse("");
-  return {parse(text.substr(0, x)), parse(text.substr(x + 1))};
+  if (x == std::string::npos) side("");
+  return {side(text.substr(0, x)), side(text.substr(x + 1))};
+}
+
+std::uint32_t parse_overlays_option(const std::string& list) {
+  try {
+    return parse_overlays(list);
+  } catch (const UsageError& error) {
+    throw UsageError("--overlays '" + list + "': " + error.what());
+  }
 }
 
 }  // namespace impulse2d::demos

@@ -50,18 +50,15 @@ ResolvedScene resolve(const SceneArguments& arguments);
 /// A run of the resolved scene, strict when asked.
 std::unique_ptr<SceneRun> start_run(const ResolvedScene& resolved, const SceneArguments& arguments);
 
-/// Checks what a scene command would run without running it: the scene (name or file, the
-/// default scene when empty), its parameters and length, and `frames` when given. Throws
-/// `UsageError` as the command would, before any work.
-void check_scene_arguments(const SceneArguments& arguments, const std::optional<std::string>& frames);
-
 /// Throws `UsageError` for a trail body index no body of the run can have.
 void check_trails(const TrailSelection& trails, const SceneRun& run, const std::string& option);
 /// Prints a warning per diverged body (the first 10, then a count) to stderr.
 void warn_divergences(const SceneRun& run);
 /// The theme named `name` (light or dark). Throws `UsageError` naming --theme.
 render::Theme theme_of(const std::string& name);
-/// Parses "WxH" (each 16..8192). Throws `UsageError` naming `option`.
+/// Parses "WxH" (each side 16..8192, digits only). Throws `UsageError` naming `option`.
 std::pair<int, int> parse_size(const std::string& text, const std::string& option);
+/// The draw flags of an `--overlays` list. Throws `UsageError` naming --overlays.
+std::uint32_t parse_overlays_option(const std::string& list);
 
 }  // namespace impulse2d::demos

@@ -2,13 +2,17 @@
 #include "app/view_options.h"
 
 #include <CLI/CLI.hpp>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <optional>
 
-#include "scene/scene_run.h"
+#include "app/strict_number_check.h"
+#include "frames/scene_camera.h"
+#include "scene/json_cursor.h"
 #include "scene/scene.h"
+#include "scene/scene_limits.h"
+#include "scene/scene_run.h"
+#include "scene/strict_number.h"
 #include "scene/usage_error.h"
 
 namespace impulse2d::demos {
@@ -26,40 +30,53 @@ float checked(float value, float minimum, float maximum, const std::string& opti
   return value;
 }
 
-/// A body named in the scene file, or a creation index.
+/// A body named in the scene file, or a creation index (digits only).
 int body_reference(const std::string& text, const Scene& scene, const std::string& option) {
+  if (text.empty()) {
+    throw UsageError(option + " '': an empty body name (give a name from the scene file or a "
+                     "creation index 0, 1, ...)");
+  }
   for (const auto& [index, name] : scene.body_names) {
     if (name == text) return index;
   }
-  char* end = nullptr;
-  errno = 0;
-  const long index = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno != 0 || index < 0 || index > 1000000) {
+  const std::optional<std::int64_t> index = parse_whole_number(text, 1000000);
+  if (!index) {
     std::string known;
     for (const auto& [unused, name] : scene.body_names) known += (known.empty() ? "" : ", ") + name;
     throw UsageError(option + " '" + text + "': no body of scene " + scene.name + " has that name; give a name" +
                      (known.empty() ? std::string(" (this scene names none)") : " (" + known + ")") +
                      " or a creation index 0, 1, ... (as the ids overlay shows them)");
   }
-  return static_cast<int>(index);
+  return static_cast<int>(*index);
 }
 
-/// Parses "x0,y0:x1,y1" (metres) into bounds with x1 > x0 and y1 > y0.
+/// Parses "x0,y0:x1,y1" (metres, each |v| <= limits::max_coordinate) into bounds whose sides
+/// are at least limits::min_view_side.
 Aabb view_bounds(const std::string& text) {
+  const std::string syntax =
+      "expected x0,y0:x1,y1 in metres, the lower-left then the upper-right corner (x1 > x0, "
+      "y1 > y0, each coordinate within +-" + compact_number(limits::max_coordinate) +
+      "), e.g. --view -5,0:5,8";
   float values[4];
-  const char* cursor = text.c_str();
-  bool good = true;
-  for (int i = 0; i < 4 && good; ++i) {
-    char* end = nullptr;
-    values[i] = std::strtof(cursor, &end);
-    const char expected = i == 1 ? ':' : i == 3 ? '\0' : ',';
-    good = end != cursor && *end == expected && std::isfinite(values[i]) && std::fabs(values[i]) <= 1.0e6f;
-    cursor = end + 1;
+  std::size_t start = 0;
+  for (int i = 0; i < 4; ++i) {
+    const char separator = i == 1 ? ':' : i == 3 ? '\0' : ',';
+    const std::size_t end = separator == '\0' ? text.size() : text.find(separator, start);
+    const std::optional<double> value =
+        end == std::string::npos ? std::nullopt : parse_decimal(text.substr(start, end - start), true);
+    if (!value || std::fabs(*value) > limits::max_coordinate) {
+      throw UsageError("--view '" + text + "': " + syntax);
+    }
+    values[i] = static_cast<float>(*value);
+    start = end + 1;
   }
-  if (!good || !(values[2] > values[0] && values[3] > values[1])) {
-    throw UsageError("--view '" + text +
-                     "': expected x0,y0:x1,y1 in metres, the lower-left then the upper-right corner "
-                     "(x1 > x0, y1 > y0), e.g. --view -5,0:5,8");
+  if (!(values[2] > values[0] && values[3] > values[1])) throw UsageError("--view '" + text + "': " + syntax);
+  const float width = values[2] - values[0];
+  const float height = values[3] - values[1];
+  if (!(width >= limits::min_view_side && height >= limits::min_view_side)) {
+    throw UsageError("--view '" + text + "': the rectangle is " + compact_number(width) + " x " +
+                     compact_number(height) + " m; each side must be at least " +
+                     compact_number(limits::min_view_side) + " m (the smallest body)");
   }
   return Aabb{vec2(values[0], values[1]), vec2(values[2], values[3])};
 }
@@ -86,17 +103,22 @@ void add_view_options(CLI::App& command, ViewArguments& arguments, bool sequence
       "--no-legend", [&arguments] { arguments.legend = false; }, "leave the legend out");
   legend->excludes(no_legend);
   command.add_option("--arrow-scale", arguments.arrow_scale,
-                     "factor on the scene's impulse and velocity arrow lengths (0.001..1000)");
+                     "factor on the scene's impulse and velocity arrow lengths (0.001..1000)")
+      ->check(decimal_check());
   command.add_option("--penetration-scale", arguments.penetration_scale,
-                     "magnification of penetration bars (1..1000; default 10)");
+                     "magnification of penetration bars (1..1000; default 10)")
+      ->check(decimal_check());
   command.add_option("--text-scale", arguments.text_scale,
-                     "HUD, legend and label text size, 1 = 7 px capitals (1..16; default by frame size)");
+                     "HUD, legend and label text size, 1 = 7 px capitals (1..16; default by frame size)")
+      ->check(whole_number_check());
   command.add_option("--max-arrow", arguments.max_arrow_pixels,
-                     "contact arrows longer than this many pixels are cut and marked // (8..4096; default 120)");
+                     "contact arrows longer than this many pixels are cut and marked // (8..4096; default 120)")
+      ->check(decimal_check());
   command.add_option("--view", arguments.view, "camera on this world rectangle: x0,y0:x1,y1 (metres)");
   command.add_option("--follow", arguments.follow,
                      "camera centred on this body in every frame: a name from the scene file or a creation index");
-  command.add_option("--zoom", arguments.zoom, "magnify the camera about its centre by K (0.01..100)");
+  command.add_option("--zoom", arguments.zoom, "magnify the camera about its centre by K (0.01..100)")
+      ->check(decimal_check());
   command.add_option("--highlight", arguments.highlight, "frame this body (name or creation index) in magenta");
   command.add_flag("--islands", arguments.islands,
                    "island colours: a dot per body and a line per contact, one colour per island");
@@ -157,6 +179,29 @@ void check_view_bodies(const ViewArguments& arguments, const SceneRun& run) {
   };
   check(arguments.follow, run.scene().view.camera.follow_body, "--follow");
   check(arguments.highlight, run.scene().view.highlight_body, "--highlight");
+}
+
+}  // namespace impulse2d::demos
+
+namespace impulse2d::demos {
+
+void check_camera(const ViewArguments& arguments, const SceneRun& run, int width, int height) {
+  const CameraSpec& spec = run.scene().view.camera;
+  const float scale = scene_camera(spec, run.world(), width, height).pixels_per_metre();
+  if (scale >= limits::min_pixels_per_metre && scale <= limits::max_pixels_per_metre) return;
+  std::string cause;
+  if (arguments.view) cause += "--view " + *arguments.view + " ";
+  if (arguments.follow) cause += "--follow " + *arguments.follow + " ";
+  if (arguments.zoom) cause += "--zoom " + compact_number(*arguments.zoom) + " ";
+  if (cause.empty()) {
+    cause = run.scene().source == "built-in" ? "the camera of scene " + run.scene().name + " "
+                                             : run.scene().source + ": camera ";
+  }
+  throw UsageError(cause + "on " + std::to_string(width) + "x" + std::to_string(height) +
+                   " pixels gives " + compact_number(scale) + " pixels per metre; accepted " +
+                   compact_number(limits::min_pixels_per_metre) + ".." +
+                   compact_number(limits::max_pixels_per_metre) + " (" +
+                   limits::pixels_per_metre_reason + "; change --zoom or --view)");
 }
 
 }  // namespace impulse2d::demos

@@ -49,4 +49,10 @@ void apply_view_arguments(const ViewArguments& arguments, Scene& scene);
 /// `run` can have (naming `--follow` / `--highlight`).
 void check_view_bodies(const ViewArguments& arguments, const SceneRun& run);
 
+/// Throws `UsageError` when the camera of `run`'s scene view (after `apply_view_arguments`)
+/// on a `width` x `height` image has a scale outside limits::min_pixels_per_metre ..
+/// limits::max_pixels_per_metre, naming the options (--view, --follow, --zoom) or the scene
+/// file's camera that chose it.
+void check_camera(const ViewArguments& arguments, const SceneRun& run, int width, int height);
+
 }  // namespace impulse2d::demos

@@ -45,3 +45,25 @@ FramePlan spread_frames(int count, std::int64_t run_steps) {
 }
 
 }  // namespace impulse2d::demos
+
+namespace impulse2d::demos {
+
+std::string describe_frame_steps(const FramePlan& plan) {
+  const std::vector<std::int64_t>& steps = plan.frames;
+  const std::size_t count = steps.size();
+  if (count == 1) return "step " + std::to_string(steps.front());
+  const std::int64_t stride = steps[1] - steps[0];
+  bool even = true;
+  for (std::size_t i = 2; i < count && even; ++i) even = steps[i] - steps[i - 1] == stride;
+  const std::string ends = std::to_string(steps.front()) + ", " + std::to_string(steps[1]) +
+                           ", .. " + std::to_string(steps.back());
+  if (even && stride == 1) return "steps " + std::to_string(steps.front()) + ".." + std::to_string(steps.back());
+  if (even) return "steps " + ends + " (every " + std::to_string(stride) + ")";
+  std::string text = "steps";
+  const std::size_t shown = count <= 8 ? count : 6;
+  for (std::size_t i = 0; i < shown; ++i) text += (i == 0 ? " " : ", ") + std::to_string(steps[i]);
+  if (shown < count) text += ", .. " + std::to_string(steps.back());
+  return text;
+}
+
+}  // namespace impulse2d::demos

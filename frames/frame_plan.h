@@ -23,6 +23,10 @@ struct FramePlan {
 /// time proportional to the frames selected, not to the run's length.
 FramePlan plan_frames(const std::string& spec, std::int64_t run_steps);
 
+/// The steps of `plan` for a plan printed by --dry-run: "steps 0..100" (every step), "steps
+/// 0, 10, .. 300 (every 10th)" (a stride), else the first and last steps listed.
+std::string describe_frame_steps(const FramePlan& plan);
+
 /// `count` steps spread evenly over 0..`run_steps` (both ends included when count >= 2).
 FramePlan spread_frames(int count, std::int64_t run_steps);
 

@@ -13,6 +13,7 @@
 #include "frames/html_viewer.h"
 #include "scene/interrupt.h"
 #include "frames/output_guard.h"
+#include "frames/output_folder.h"
 #include "frames/output_staging.h"
 #include "frames/overlay_variants.h"
 #include "scene/usage_error.h"
@@ -221,30 +222,38 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
 
 }  // namespace
 
+std::vector<std::filesystem::path> check_sequence_output(const std::string& scene_name,
+                                                         const FrameSequenceOptions& options) {
+  if (options.video) check_output_folder(options.video->parent_path(), "--video " + options.video->string());
+  if (!options.write_frames) return {};
+  std::vector<std::filesystem::path> old_frames = existing_frames(options.directory, scene_name);
+  const std::size_t frame_count = old_frames.size();
+  // An earlier run's viewer and overlay variants go with its frames.
+  for (const std::filesystem::path& viewer_file :
+       {html_viewer_path(options.directory, scene_name),
+        overlay_variants_path(options.directory, scene_name)}) {
+    std::error_code missing;
+    if (std::filesystem::exists(viewer_file, missing)) old_frames.push_back(viewer_file);
+  }
+  if (!old_frames.empty() && !options.clean) {
+    throw UsageError(options.directory.string() + "/ already holds " +
+                     (frame_count > 0 ? std::to_string(frame_count) + " frames of " + scene_name +
+                                            " from an earlier run (" +
+                                            old_frames.front().string() + " ..)"
+                                      : old_frames.front().string() + " from an earlier run") +
+                     "; pass --clean to replace them, or choose another --out");
+  }
+  check_output_folder(options.directory, "--out " + options.directory.string());
+  return old_frames;
+}
+
 FrameSequenceResult render_frame_sequence(SceneRun& run, const FramePlan& plan,
                                           const FrameSequenceOptions& options,
                                           const FrameProgress& progress) {
   const auto start = std::chrono::steady_clock::now();
   OutputGuard guard;
-  std::vector<std::filesystem::path> old_frames;
+  std::vector<std::filesystem::path> old_frames = check_sequence_output(run.scene().name, options);
   if (options.write_frames) {
-    old_frames = existing_frames(options.directory, run.scene().name);
-    const std::size_t frame_count = old_frames.size();
-    // An earlier run's viewer and overlay variants go with its frames.
-    for (const std::filesystem::path& viewer_file :
-         {html_viewer_path(options.directory, run.scene().name),
-          overlay_variants_path(options.directory, run.scene().name)}) {
-      std::error_code missing;
-      if (std::filesystem::exists(viewer_file, missing)) old_frames.push_back(viewer_file);
-    }
-    if (!old_frames.empty() && !options.clean) {
-      throw UsageError(options.directory.string() + "/ already holds " +
-                       (frame_count > 0 ? std::to_string(frame_count) + " frames of " +
-                                              run.scene().name + " from an earlier run (" +
-                                              old_frames.front().string() + " ..)"
-                                        : old_frames.front().string() + " from an earlier run") +
-                       "; pass --clean to replace them, or choose another --out");
-    }
     guard.will_create_directory(options.directory);
     std::error_code error;
     std::filesystem::create_directories(options.directory, error);

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/debug_draw.h"
 #include "frames/frame_plan.h"
@@ -47,6 +49,14 @@ struct FrameSequenceResult {
 
 /// Called after each frame with the number of frames finished.
 using FrameProgress = std::function<void(std::int64_t frames_done)>;
+
+/// The checks `render_frame_sequence` makes of its outputs before any work, for a dry run to
+/// make them too: the video's folder and the frames' folder can be written or created
+/// (`std::runtime_error` naming --video / --out), and the folder holds no frames (viewer,
+/// overlay variants) of `scene_name` unless `options.clean` (`UsageError`). Returns those
+/// earlier files, which a clean run replaces.
+std::vector<std::filesystem::path> check_sequence_output(const std::string& scene_name,
+                                                         const FrameSequenceOptions& options);
 
 /// Steps `run` to `plan.steps`, rendering each planned step into a staging directory inside
 /// `options.directory`, and moves the frames and their index into place only when every

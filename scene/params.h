@@ -25,13 +25,16 @@ class Params {
   /// Every parameter at its default.
   explicit Params(std::vector<ParamSpec> specs = {});
 
-  /// Sets `name` from text such as "20" or "0.5". Throws `UsageError` naming the parameter
-  /// and the reason for an unknown name, text that is not a finite number, a fraction given
-  /// to an integer parameter, or a value outside the declared range.
+  /// Sets `name` from text such as "20", "-1" or "0.5", read strictly (no '+', space or hex,
+  /// see strict_number.h), with the checks of the number form.
   void set(const std::string& name, const std::string& text);
-  /// Sets `name` to `value` with the same checks as the text form.
+  /// Sets `name` to `value`. Throws `UsageError` naming the parameter and the reason for an
+  /// unknown name, a value that is not finite, a fraction given to an integer parameter, or a
+  /// value outside the declared range.
   void set(const std::string& name, double value);
-  /// Parses "key=value" and sets it (throws `UsageError` for a missing '=').
+  /// Parses "key=value" (the value strict: digits, one '.', an exponent, a leading '-'; no
+  /// '+', space or hex, see strict_number.h) and sets it with the checks of `set`; messages
+  /// start with "--param key=value: ". Throws `UsageError` for a missing '=' too.
   void set_assignment(const std::string& assignment);
 
   /// The value of `name`. Throws `UsageError` for a name the scene does not declare.
@@ -44,7 +47,10 @@ class Params {
   std::string summary() const;
 
  private:
+  const ParamSpec* find(const std::string& name) const;
   const ParamSpec& spec(const std::string& name) const;
+  std::string unknown_reason(const std::string& name) const;
+  static std::string value_reason(const ParamSpec& declared, double value);
   std::vector<ParamSpec> specs_;
   std::map<std::string, double> values_;
 };

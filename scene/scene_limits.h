@@ -25,6 +25,18 @@ constexpr float max_coordinate = 1e4f;
 /// Why positions have their range.
 constexpr const char* coordinate_reason = "m; float positions resolve 1 mm only up to ~16 km";
 
+/// Smallest side of a camera's view rectangle, m (the smallest body fills it).
+constexpr float min_view_side = 1e-3f;
+/// Camera scale range, pixels per metre, after any zoom: beyond it a metre of world is less
+/// than 1/10000 pixel or more than 10 million pixels, and screen coordinates lose float
+/// precision or overflow.
+constexpr float min_pixels_per_metre = 1e-4f;
+/// Largest camera scale, pixels per metre.
+constexpr float max_pixels_per_metre = 1e7f;
+/// Why camera scales have their range.
+constexpr const char* pixels_per_metre_reason =
+    "pixels per metre; beyond it screen coordinates lose float precision or overflow";
+
 /// Density range for a body that has mass, kg/m^2 (0 is allowed for static bodies only).
 /// 1e-3..1e5 keeps masses and inertias finite as floats for every allowed size; the solver
 /// converges for mass ratios up to about 1e3 between touching bodies.

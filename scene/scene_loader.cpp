@@ -125,6 +125,17 @@ WorldSettings read_settings(const JsonCursor& node) {
   try {
     validate_settings(settings);
   } catch (const Error& error) {
+    // "WorldSettings.correction_percent: must be in [0, 1]": reported at that field.
+    const std::string message = error.what();
+    const std::string prefix = "WorldSettings.";
+    const std::size_t colon = message.find(": ");
+    if (message.rfind(prefix, 0) == 0 && colon != std::string::npos) {
+      const std::string field = message.substr(prefix.size(), colon - prefix.size());
+      if (node.has(field)) {
+        node.field(field).fail(message.substr(colon + 2) + ", got " + node.field(field).value().dump());
+      }
+      node.fail(message.substr(prefix.size()));  // a field the solver's defaults set
+    }
     node.fail(core_reason(error));
   }
   return settings;
@@ -331,9 +342,16 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
 /// Body name -> creation index: the file's bodies, then spawned ones in step order.
 using BodyNames = std::map<std::string, int>;
 
+/// A body's "name": a non-empty string.
+std::string read_body_name(const JsonCursor& node) {
+  const std::string name = node.string();
+  if (name.empty()) node.fail("a body name must not be empty (leave \"name\" out for an unnamed body)");
+  return name;
+}
+
 int read_body_reference(const JsonCursor& node, const BodyNames& names) {
   if (node.value().is_string()) {
-    const std::string name = node.string();
+    const std::string name = read_body_name(node);
     const auto found = names.find(name);
     if (found == names.end()) node.fail("no body is named \"" + name + "\" (at this point)");
     return found->second;
@@ -358,7 +376,9 @@ CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
     const bool character = follow->value().is_string() && follow->string() == "character" &&
                            names.find("character") == names.end();
     camera.follow_body = character ? -1 : read_body_reference(*follow, names);
-    camera.pixels_per_metre = node.field("pixels_per_metre").positive();
+    camera.pixels_per_metre = node.field("pixels_per_metre")
+                                  .in_range(limits::min_pixels_per_metre, limits::max_pixels_per_metre,
+                                            limits::pixels_per_metre_reason);
   } else if (auto bounds = node.optional_field("bounds")) {
     if (bounds->size() != 2) bounds->fail("expected [[min x, min y], [max x, max y]]");
     camera.mode = CameraSpec::Mode::FitBounds;
@@ -370,10 +390,18 @@ CameraSpec read_camera(const JsonCursor& node, const BodyNames& names) {
           camera.bounds.upper.y > camera.bounds.lower.y)) {
       bounds->fail("the second corner must be above and right of the first");
     }
+    const vec2 sides = camera.bounds.upper - camera.bounds.lower;
+    if (!(sides.x >= limits::min_view_side && sides.y >= limits::min_view_side)) {
+      bounds->fail("the rectangle is " + compact_number(sides.x) + " x " + compact_number(sides.y) +
+                   " m; each side must be at least " + compact_number(limits::min_view_side) +
+                   " m (the smallest body)");
+    }
   } else if (auto center = node.optional_field("center")) {
     camera.mode = CameraSpec::Mode::Centered;
     camera.center = center->vector_at_most(limits::max_coordinate, limits::coordinate_reason);
-    camera.pixels_per_metre = node.field("pixels_per_metre").positive();
+    camera.pixels_per_metre = node.field("pixels_per_metre")
+                                  .in_range(limits::min_pixels_per_metre, limits::max_pixels_per_metre,
+                                            limits::pixels_per_metre_reason);
   }
   return camera;
 }
@@ -490,7 +518,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     const JsonCursor node = body_list.element(i);
     bodies.push_back(read_body(node, table));
     if (auto name = node.optional_field("name")) {
-      if (!names.emplace(name->string(), static_cast<int>(i)).second) {
+      if (!names.emplace(read_body_name(*name), static_cast<int>(i)).second) {
         name->fail("the name \"" + name->string() + "\" is used twice");
       }
     }
@@ -516,7 +544,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     for (const auto& [event_index, creation_index] : spawn_index) {
       const JsonCursor body = events->element(event_index).field("body");
       if (auto name = body.optional_field("name")) {
-        if (!names.emplace(name->string(), creation_index).second) {
+        if (!names.emplace(read_body_name(*name), creation_index).second) {
           name->fail("the name \"" + name->string() + "\" is used twice");
         }
       }

@@ -33,7 +33,9 @@ bool SceneModel::allows(ShapeType type) const {
 
 void apply_model(const SceneModel& model, WorldSettings& settings) {
   if (model.velocity_iterations < 0 || model.position_iterations < 0) {
-    throw UsageError("model: iteration counts must be >= 0");
+    throw UsageError("model: velocity_iterations " + std::to_string(model.velocity_iterations) +
+                     ", position_iterations " + std::to_string(model.position_iterations) +
+                     ": each must be >= 0");
   }
   settings.enable_rotation = model.rotation;
   settings.enable_friction = model.friction;

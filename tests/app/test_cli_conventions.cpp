@@ -198,8 +198,8 @@ TEST_F(CliTest, HelpSaysWhatEachOverlayShows) {
   }
 }
 
-// --dry-run checks a command line (the docs test runs every README command with it) and
-// writes nothing.
+// --dry-run checks a command line (the docs test runs every README command with it), prints
+// the plan and writes nothing.
 TEST_F(CliTest, DryRunChecksTheCommandLineAndWritesNothing) {
   for (const char* arguments :
        {"--dry-run render pyramid -p rows=20 --frames 0:600:10 -o out/pyramid",
@@ -207,7 +207,15 @@ TEST_F(CliTest, DryRunChecksTheCommandLineAndWritesNothing) {
         "--dry-run lab --quick", "--dry-run"}) {
     const Result result = run(arguments);
     EXPECT_EQ(result.status, 0) << arguments << result.err;
-    EXPECT_EQ(result.out + result.err, "") << arguments;
+    EXPECT_EQ(result.err, "") << arguments;
+    EXPECT_NE(result.out, "") << arguments << ": no plan printed";
+  }
+  const Result plan = run("--dry-run render pyramid -p rows=20 --frames 0:600:10 -o out/pyramid");
+  for (const char* line : {"dry run: render pyramid", "parameters: rows=20",
+                           "frames: 61: steps 0, 10, .. 600 (every 10)", "frame size: 800x600",
+                           "out/pyramid/pyramid_00000.png .. out/pyramid/pyramid_00060.png",
+                           "out/pyramid/pyramid_frames.csv", "nothing was run or written"}) {
+    EXPECT_NE(plan.out.find(line), std::string::npos) << line << " not in: " << plan.out;
   }
   EXPECT_TRUE(files().empty());
   const Result frames = run("--dry-run render bullet --frames 0:500");
