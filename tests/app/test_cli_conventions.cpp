@@ -190,6 +190,25 @@ TEST_F(CliTest, HelpStatesOneSetOfExitStatusesPerCommand) {
   }
 }
 
+// Every help text fits a 100-column terminal: the program's, each command's (`help X`) and
+// each subcommand's (`X Y --help`), golden's and lab's included.
+TEST_F(CliTest, EveryHelpLineFitsInOneHundredColumns) {
+  for (const char* arguments :
+       {"help", "help list", "help render", "help trace", "help sheet", "help diff", "help golden",
+        "help lab", "help tune", "golden check --help", "golden update --help",
+        "golden frame --help", "lab merge --help"}) {
+    const Result help = run(arguments);
+    EXPECT_EQ(help.status, 0) << arguments << help.err;
+    std::istringstream lines(help.out);
+    int number = 0;
+    for (std::string line; std::getline(lines, line);) {
+      ++number;
+      EXPECT_LE(line.size(), 100u) << arguments << ", line " << number << ": " << line;
+    }
+    EXPECT_GT(number, 3) << arguments << ": no help printed";
+  }
+}
+
 TEST_F(CliTest, HelpSaysWhatEachOverlayShows) {
   for (const char* command : {"render", "sheet"}) {
     const Result help = run(std::string(command) + " --help");
