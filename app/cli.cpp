@@ -123,8 +123,9 @@ int run_cli(int argc, char** argv) {
                "warnings still print, and what a command is asked to print (list, trace, tune, "
                "diff, golden) still does");
   app.add_flag("--dry-run", options.dry_run,
-               "check the command line and stop: options, values and, for render, trace and "
-               "sheet, the scene, its parameters and --frames; nothing runs, nothing is written");
+               "make every check the command makes before any work (options, numbers, scene, "
+               "parameters, --frames, camera, output folders) and print its plan: what would "
+               "run and the files it would write; nothing runs, nothing is written");
   // In the order of the help's list.
   const std::vector<Command> commands = {
       add_list_command(app, options),  add_render_command(app, options),
