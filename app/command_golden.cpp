@@ -40,6 +40,8 @@ Command add_golden_command(CLI::App& program, const ProgramOptions&) {
   check->add_option("--repeat", arguments.repeat,
                     "2: also render each frame in a second process (nondeterminism)")
       ->capture_default_str();
+  check->add_flag("--require-pixels", arguments.require_pixels,
+                  "a frame whose renderer has no baseline fails (else: physics only)");
   update->add_flag("--all", arguments.all, "rewrite every golden, not only failing");
   CLI::App* frame = command->add_subcommand(
       "frame", "render one golden frame into --out PNG and its state hash into PNG.hash");

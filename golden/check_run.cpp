@@ -101,7 +101,18 @@ CheckSettings check_settings_from_environment(const fs::path& golden_dir,
                       "' is not supported; use 1 (one process) or 2 (also compare with a "
                       "second process)");
   }
+  settings.require_pixels = require_pixels_from_environment();
   return settings;
+}
+
+bool require_pixels_from_environment() {
+  const char* value = std::getenv("IMPULSE2D_REQUIRE_PIXELS");
+  const std::string text = value != nullptr ? value : "";
+  if (text.empty() || text == "0") return false;
+  if (text == "1") return true;
+  throw GoldenError("IMPULSE2D_REQUIRE_PIXELS='" + text +
+                    "' is not supported; use 1 (a frame drawn by a renderer without a baseline "
+                    "fails) or 0 (it is checked by its physics only)");
 }
 
 fs::path golden_png_path(const fs::path& golden_dir, const std::string& name) {
@@ -119,6 +130,7 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
   GoldenCheck& check = outcome.check;
   check.name = name;
   check.golden_present = fs::exists(png) && fs::exists(sidecar_file);
+  check.pixels_required = settings.require_pixels;
 
   std::optional<image::Image> expected;
   std::optional<Sidecar> golden_sidecar;

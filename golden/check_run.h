@@ -59,6 +59,9 @@ struct CheckSettings {
   /// When set, the tolerance every check is held to (and that written sidecars carry),
   /// instead of each golden sidecar's: a scene file's golden block.
   std::optional<Tolerance> tolerance;
+  /// When true, a frame drawn by a renderer without a baseline fails
+  /// (`RendererBaselineRequired`) instead of being checked by its physics only.
+  bool require_pixels = false;
 };
 
 /// The outcome of `run_golden_check`.
@@ -85,10 +88,15 @@ struct CheckOutcome {
 
 /// Settings from the environment: GOLDEN_IMAGES_DIR (else `golden_dir`), GOLDEN_ARTIFACT_DIR
 /// (else `artifact_root`), the update mode from GOLDEN_UPDATE and CI
-/// (`update_mode_from_environment`) and `repeat` from GOLDEN_REPEAT (1 or 2; default 1).
-/// Throws `GoldenError` for a bad GOLDEN_UPDATE or GOLDEN_REPEAT.
+/// (`update_mode_from_environment`), `repeat` from GOLDEN_REPEAT (1 or 2; default 1) and
+/// `require_pixels` from IMPULSE2D_REQUIRE_PIXELS (`require_pixels_from_environment`).
+/// Throws `GoldenError` for a bad GOLDEN_UPDATE, GOLDEN_REPEAT or IMPULSE2D_REQUIRE_PIXELS.
 CheckSettings check_settings_from_environment(const std::filesystem::path& golden_dir,
                                               const std::filesystem::path& artifact_root);
+
+/// IMPULSE2D_REQUIRE_PIXELS: "1" true; unset, empty or "0" false. Throws `GoldenError` for
+/// anything else.
+bool require_pixels_from_environment();
 
 /// The golden's PNG for `name` ("<scene>/<golden>") in `golden_dir`.
 std::filesystem::path golden_png_path(const std::filesystem::path& golden_dir,

@@ -49,7 +49,10 @@ FailureClass classify_failure(const GoldenCheck& check) {
     if (!check.noise) return FailureClass::SimulationDiverged;
     return check.noise->within() ? FailureClass::NumericalNoise : FailureClass::BehaviourChanged;
   }
-  if (check.renderer_baseline_missing) return FailureClass::NoRendererBaseline;
+  if (check.renderer_baseline_missing) {
+    return check.pixels_required ? FailureClass::RendererBaselineRequired
+                                 : FailureClass::NoRendererBaseline;
+  }
   if (!check.comparison->passed()) return FailureClass::RasterisationDiffers;
   return FailureClass::None;
 }
@@ -65,6 +68,7 @@ std::string failure_class_name(FailureClass failure_class) {
     case FailureClass::BehaviourChanged: return "behaviour changed";
     case FailureClass::RasterisationDiffers: return "rasterisation differs";
     case FailureClass::NoRendererBaseline: return "no baseline for this renderer";
+    case FailureClass::RendererBaselineRequired: return "renderer baseline required";
   }
   return "unknown";
 }
@@ -141,6 +145,16 @@ std::string failure_message(const GoldenCheck& check) {
            << "(written as " << check.renderer_baseline
            << ") with GOLDEN_UPDATE=missing ctest -R GoldenScenes (built-in goldens) or "
               "impulse2d golden update <scene file>";
+      break;
+    case FailureClass::RendererBaselineRequired:
+      text << "pixels are required (--require-pixels or IMPULSE2D_REQUIRE_PIXELS=1) but this "
+              "run's renderer '"
+           << check.actual_renderer.describe() << "' has no baseline (the golden was drawn by '"
+           << check.expected_renderer.describe() << "'); physics checked and matches (state hash "
+           << image::to_hex_hash(check.actual_state_hash) << ")" << kNextLine
+           << "add the baseline (written as " << check.renderer_baseline
+           << ") on this renderer with GOLDEN_UPDATE=missing ctest -R GoldenScenes (built-in "
+              "goldens) or impulse2d golden update <scene file>, review it and commit it";
       break;
     case FailureClass::RasterisationDiffers:
       text << "physics state matches (hash " << image::to_hex_hash(check.actual_state_hash)

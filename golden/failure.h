@@ -36,6 +36,10 @@ enum class FailureClass {
   /// Drawn by another renderer than the golden, with no baseline for it: the physics was
   /// checked and matches, the pixels could not be. Not a failure.
   NoRendererBaseline,
+  /// As NoRendererBaseline, but the run requires pixels (`--require-pixels`,
+  /// IMPULSE2D_REQUIRE_PIXELS=1): a failure, so a CI image whose renderer changed does not
+  /// stop checking pixels unnoticed.
+  RendererBaselineRequired,
 };
 
 /// Everything known about one golden check; the caller fills what it measured.
@@ -65,6 +69,9 @@ struct GoldenCheck {
   /// True when this run's renderer differs from the golden's and no baseline for it exists:
   /// only the physics is checked.
   bool renderer_baseline_missing = false;
+  /// True when the run requires pixels to be compared: a missing renderer baseline is then
+  /// a failure (`RendererBaselineRequired`) instead of a skip.
+  bool pixels_required = false;
   /// The renderer baseline this run's pixels would be compared with (or written to), relative
   /// to the golden directory; empty when the golden's own renderer drew the frame.
   std::string renderer_baseline;
@@ -76,8 +83,8 @@ struct GoldenCheck {
 
 /// Classifies a check: Nondeterminism, then MissingGolden, SizeMismatch; when the state
 /// hashes differ (whatever the pixels say) NumericalNoise or BehaviourChanged by `noise`, or
-/// SimulationDiverged without one; then NoRendererBaseline when the pixels had nothing to be
-/// compared with; RasterisationDiffers (same state, the comparison failed), else None.
+/// SimulationDiverged without one; then NoRendererBaseline (RendererBaselineRequired when
+/// `pixels_required`) when the pixels had nothing to be compared with; RasterisationDiffers (same state, the comparison failed), else None.
 FailureClass classify_failure(const GoldenCheck& check);
 
 /// Human name of a class, e.g. "simulation diverged".

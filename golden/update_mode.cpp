@@ -70,7 +70,9 @@ bool should_write_golden(UpdateMode mode, FailureClass outcome) {
   switch (mode) {
     case UpdateMode::None: return false;
     case UpdateMode::Missing:
-      return outcome == FailureClass::MissingGolden || outcome == FailureClass::NoRendererBaseline;
+      return outcome == FailureClass::MissingGolden ||
+             outcome == FailureClass::NoRendererBaseline ||
+             outcome == FailureClass::RendererBaselineRequired;
     case UpdateMode::Changed: return outcome != FailureClass::None;
     case UpdateMode::All: return true;
   }

@@ -120,6 +120,9 @@ int check_or_update(const GoldenCommandArguments& arguments, const GoldenPlan& p
   Renderers renderers;
   std::vector<JUnitCase> cases;
   int failed = 0;
+  const bool require_pixels = !update && arguments.require_pixels;
+  // Per renderer without a baseline: how many frames it drew (pixels unchecked or failed).
+  std::map<std::string, std::size_t> without_baseline;
   for (const SceneGoldens& scene : plan.scenes) {
     CheckSettings settings;
     settings.golden_dir = scene.golden_dir;
@@ -129,6 +132,7 @@ int check_or_update(const GoldenCommandArguments& arguments, const GoldenPlan& p
                                            : UpdateMode::Changed;
     settings.repeat = arguments.repeat;
     settings.tolerance = scene.tolerance;
+    settings.require_pixels = require_pixels;
     if (update) settings.write_dir = staged.at(scene.golden_dir)->path();
     const fs::path second_process_folder =
         update ? staged.at(scene.golden_dir)->scratch()
@@ -150,6 +154,9 @@ int check_or_update(const GoldenCommandArguments& arguments, const GoldenPlan& p
       test.seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       test.failed = !outcome.passed();
+      if (outcome.check.renderer_baseline_missing && !outcome.golden_written) {
+        ++without_baseline[outcome.check.actual_renderer.describe()];
+      }
       if (test.failed) {
         ++failed;
         test.failure_type = failure_class_id(outcome.failure_class);
@@ -183,6 +190,17 @@ int check_or_update(const GoldenCommandArguments& arguments, const GoldenPlan& p
     out << " (" << physics_only << " by their physics only: no baseline for this renderer)";
   }
   out << "; report: " << (fs::path(arguments.report_dir) / "index.html").string() << "\n";
+  // Once per run: which renderer lacks baselines, so a CI image whose GL_RENDERER or
+  // GL_VERSION changed does not stop checking pixels unnoticed.
+  for (const auto& [renderer, count] : without_baseline) {
+    out << "pixels " << (require_pixels ? "required but not checked" : "unchecked") << ": "
+        << count << " of " << cases.size() << " frames drawn by '" << renderer
+        << "', which has no baseline; "
+        << (require_pixels ? "they failed (--require-pixels)"
+                           : "their physics was checked (fail instead: --require-pixels or "
+                             "IMPULSE2D_REQUIRE_PIXELS=1)")
+        << "; add baselines on this renderer with impulse2d golden update <scene files>\n";
+  }
   return failed == 0 ? kGoldenPassed : kGoldenFailed;
 }
 
@@ -212,9 +230,15 @@ int run_golden_command(const GoldenCommandArguments& arguments, std::ostream& ou
     const GoldenPlan plan = plan_golden_command(arguments);
     if (arguments.action == "frame") return render_one_frame(arguments, plan);
     recover_interrupted_updates(plan, err);
+    GoldenCommandArguments effective = arguments;
+    try {
+      effective.require_pixels = arguments.require_pixels || require_pixels_from_environment();
+    } catch (const GoldenError& error) {
+      throw demos::UsageError(error.what());
+    }
     int status = kGoldenFailed;
     try {
-      status = check_or_update(arguments, plan, out);
+      status = check_or_update(effective, plan, out);
     } catch (const demos::Interrupted& interrupted) {
       throw demos::Interrupted(interrupted.signal_number(),
                                interrupted.what() + nothing_changed(arguments));

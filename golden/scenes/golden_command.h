@@ -12,6 +12,9 @@
 ///   two) into PNG and its state hash into PNG.hash.
 /// Failures leave their artifacts and index.html in `--report DIR` (default
 /// golden_artifacts), which holds only this run's results; `--junit FILE` writes JUnit XML.
+/// Frames whose renderer has no baseline are checked by their physics only, and the run
+/// ends with one line per such renderer saying how many frames went unchecked for pixels;
+/// `--require-pixels` (or IMPULSE2D_REQUIRE_PIXELS=1) makes each of them a failure.
 /// An update is a transaction (staged_update.h): an interrupted or failed one leaves the
 /// whole old set of goldens, a finished one the whole new set.
 
@@ -29,6 +32,9 @@ struct GoldenCommandArguments {
   std::string junit;                ///< JUnit XML file; empty: none
   int repeat = 1;                   ///< check: processes per frame (1 or 2)
   bool all = false;                 ///< update: rewrite every golden, not only failing ones
+  /// check: a frame drawn by a renderer without a baseline fails instead of being checked by
+  /// its physics only (also set by IMPULSE2D_REQUIRE_PIXELS=1).
+  bool require_pixels = false;
   std::string frame;                ///< frame: the golden frame's name
   std::string out;                  ///< frame: the PNG to write
   std::string executable;           ///< this program, for the second process

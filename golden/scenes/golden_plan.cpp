@@ -71,6 +71,11 @@ GoldenPlan plan_golden_command(const GoldenCommandArguments& arguments) {
   if (arguments.repeat != 1 && arguments.repeat != 2) {
     throw demos::UsageError("--repeat " + std::to_string(arguments.repeat) + ": must be 1 or 2");
   }
+  try {
+    require_pixels_from_environment();
+  } catch (const GoldenError& error) {
+    throw demos::UsageError(error.what());
+  }
   if (arguments.action == "update" && is_ci(std::getenv("CI"))) {
     throw demos::UsageError("golden update refused: CI is set, and CI never writes its own "
                             "goldens; run it locally and commit the reviewed goldens");
@@ -134,6 +139,9 @@ void print_golden_plan(const GoldenCommandArguments& arguments, const GoldenPlan
   } else {
     out << "  goldens: none (check)";
     if (arguments.repeat == 2) out << "; a second process renders each frame";
+    if (arguments.require_pixels || require_pixels_from_environment()) {
+      out << "; a frame whose renderer has no baseline fails (pixels required)";
+    }
     out << "\n";
   }
   out << "  report: " << arguments.report_dir << "/ (replaced; index.html and the failures' "

@@ -10,6 +10,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -101,8 +102,31 @@ TEST_F(GoldenCommand, RoundingSizedChangeIsNumericalNoise) {
   EXPECT_EQ(result.out.find("behaviour changed"), std::string::npos) << result.out;
 }
 
+/// The PNG this run's renderer compares `dominoes/<name>` with: the golden itself, or, when
+/// another renderer drew the goldens (e.g. GALLIUM_DRIVER=softpipe), that renderer's baseline,
+/// written first by `golden update` when it has none.
+fs::path pixel_baseline(const fs::path& goldens, const std::string& name,
+                        const std::function<Result(const std::string&)>& run) {
+  const Result probe = run("check scenes/dominoes.json");
+  if (probe.out.find("no baseline for this renderer") == std::string::npos) {
+    return goldens / (name + ".png");
+  }
+  const Result update = run("update scenes/dominoes.json");
+  EXPECT_EQ(update.status, 0) << update.out << update.err;
+  for (const auto& entry : fs::directory_iterator(goldens)) {
+    const std::string file = entry.path().filename().string();
+    if (file.rfind(name + "@", 0) == 0 && entry.path().extension() == ".png") return entry.path();
+  }
+  ADD_FAILURE() << "golden update wrote no baseline for this renderer: " << update.out;
+  return goldens / (name + ".png");
+}
+
 TEST_F(GoldenCommand, PixelChangeWithTheSamePhysicsIsRasterisation) {
-  const fs::path golden = project_ / "scenes" / "goldens" / "dominoes" / "start.png";
+  // On the goldens' renderer the golden's pixels change; on another one, its baseline's.
+  const fs::path golden = pixel_baseline(project_ / "scenes" / "goldens" / "dominoes", "start",
+                                         [this](const std::string& arguments) {
+                                           return run(arguments);
+                                         });
   image::Image image = image::load_png(golden);
   image::Rgba pixel = image.pixel(300, 150);
   pixel.r = static_cast<std::uint8_t>(pixel.r ^ 0x40);
@@ -113,6 +137,38 @@ TEST_F(GoldenCommand, PixelChangeWithTheSamePhysicsIsRasterisation) {
   EXPECT_NE(result.out.find("golden 'dominoes/start': rasterisation differs"), std::string::npos)
       << result.out;
   EXPECT_NE(junit().find("type=\"rasterisation_differs\""), std::string::npos) << junit();
+}
+
+TEST_F(GoldenCommand, RequirePixelsFailsWithoutABaselineForTheRenderer) {
+  // softpipe has no baseline in the example project: only the physics could be checked.
+  const std::string softpipe = "CI= GALLIUM_DRIVER=softpipe";
+  const Result required =
+      run("check scenes/dominoes.json --require-pixels --junit junit.xml", softpipe);
+  EXPECT_EQ(required.status, 1) << required.out << required.err;
+  EXPECT_NE(required.out.find("FAIL golden 'dominoes/start': renderer baseline required: "
+                              "pixels are required"),
+            std::string::npos)
+      << required.out;
+  EXPECT_NE(required.out.find("pixels required but not checked: 3 of 3 frames drawn by "
+                              "'softpipe"),
+            std::string::npos)
+      << required.out;
+  EXPECT_NE(junit().find("failures=\"3\""), std::string::npos) << junit();
+  EXPECT_NE(junit().find("type=\"renderer_baseline_required\""), std::string::npos) << junit();
+
+  // The environment variable does the same for ctest and scripts; a bad value is bad input.
+  const Result by_environment =
+      run("check scenes/dominoes.json", softpipe + " IMPULSE2D_REQUIRE_PIXELS=1");
+  EXPECT_EQ(by_environment.status, 1) << by_environment.out << by_environment.err;
+  const Result bad = run("check scenes/dominoes.json", softpipe + " IMPULSE2D_REQUIRE_PIXELS=yes");
+  EXPECT_EQ(bad.status, 2) << bad.out << bad.err;
+  EXPECT_NE(bad.err.find("IMPULSE2D_REQUIRE_PIXELS='yes'"), std::string::npos) << bad.err;
+
+  // With the renderer's baselines written, pixels are checked and the requirement is met.
+  EXPECT_EQ(run("update scenes/dominoes.json", softpipe).status, 0);
+  const Result met = run("check scenes/dominoes.json --require-pixels", softpipe);
+  EXPECT_EQ(met.status, 0) << met.out << met.err;
+  EXPECT_EQ(met.out.find("pixels"), std::string::npos) << met.out;
 }
 
 TEST_F(GoldenCommand, MissingGoldenFailsAndUpdateWritesIt) {
@@ -145,6 +201,10 @@ TEST_F(GoldenCommand, AnotherRendererChecksThePhysicsUntilItHasItsOwnBaseline) {
       << physics_only.out;
   EXPECT_NE(physics_only.out.find("impulse2d golden update"), std::string::npos);
   EXPECT_NE(physics_only.out.find("(3 by their physics only"), std::string::npos);
+  // Said once per run: which renderer lacks baselines and how many frames went unchecked.
+  EXPECT_NE(physics_only.out.find("pixels unchecked: 3 of 3 frames drawn by 'softpipe"),
+            std::string::npos)
+      << physics_only.out;
   EXPECT_NE(junit().find("skipped=\"3\""), std::string::npos) << junit();
 
   // The physics is still checked on that renderer.

@@ -28,4 +28,9 @@ CheckOutcome check_golden_variant(const std::string& golden, const SceneVariant&
                           scene_frame_producer(*spec, change), settings);
 }
 
+bool passes_on_this_renderer(const CheckOutcome& outcome) {
+  return !outcome.golden_written && (outcome.failure_class == FailureClass::None ||
+                                     outcome.failure_class == FailureClass::NoRendererBaseline);
+}
+
 }  // namespace impulse2d::golden::testing

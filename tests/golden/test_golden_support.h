@@ -24,4 +24,10 @@ CheckSettings suite_settings();
 /// `std::logic_error` for an unknown golden.
 CheckOutcome check_golden_variant(const std::string& golden, const SceneVariant& change);
 
+/// True when the check passed on this run's renderer: the frame matched its golden, or
+/// another renderer without a baseline drew it and the physics matched (pixels unchecked).
+/// What "unchanged" means on any renderer (llvmpipe with the committed goldens, softpipe
+/// without baselines).
+bool passes_on_this_renderer(const CheckOutcome& outcome);
+
 }  // namespace impulse2d::golden::testing
