@@ -229,6 +229,7 @@ void World::remove_body(BodyId id) {
   // Forget its contacts now so nothing refers to the dead slot.
   erase_contacts_of(state_->contacts, id);
   erase_contacts_of(state_->sleeping_contacts, id);
+  if (state_->living_joint_count > 0) state_->destroy_joints_of(id);
 }
 
 bool World::is_valid(BodyId id) const { return is_living(*state_, id); }
@@ -393,8 +394,8 @@ void World::step() {
                           world.stats.narrow_phase_ms - world.stats.integrate_ms -
                           world.stats.position_ms;
   if (world.settings.enable_sleeping) {
-    world.sleep_islands.update(world.bodies, world.alive, world.contacts, world.settings,
-                               world.settings.time_step);
+    world.sleep_islands.update(world.bodies, world.alive, world.contacts, world.joints,
+                               world.joint_alive, world.settings, world.settings.time_step);
   }
   finish_bodies(world);
   world.time += static_cast<double>(world.settings.time_step);

@@ -6,6 +6,7 @@
 #include "core/body.h"
 #include "core/contact.h"
 #include "core/debug_draw.h"
+#include "core/joint.h"
 #include "core/settings.h"
 #include "core/step_stats.h"
 
@@ -100,6 +101,54 @@ class World {
   void apply_angular_impulse(BodyId id, float impulse);
   /// Wakes a sleeping body (or puts an awake one to sleep).
   void set_awake(BodyId id, bool awake);
+
+  /// Creates a hinge between two distinct living bodies (wakes both). Throws `Error` on a
+  /// stale handle, equal bodies or a non-finite or out-of-range field (lower > upper, a
+  /// negative hertz, damping ratio, max torque).
+  JointId create_joint(const RevoluteJointDef& def);
+  /// Creates a slider (wakes both bodies); throws as the revolute overload (the axis must
+  /// not be zero).
+  JointId create_joint(const PrismaticJointDef& def);
+  /// Creates a distance joint, rope or spring (wakes both bodies); throws as the revolute
+  /// overload (min_length <= max_length, lengths >= 0).
+  JointId create_joint(const DistanceJointDef& def);
+  /// Creates a weld (wakes both bodies); throws as the revolute overload.
+  JointId create_joint(const WeldJointDef& def);
+  /// Creates a wheel joint (wakes both bodies); throws as the prismatic overload.
+  JointId create_joint(const WheelJointDef& def);
+  /// Creates a motor joint (wakes both bodies); throws as the revolute overload
+  /// (correction_factor in [0, 1]).
+  JointId create_joint(const MotorJointDef& def);
+  /// Creates a mouse joint (wakes body B); throws as the revolute overload (hertz > 0).
+  JointId create_joint(const MouseJointDef& def);
+  /// Destroys a joint and wakes its bodies; its handle becomes stale. Throws `Error` on a
+  /// stale or null handle. Removing a body destroys its joints the same way.
+  void destroy_joint(JointId id);
+  /// True when `id` names a living joint.
+  bool is_valid(JointId id) const;
+  /// The joint's type. Throws `Error` on a stale or null handle.
+  JointType joint_type(JointId id) const;
+  /// The joint's first body. Throws `Error` on a stale or null handle.
+  BodyId joint_body_a(JointId id) const;
+  /// The joint's second body. Throws `Error` on a stale or null handle.
+  BodyId joint_body_b(JointId id) const;
+  /// Handles of all living joints in ascending slot order (stable across runs).
+  std::vector<JointId> joint_ids() const;
+  /// Number of living joints.
+  int joint_count() const;
+  /// The force (N, world axes) the joint applied to body B over the last step's last
+  /// (sub-)step (its accumulated impulse / that step); A received the opposite. 0 for a
+  /// joint that was not solved (both bodies asleep or not dynamic). Throws on a stale handle.
+  vec2 joint_reaction_force(JointId id) const;
+  /// The torque (N m) the joint applied to body B about its anchor over the last step's last
+  /// (sub-)step, as `joint_reaction_force`. Throws on a stale handle.
+  float joint_reaction_torque(JointId id) const;
+  /// Moves a mouse joint's target (world metres) and wakes its body. Throws `Error` on a
+  /// stale handle or a joint of another type.
+  void set_mouse_target(JointId id, vec2 target);
+  /// Sets the motor speed of a revolute (rad/s), prismatic (m/s), wheel (rad/s) or distance
+  /// (m/s) joint and wakes its bodies. Throws `Error` on a stale handle or another type.
+  void set_joint_motor_speed(JointId id, float speed);
 
   /// Advances the simulation by one fixed step of `settings().time_step` seconds.
   void step();

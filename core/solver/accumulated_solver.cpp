@@ -4,6 +4,7 @@
 #include "core/solver/contact_friction_state.h"
 #include "core/solver/contact_prepare.h"
 #include "core/solver/contact_solver_internal.h"
+#include "core/solver/joint_solver.h"
 #include "core/solver/normal_block_solve.h"
 #include "core/solver/shock_propagation.h"
 
@@ -44,8 +45,22 @@ void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context)
     stages.integrate_velocities(h);
     plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false,
                         stages.solver_body_flags());
+    // Joints: warm-started accumulated impulses, solved before the contacts in every pass; their
+    // rigid parts carry the soft position bias (no relax pass: positions follow the solved
+    // velocities, as in Box2D v2.4's soft joints).
+    const bool joints = stages.has_joints();
+    JointPass joint_pass;
+    joint_pass.h = h;
+    joint_pass.joint_softness = context.joint_softness;
+    if (joints) {
+      stages.prepare_joints(h, /*clear_impulses=*/!context.warm_starting);
+      if (context.warm_starting) warm_start_joints(stages.solver_joints(), bodies);
+    }
     if (context.warm_starting) warm_start_contacts(contacts, bodies);
-    for (int i = 0; i < context.velocity_iterations; ++i) solve_pass(contacts, bodies, context);
+    for (int i = 0; i < context.velocity_iterations; ++i) {
+      if (joints) solve_joints(stages.solver_joints(), bodies, joint_pass);
+      solve_pass(contacts, bodies, context);
+    }
     if (context.shock_propagation) {
       SupportOrder& order = stages.solver_support_order();
       build_support_order(contacts, bodies, context.gravity, context.velocity_iterations, order);

@@ -2,6 +2,7 @@
 
 #include "core/solver/contact_bounce.h"
 #include "core/solver/contact_prepare.h"
+#include "core/solver/joint_solver.h"
 #include "core/solver/contact_solver_internal.h"
 
 #include <cmath>
@@ -67,7 +68,18 @@ void PerIterationSolver::step(SolverStages& stages, const SolverContext& context
     }
     plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false,
                         stages.solver_body_flags());
-    for (int i = 0; i < context.velocity_iterations; ++i) solve_pass(contacts, bodies, context);
+    // Joints in the tutorial's form: no memory between steps (nothing warm started), each
+    // pass's limit impulse only pushes; motors and force limits bound the step's running total.
+    const bool joints = stages.has_joints();
+    JointPass joint_pass;
+    joint_pass.h = h;
+    joint_pass.joint_softness = context.joint_softness;
+    joint_pass.accumulate = false;
+    if (joints) stages.prepare_joints(h, /*clear_impulses=*/true);
+    for (int i = 0; i < context.velocity_iterations; ++i) {
+      if (joints) solve_joints(stages.solver_joints(), bodies, joint_pass);
+      solve_pass(contacts, bodies, context);
+    }
     if (!context.explicit_euler) stages.integrate_positions(h);  // with the new velocity
     apply_bounces(contacts, bodies);
     stages.correct_positions();

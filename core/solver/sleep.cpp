@@ -15,8 +15,9 @@ std::uint32_t SleepIslands::find_root(std::uint32_t slot) {
 }
 
 void SleepIslands::update(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                          const std::vector<Contact>& contacts, const WorldSettings& settings,
-                          float dt) {
+                          const std::vector<Contact>& contacts, const std::vector<Joint>& joints,
+                          const std::vector<std::uint8_t>& joint_alive,
+                          const WorldSettings& settings, float dt) {
   const std::size_t count = bodies.size();
   const float linear_limit_sq = settings.sleep_linear_speed * settings.sleep_linear_speed;
   for (std::size_t i = 0; i < count; ++i) {
@@ -52,6 +53,32 @@ void SleepIslands::update(std::vector<Body>& bodies, const std::vector<std::uint
     };
     if (is_moving_kinematic(a) && b_dynamic) disturb(b);
     if (is_moving_kinematic(b) && a_dynamic) disturb(a);
+  }
+
+  // Jointed bodies share an island (a joint to a static body does not link through it; a
+  // moving kinematic body keeps what it is jointed to awake, as a contact does).
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    if (!joint_alive[j]) continue;
+    const Joint& joint = joints[j];
+    Body& a = bodies[joint.body_a.index];
+    Body& b = bodies[joint.body_b.index];
+    if (a.type == BodyType::Dynamic && b.type == BodyType::Dynamic) {
+      const std::uint32_t root_a = find_root(joint.body_a.index);
+      const std::uint32_t root_b = find_root(joint.body_b.index);
+      if (root_a != root_b) parent_[std::max(root_a, root_b)] = std::min(root_a, root_b);
+    }
+    auto moving_kinematic = [](const Body& body) {
+      return body.type == BodyType::Kinematic &&
+             (body.linear_velocity != vec2(0.0f) || body.angular_velocity != 0.0f);
+    };
+    if (moving_kinematic(a) && b.type == BodyType::Dynamic) {
+      b.awake = true;
+      b.sleep_time = 0.0f;
+    }
+    if (moving_kinematic(b) && a.type == BodyType::Dynamic) {
+      a.awake = true;
+      a.sleep_time = 0.0f;
+    }
   }
 
   for (std::uint32_t i = 0; i < count; ++i) {

@@ -5,6 +5,7 @@
 
 #include "core/solver/body_state.h"
 #include "core/contact.h"
+#include "core/solver/joint_solver.h"
 #include "core/settings.h"
 
 #include <cstdint>
@@ -16,11 +17,12 @@ namespace impulse2d {
 class SleepIslands {
  public:
   /// Advances each awake dynamic body's slow-time by `dt`, builds islands from the enabled
-  /// contacts (static bodies do not join islands; a moving kinematic body keeps what touches it
+  /// contacts and the living joints (static bodies do not join islands; a moving kinematic body keeps what touches it
   /// awake), then sends to sleep every island whose members have all been slow for
   /// `settings.time_to_sleep` and wakes every island that has a sleeping and a fast member.
   void update(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-              const std::vector<Contact>& contacts, const WorldSettings& settings, float dt);
+              const std::vector<Contact>& contacts, const std::vector<Joint>& joints,
+              const std::vector<std::uint8_t>& joint_alive, const WorldSettings& settings, float dt);
 
  private:
   std::uint32_t find_root(std::uint32_t slot);

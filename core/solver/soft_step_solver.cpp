@@ -3,6 +3,7 @@
 #include "core/solver/contact_bounce.h"
 #include "core/solver/contact_friction_state.h"
 #include "core/solver/contact_solver_internal.h"
+#include "core/solver/joint_solver.h"
 #include "core/solver/shock_propagation.h"
 #include "core/solver/wide_contact_solver.h"
 
@@ -29,6 +30,13 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   // (and around the bounce stages, which work on them).
   stages.begin_solver_bodies();
   SolverBodies& states = stages.solver_body_states();
+  // Joints (Box2D v3's order): in every stage before the contacts, same sub-steps and relax.
+  const bool joints = stages.has_joints();
+  std::vector<Joint>& joint_list = stages.solver_joints();
+  JointPass joint_pass;
+  joint_pass.h = h;
+  joint_pass.joint_softness = context.joint_softness;
+  if (joints) stages.prepare_joints(h, /*clear_impulses=*/!context.warm_starting);
   for (int substep = 0; substep < context.substeps; ++substep) {
     stages.integrate_solver_velocities(h);
     if (may_bounce) {
@@ -39,8 +47,11 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
                           stages.solver_body_flags());
       wide.load_points(contacts);
     }
+    if (joints && context.warm_starting) warm_start_joints(joint_list, states.states());
     if (context.warm_starting) wide.warm_start(states.states());
+    joint_pass.use_bias = true;
     for (int i = 0; i < context.velocity_iterations; ++i) {
+      if (joints) solve_joints(joint_list, states.states(), joint_pass);
       wide.solve(context, /*use_bias=*/true, states.states());
     }
     if (shock) {
@@ -52,7 +63,9 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
       states.load(bodies);
     }
     stages.integrate_solver_positions(h);
+    joint_pass.use_bias = false;
     for (int i = 0; i < context.velocity_iterations; ++i) {
+      if (joints) solve_joints(joint_list, states.states(), joint_pass);
       wide.solve(context, /*use_bias=*/false, states.states());  // relax
     }
     if (may_bounce) {

@@ -25,6 +25,7 @@ SolverContext resolve_solver_context(const WorldSettings& settings) {
   const float hertz = std::min(settings.contact_hertz, 0.25f / context.substep);
   context.dynamic_softness = make_soft(hertz, settings.contact_damping_ratio, context.substep);
   context.static_softness = make_soft(2.0f * hertz, settings.contact_damping_ratio, context.substep);
+  context.joint_softness = make_soft(2.0f * hertz, 2.0f, context.substep);
   context.push_max_speed = settings.contact_push_max_speed;
   context.solver_lanes = settings.solver_lanes;
   context.catch_speed = 2.0f * std::sqrt(length_squared(settings.gravity)) * settings.time_step;

@@ -28,6 +28,9 @@ struct SolverContext {
   Softness dynamic_softness;
   /// Soft contact against a static or kinematic body: twice as stiff (SoftStep).
   Softness static_softness;
+  /// The rigid parts of joints: a spring of twice the contact hertz, damping ratio 2, over one
+  /// sub-step (Box2D v3's joint softness); the relax pass drops its bias.
+  Softness joint_softness;
   float push_max_speed = 0.0f;     ///< m/s: fastest soft push-out (SoftStep)
   /// m/s: approach speed above which a point is being caught, not resting: twice what gravity
   /// adds in a step (`ContactPoint::caught`).

@@ -50,6 +50,20 @@ void move_contacts(std::vector<Contact>& from, std::vector<Contact>& into,
   from.erase(from.begin() + static_cast<std::ptrdiff_t>(stayed), from.end());
 }
 
+// Removes from `pairs` (ascending) every pair in `unconnected` (ascending keys a << 32 | b):
+// bodies joined by a joint without `collide_connected` never make contacts. One merge walk.
+void drop_jointed_pairs(const std::vector<std::uint64_t>& unconnected, std::vector<BodyPair>& pairs) {
+  std::size_t key = 0;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const std::uint64_t pair_key = static_cast<std::uint64_t>(pairs[i].first) << 32 | pairs[i].second;
+    while (key < unconnected.size() && unconnected[key] < pair_key) ++key;
+    if (key < unconnected.size() && unconnected[key] == pair_key) continue;
+    pairs[kept++] = pairs[i];
+  }
+  pairs.resize(kept);
+}
+
 }  // namespace
 
 // Last step's contacts whose bodies no longer move would be dropped by the narrow phase (no
@@ -93,6 +107,7 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
                              world_.settings.speculative_margin, world_.speculative_bounds);
   world_.broad_phase.find_pairs(world_.bodies, world_.alive, world_.speculative_bounds,
                                 world_.settings.broad_phase, world_.pairs);
+  if (!world_.unconnected_pairs.empty()) drop_jointed_pairs(world_.unconnected_pairs, world_.pairs);
   world_.stats.broad_phase_ms += elapsed_ms(stage);
 
   stage = Clock::now();
@@ -119,6 +134,11 @@ void SolverStages::integrate_positions(float dt) {
         world_.bodies, world_.alive, world_.settings, dt, world_.broad_phase);  // no tunnelling
   }
   world_.stats.integrate_ms += elapsed_ms(stage);
+}
+
+void SolverStages::prepare_joints(float h, bool clear_impulses) {
+  impulse2d::prepare_joints(world_.joints, world_.joint_alive, world_.bodies, world_.settings, h,
+                            clear_impulses);
 }
 
 void SolverStages::begin_solver_bodies() {

@@ -52,6 +52,13 @@ class SolverStages {
   /// step, after its sub-steps, as its contacts are found once a step: a bullet stopped
   /// within a sub-step would have no contact to meet in the next one.
   void sweep_bullets(float dt);
+  /// True when the world has joints (the solvers' joint passes have work).
+  bool has_joints() const { return world_.living_joint_count > 0; }
+  /// Prepares the joints for a step of `h`-second sub-steps (`joint_solver.h`); with
+  /// `clear_impulses`, without last step's impulses.
+  void prepare_joints(float h, bool clear_impulses);
+  /// Every joint slot (inactive ones are skipped by the joint passes).
+  std::vector<Joint>& solver_joints() { return world_.joints; }
   /// Removes overlap left after the velocity solve, by the world's position correction method.
   void correct_positions();
   /// This step's contacts, sorted by pair.

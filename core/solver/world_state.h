@@ -8,6 +8,7 @@
 #include "core/contact.h"
 #include "core/settings.h"
 #include "core/solver/body_state.h"
+#include "core/solver/joint_solver.h"
 #include "core/solver/shock_propagation.h"
 #include "core/solver/sleep.h"
 #include "core/solver/solver_bodies.h"
@@ -33,6 +34,14 @@ struct WorldState {
   std::vector<std::uint32_t> free_slots;  ///< removed slots, reused lowest-first
   int living_body_count = 0;              ///< bodies in living slots
 
+  std::vector<Joint> joints;              ///< slots, indexed by JointId::index
+  std::vector<std::uint8_t> joint_alive;  ///< 1 where the slot holds a joint
+  std::vector<std::uint32_t> free_joint_slots;  ///< destroyed slots, reused lowest-first
+  int living_joint_count = 0;             ///< joints in living slots
+  /// (a.index << 32 | b.index), a.index < b.index, of every joint whose bodies must not
+  /// collide, ascending (repeats allowed): the broad phase's pairs skip these.
+  std::vector<std::uint64_t> unconnected_pairs;
+
   std::vector<Contact> contacts;          ///< sorted by (a.index, b.index)
   std::vector<Contact> spilled_contacts;  ///< the narrow phase's scratch (reused buffer)
   std::vector<Contact> sleeping_contacts; ///< pairs with no moving body, sorted by pair
@@ -57,6 +66,11 @@ struct WorldState {
   double time = 0.0;                      ///< simulated seconds
   std::int64_t step_count = 0;            ///< steps taken
   float accumulator = 0.0f;               ///< `World::advance`'s left-over time, seconds
+
+  /// Destroys every joint of body `id` (waking their other bodies).
+  void destroy_joints_of(BodyId id);
+  /// Rebuilds `unconnected_pairs` from the living joints.
+  void rebuild_unconnected_pairs();
 
   /// The state of `world` (for the core's own functions and white-box tests).
   static const WorldState& of(const World& world) { return *world.state_; }
