@@ -45,11 +45,10 @@ void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context)
     stages.integrate_velocities(h);
     plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false,
                         stages.solver_body_flags());
-    // Joints: warm-started accumulated impulses, solved before the contacts in every pass; their
-    // rigid parts carry the soft position bias (no relax pass: positions follow the solved
-    // velocities, as in Box2D v2.4's soft joints).
+    // Joints: warm-started accumulated impulses, solved before the contacts in every pass with
+    // the soft position bias, and relaxed without it after the positions move.
     const bool joints = stages.has_joints();
-    JointPass joint_pass;
+    JointPass joint_pass;  // (declared here: the relax below reuses it)
     joint_pass.h = h;
     joint_pass.joint_softness = context.joint_softness;
     if (joints) {
@@ -68,6 +67,12 @@ void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context)
     }
     if (context.friction) update_friction_state(contacts, bodies);
     if (!context.explicit_euler) stages.integrate_positions(h);  // with the new velocity
+    if (joints) {
+      // Relax (the soft step's): the joints' bias velocity has moved the bodies back towards
+      // their anchors; without it the next step would start with that velocity still in them.
+      joint_pass.use_bias = false;
+      for (int i = 0; i < context.velocity_iterations; ++i) solve_joints(stages.solver_joints(), bodies, joint_pass);
+    }
     apply_bounces(contacts, bodies);
     stages.correct_positions();
   }

@@ -139,7 +139,7 @@ void solve_point(Joint& joint, JointBody& a, JointBody& b, const Anchors& r, con
 
 void solve_revolute(Joint& joint, JointBody& a, JointBody& b, const JointPass& pass) {
   const float mass = angular_mass(joint);
-  if (joint.enable_spring && joint.hertz > 0.0f) {
+  if (joint.enable_spring && joint.hertz > 0.0f && pass.use_bias) {
     const float impulse = spring_impulse(joint.spring_softness, joint_angle(joint, a, b),
                                          b.angular_velocity - a.angular_velocity, mass,
                                          joint.spring_impulse);
@@ -225,7 +225,7 @@ float axial_mass(const Joint& joint, float arm_a, float arm_b) {
 void solve_axis_parts(Joint& joint, JointBody& a, JointBody& b, const AxisFrame& f,
                       const JointPass& pass, bool linear_motor) {
   const float mass = axial_mass(joint, f.a1, f.a2);
-  if (joint.enable_spring && joint.hertz > 0.0f) {
+  if (joint.enable_spring && joint.hertz > 0.0f && pass.use_bias) {
     const float impulse = spring_impulse(joint.spring_softness, f.translation,
                                          axial_rate(a, b, f.axis, f.a1, f.a2), mass,
                                          joint.spring_impulse);
@@ -305,7 +305,7 @@ void solve_distance(Joint& joint, JointBody& a, JointBody& b, const JointPass& p
   const float mass = axial_mass(joint, arm_a, arm_b);
   auto rate = [&] { return glm::dot(axis, relative_velocity(a, b, r)); };
   const bool free_range = joint.enable_spring && joint.min_length < joint.max_length;
-  if (free_range && joint.hertz > 0.0f) {
+  if (free_range && joint.hertz > 0.0f && pass.use_bias) {
     const float impulse =
         spring_impulse(joint.spring_softness, length - joint.length, rate(), mass, joint.spring_impulse);
     apply_axial(joint, a, b, axis, arm_a, arm_b, impulse);

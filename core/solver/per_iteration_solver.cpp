@@ -81,6 +81,11 @@ void PerIterationSolver::step(SolverStages& stages, const SolverContext& context
       solve_pass(contacts, bodies, context);
     }
     if (!context.explicit_euler) stages.integrate_positions(h);  // with the new velocity
+    if (joints) {
+      // Relax (the soft step's): take the joints' bias velocity back out after it moved them.
+      joint_pass.use_bias = false;
+      for (int i = 0; i < context.velocity_iterations; ++i) solve_joints(stages.solver_joints(), bodies, joint_pass);
+    }
     apply_bounces(contacts, bodies);
     stages.correct_positions();
   }
