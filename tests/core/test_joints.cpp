@@ -204,7 +204,246 @@ TEST_P(Joints, DistanceSpringDampingRatioDecay) {
   EXPECT_NEAR(measured / (exact + numerical), 1.0, 0.02);
 }
 
+// A disc on a revolute motor (speed 2 rad/s, max torque 10 N m) against a load torque: below
+// the max the speed is the set speed (the motor's impulse is exact: one equation); above it
+// the disc is turned back. The threshold is the max torque itself: checked at +-1 %.
+float motor_end_speed(SolverMethod method, float load) {
+  World world(settings_of(method));
+  const BodyId ground = add_ground(world);
+  const BodyId disc = add_ball(world, {0.0f, 0.0f}, 0.5f);
+  RevoluteJointDef def;
+  def.body_a = ground;
+  def.body_b = disc;
+  def.enable_motor = true;
+  def.motor_speed = 2.0f;
+  def.max_motor_torque = 10.0f;
+  world.create_joint(def);
+  for (int i = 0; i < 120; ++i) {
+    world.apply_torque(disc, -load);
+    world.step();
+  }
+  return world.body(disc).angular_velocity;
+}
+
+TEST_P(Joints, RevoluteMotorSpeedAndStallTorque) {
+  const float light = motor_end_speed(GetParam(), 1.0f);
+  const float below = motor_end_speed(GetParam(), 9.9f);
+  const float above = motor_end_speed(GetParam(), 10.1f);
+  std::printf("motor speeds %.6f %.6f %.6f\n", light, below, above);
+  EXPECT_NEAR(light, 2.0f, 1e-4f);  // float rounding of a few impulses
+  EXPECT_NEAR(below, 2.0f, 1e-4f);
+  EXPECT_LT(above, 0.0f);
+}
+
+// A body on a horizontal prismatic (gravity across the axis) driven at 1 m/s towards an upper
+// limit of 0.5 m: the speed is the motor's, and it stops at the limit (overshoot < 1 mm).
+// DISABLED: fails today (the slider runs 0.22 m past the upper limit under a 1000 N motor in the
+// soft step; 0.9 m in the accumulated solver): a defect in the prismatic limit to find.
+TEST_P(Joints, DISABLED_PrismaticMotorSpeedAndLimit) {
+  World world(settings_of(GetParam()));
+  const BodyId ground = add_ground(world);
+  const BodyId slider = add_ball(world, {0.0f, -1.0f}, 0.1f);
+  PrismaticJointDef def;
+  def.body_a = ground;
+  def.body_b = slider;
+  def.local_anchor_a = {0.0f, -1.0f};
+  def.local_axis_a = {1.0f, 0.0f};
+  def.enable_motor = true;
+  def.motor_speed = 1.0f;
+  def.max_motor_force = 1000.0f;
+  def.enable_limit = true;
+  def.lower_translation = -1.0f;
+  def.upper_translation = 0.5f;
+  world.create_joint(def);
+  for (int i = 0; i < 15; ++i) world.step();
+  EXPECT_NEAR(world.body(slider).linear_velocity.x, 1.0f, 1e-4f);
+  float highest = 0.0f;
+  for (int i = 0; i < 120; ++i) {
+    world.step();
+    highest = std::max(highest, world.body(slider).transform.position.x);
+  }
+  const BodyView end = world.body(slider);
+  std::printf("prismatic overshoot %.3e sag %.3e\n", highest - 0.5f, end.transform.position.y + 1.0f);
+  EXPECT_LT(highest - 0.5f, 1e-3f);
+  EXPECT_NEAR(end.transform.position.x, 0.5f, 1e-3f);
+  EXPECT_NEAR(end.transform.position.y, -1.0f, 1e-3f);
+}
+
+// A slack rope (bob 0.5 m below the anchor, rope 1 m) lets the bob fall freely until taut.
+TEST_P(Joints, SlackRopeIsFreeFall) {
+  World world(settings_of(GetParam()));
+  const BodyId ground = add_ground(world);
+  const BodyId bob = add_ball(world, {0.0f, -0.5f});
+  DistanceJointDef def;
+  def.body_a = ground;
+  def.body_b = bob;
+  def.length = 1.0f;
+  def.enable_spring = true;
+  def.enable_limit = true;
+  def.min_length = 0.0f;
+  def.max_length = 1.0f;
+  world.create_joint(def);
+  World free(settings_of(GetParam()));
+  const BodyId lone = add_ball(free, {0.0f, -0.5f});
+  for (int i = 0; i < 10; ++i) {  // 1/6 s: falls 0.136 m, still slack
+    world.step();
+    free.step();
+  }
+  EXPECT_EQ(world.body(bob).transform.position.y, free.body(lone).transform.position.y);
+  for (int i = 0; i < 120; ++i) world.step();
+  const float length = -world.body(bob).transform.position.y;
+  EXPECT_LE(length, 1.0f + 2e-3f);  // caught by the rope
+}
+
+// A chain of 20 links (discs 0.25 m apart) hanging from a static anchor: at rest each link
+// stays where it hangs (drift <= 1 mm), and with a last link 100 times as heavy <= 1 cm.
+double chain_drift(SolverMethod method, float load_ratio) {
+  World world(settings_of(method));
+  const BodyId ground = add_ground(world);
+  BodyId previous = ground;
+  BodyId last;
+  for (int i = 0; i < 20; ++i) {
+    const float density = i == 19 ? load_ratio : 1.0f;
+    last = add_ball(world, {0.0f, -0.25f * (i + 1)}, 0.1f, density);
+    RevoluteJointDef def;
+    def.body_a = previous;
+    def.body_b = last;
+    def.local_anchor_a = {0.0f, i == 0 ? 0.0f : -0.125f};
+    def.local_anchor_b = {0.0f, 0.125f};
+    if (i == 0) def.local_anchor_b = {0.0f, 0.25f};
+    world.create_joint(def);
+    previous = last;
+  }
+  for (int i = 0; i < 600; ++i) world.step();
+  return std::fabs(world.body(last).transform.position.y + 0.25f * 20);
+}
+
+// DISABLED: fails today: the last link sags 2.8 cm (soft step), 11-14 cm (one-step solvers);
+// 31 cm / 1.2-1.5 m with the 1:100 load. One scalar pass a sub-step does not converge a
+// 20-link chain; needs more joint passes or a stiffer joint softness (open).
+TEST_P(Joints, DISABLED_ChainDriftAtRest) {
+  const double plain = chain_drift(GetParam(), 1.0f);
+  const double loaded = chain_drift(GetParam(), 100.0f);
+  std::printf("chain drift %.3e loaded %.3e\n", plain, loaded);
+  EXPECT_LE(plain, 1e-3);
+  EXPECT_LE(loaded, 1e-2);
+}
+
+TEST_P(Joints, TwoRunsAreBitIdentical) {
+  auto run = [&] {
+    World world(settings_of(GetParam()));
+    const BodyId ground = add_ground(world);
+    const BodyId a = add_ball(world, {1.0f, 0.0f}, 0.2f);
+    const BodyId b = add_ball(world, {2.0f, 0.5f}, 0.2f);
+    RevoluteJointDef revolute;
+    revolute.body_a = ground;
+    revolute.body_b = a;
+    revolute.local_anchor_b = {-1.0f, 0.0f};
+    world.create_joint(revolute);
+    DistanceJointDef distance;
+    distance.body_a = a;
+    distance.body_b = b;
+    distance.length = 1.0f;
+    distance.enable_spring = true;
+    distance.hertz = 3.0f;
+    distance.damping_ratio = 0.2f;
+    world.create_joint(distance);
+    for (int i = 0; i < 300; ++i) world.step();
+    return world.state_hash();
+  };
+  EXPECT_EQ(run(), run());
+}
+
 INSTANTIATE_TEST_SUITE_P(AllSolvers, Joints,
                          ::testing::Values(SolverMethod::SoftStep, SolverMethod::Accumulated,
                                            SolverMethod::PerIteration),
                          method_name);
+
+TEST(JointHandles, StaleHandleIsAnErrorAndBodiesTakeTheirJoints) {
+  World world;
+  const BodyId ground = add_ground(world);
+  const BodyId a = add_ball(world, {1.0f, 0.0f});
+  const BodyId b = add_ball(world, {2.0f, 0.0f});
+  RevoluteJointDef def;
+  def.body_a = ground;
+  def.body_b = a;
+  const JointId first = world.create_joint(def);
+  def.body_a = a;
+  def.body_b = b;
+  const JointId second = world.create_joint(def);
+  EXPECT_EQ(world.joint_count(), 2);
+  world.destroy_joint(first);
+  EXPECT_FALSE(world.is_valid(first));
+  EXPECT_THROW(world.destroy_joint(first), Error);
+  EXPECT_THROW(world.joint_reaction_force(first), Error);
+  EXPECT_THROW(world.joint_type(JointId{}), Error);
+  world.remove_body(b);
+  EXPECT_FALSE(world.is_valid(second));
+  EXPECT_EQ(world.joint_count(), 0);
+  // A slot reused by a new joint does not revive the old handle.
+  def.body_a = ground;
+  def.body_b = a;
+  const JointId third = world.create_joint(def);
+  EXPECT_EQ(third.index, first.index);
+  EXPECT_FALSE(world.is_valid(first));
+  EXPECT_TRUE(world.is_valid(third));
+  def.body_b = ground;
+  EXPECT_THROW(world.create_joint(def), Error);  // same body twice
+  def.body_b = b;
+  EXPECT_THROW(world.create_joint(def), Error);  // removed body
+}
+
+TEST(JointHandles, CollideConnectedDecidesTheContacts) {
+  for (const bool collide : {false, true}) {
+    WorldSettings settings;
+    settings.gravity = {0.0f, 0.0f};
+    World world(settings);
+    const BodyId a = add_ball(world, {0.0f, 0.0f}, 0.5f);
+    const BodyId b = add_ball(world, {0.6f, 0.0f}, 0.5f);  // overlapping
+    WeldJointDef def;
+    def.body_a = a;
+    def.body_b = b;
+    def.local_anchor_b = {-0.6f, 0.0f};
+    def.collide_connected = collide;
+    world.create_joint(def);
+    world.step();
+    EXPECT_EQ(world.contacts().size(), collide ? 1u : 0u);
+  }
+}
+
+TEST(JointSleep, JointedBodiesSleepTogetherAndAJointWakesThem) {
+  WorldSettings settings;
+  settings.enable_sleeping = true;
+  World world(settings);
+  const BodyId ground = add_ground(world);
+  const BodyId a = add_ball(world, {0.0f, -1.0f});
+  const BodyId b = add_ball(world, {0.0f, -2.0f});
+  RevoluteJointDef def;
+  def.body_a = ground;
+  def.body_b = a;
+  def.local_anchor_b = {0.0f, 1.0f};
+  world.create_joint(def);
+  def.body_a = a;
+  def.body_b = b;
+  def.local_anchor_a = {0.0f, -0.5f};
+  def.local_anchor_b = {0.0f, 0.5f};
+  const JointId lower = world.create_joint(def);
+  for (int i = 0; i < 120; ++i) world.step();
+  EXPECT_FALSE(world.body(a).awake);
+  EXPECT_FALSE(world.body(b).awake);
+  world.destroy_joint(lower);
+  EXPECT_TRUE(world.body(a).awake);
+  EXPECT_TRUE(world.body(b).awake);
+  MouseJointDef mouse;
+  mouse.body_a = ground;
+  mouse.body_b = b;
+  mouse.target = {0.0f, -2.0f};
+  mouse.max_force = 100.0f;
+  const JointId drag = world.create_joint(mouse);
+  for (int i = 0; i < 120; ++i) world.step();
+  EXPECT_FALSE(world.body(b).awake);
+  world.set_mouse_target(drag, {1.0f, -2.0f});
+  EXPECT_TRUE(world.body(b).awake);
+  for (int i = 0; i < 240; ++i) world.step();
+  EXPECT_NEAR(world.body(b).transform.position.x, 1.0f, 0.02f);
+}
