@@ -90,6 +90,12 @@ struct Scene {
   std::function<void(World&, const Params&)> build;
   ScriptFactory script;             ///< optional per-step behaviour (empty: none)
   std::vector<SceneEvent> events;   ///< scripted events, any order (sorted by the run)
+  /// Joints the run creates right after `build`, in this order (scene files' `joints`;
+  /// built-in scenes usually create theirs in `build`). Named ones can be named by events.
+  std::vector<JointSpec> joints;
+  /// Things a scene file allows but that are probably mistakes ("<file>: <path>: <reason>"),
+  /// printed as warnings when the file is loaded.
+  std::vector<std::string> warnings;
   std::string source = "built-in";  ///< "built-in" or the scene file's path
   std::map<int, std::string> body_names;  ///< creation index -> name given in the scene file
 };

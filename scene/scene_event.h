@@ -8,6 +8,7 @@
 
 #include "core/body.h"
 #include "core/shape.h"
+#include "scene/scene_joint.h"
 
 namespace impulse2d::demos {
 
@@ -26,6 +27,9 @@ enum class SceneEventKind {
   Spawn,    ///< create a body
   Remove,   ///< remove a body
   Button,   ///< press or release a named button of the scene's controls
+  CreateJoint,   ///< create a joint (`joint`) between bodies that exist by then
+  DestroyJoint,  ///< destroy the joint named `joint_name`
+  MouseTarget,   ///< move the target of the mouse joint named `joint_name` to `target`
 };
 
 /// One scripted event. Bodies are named by their creation index in the run: the builder's
@@ -45,6 +49,9 @@ struct SceneEvent {
   BodySpawn spawn;               ///< Spawn: the body to create
   std::string button;            ///< Button: its name, e.g. "jump"
   bool pressed = true;           ///< Button: true = pressed, false = released
+  JointSpec joint;               ///< CreateJoint: the joint to create (it may have a name)
+  std::string joint_name;        ///< DestroyJoint, MouseTarget: the joint's name
+  vec2 target{0.0f, 0.0f};       ///< MouseTarget: new world target, metres
   std::string origin;            ///< where it was declared, for messages ("events[2]")
 };
 

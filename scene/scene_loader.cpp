@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <optional>
 
@@ -12,6 +13,7 @@
 #include "scene/character_script.h"
 #include "scene/json_cursor.h"
 #include "scene/overlays.h"
+#include "scene/scene_joint_reader.h"
 #include "scene/scene_limits.h"
 #include "scene/usage_error.h"
 #include "scene/user_file.h"
@@ -478,7 +480,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   // "golden" (the file's golden frames) belongs to `impulse2d golden`, which reads it itself
   // (golden/scenes/golden_block.h); a run ignores it.
   root.allow_only({"name", "description", "caption", "settings", "model", "materials", "bodies",
-                   "events", "camera", "run", "overlays", "view", "character", "golden"});
+                   "joints", "events", "camera", "run", "overlays", "view", "character", "golden"});
 
   Scene scene;
   scene.source = file;
@@ -524,6 +526,26 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     }
   }
 
+  // Joints between the file's bodies (spawned bodies are named only by create_joint events).
+  std::map<std::string, JointType> joint_names;  // name -> type, for the events
+  const auto name_joint = [&joint_names](const JsonCursor& node, const JointSpec& spec) {
+    if (spec.name.empty()) return;
+    if (!joint_names.emplace(spec.name, spec.type).second) {
+      node.field("name").fail("the joint name \"" + spec.name + "\" is used twice");
+    }
+  };
+  if (auto list = root.optional_field("joints")) {
+    JointBodies known;
+    known.names = &names;
+    known.count = static_cast<int>(bodies.size());
+    known.spawn = [&bodies](int index) { return &bodies[static_cast<std::size_t>(index)]; };
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const JsonCursor node = list->element(i);
+      scene.joints.push_back(read_joint(node, known, scene.warnings, file));
+      name_joint(node, scene.joints.back());
+    }
+  }
+
   std::vector<BodySpawn> spawned;  // for model inference
   if (auto events = root.optional_field("events")) {
     // Spawned bodies get creation indices in step order (stable for equal steps), as the
@@ -560,7 +582,10 @@ Scene parse_scene(const std::string& text, const std::string& file) {
                                                 {"force", SceneEventKind::Force},
                                                 {"spawn", SceneEventKind::Spawn},
                                                 {"remove", SceneEventKind::Remove},
-                                                {"button", SceneEventKind::Button}});
+                                                {"button", SceneEventKind::Button},
+                                                {"create_joint", SceneEventKind::CreateJoint},
+                                                {"destroy_joint", SceneEventKind::DestroyJoint},
+                                                {"mouse_target", SceneEventKind::MouseTarget}});
       switch (event.kind) {
         case SceneEventKind::Impulse:
           node.allow_only({"step", "type", "body", "impulse", "point", "angular_impulse"});
@@ -601,8 +626,51 @@ Scene parse_scene(const std::string& text, const std::string& file) {
           event.button = node.field("button").string();
           if (auto pressed = node.optional_field("pressed")) event.pressed = pressed->boolean();
           break;
+        case SceneEventKind::CreateJoint: {
+          node.allow_only({"step", "type", "joint"});
+          JointBodies known;
+          known.names = &names;
+          known.count = static_cast<int>(bodies.size() + spawn_index.size());
+          // Spawned bodies are not known here: no anchor warning for them.
+          known.spawn = [&bodies](int index) -> const BodySpawn* {
+            const auto slot = static_cast<std::size_t>(index);
+            return slot < bodies.size() ? &bodies[slot] : nullptr;
+          };
+          event.joint = read_joint(node.field("joint"), known, scene.warnings, file);
+          name_joint(node.field("joint"), event.joint);
+          break;
+        }
+        case SceneEventKind::DestroyJoint:
+        case SceneEventKind::MouseTarget:
+          if (event.kind == SceneEventKind::DestroyJoint) {
+            node.allow_only({"step", "type", "joint"});
+          } else {
+            node.allow_only({"step", "type", "joint", "target"});
+            event.target = node.field("target").vector_at_most(limits::max_coordinate, limits::coordinate_reason);
+          }
+          event.joint_name = node.field("joint").string();
+          break;
       }
       scene.events.push_back(std::move(event));
+    }
+
+    // Joint names of destroy_joint and mouse_target events: declared somewhere in the file
+    // (whether the joint exists at that step is the run's check).
+    for (std::size_t i = 0; i < scene.events.size(); ++i) {
+      const SceneEvent& event = scene.events[i];
+      if (event.kind != SceneEventKind::DestroyJoint && event.kind != SceneEventKind::MouseTarget) continue;
+      const JsonCursor field = events->element(i).field("joint");
+      const auto found = joint_names.find(event.joint_name);
+      if (found == joint_names.end()) {
+        std::string known;
+        for (const auto& [name, type] : joint_names) known += (known.empty() ? "" : ", ") + name;
+        field.fail("unknown joint \"" + event.joint_name + "\" (named joints: " +
+                   (known.empty() ? std::string("none") : known) + ")");
+      }
+      if (event.kind == SceneEventKind::MouseTarget && found->second != JointType::Mouse) {
+        field.fail("joint \"" + event.joint_name + "\" is a " + joint_type_name(found->second) +
+                   " joint; only a mouse joint has a target");
+      }
     }
 
     // An impulse or a force on a static or kinematic body would do nothing (the world moves
@@ -706,7 +774,9 @@ Scene parse_scene(const std::string& text, const std::string& file) {
 Scene load_scene_file(const std::string& path) {
   const UserFileKind scene_file{"scene file", "a plain .json file",
                                 static_cast<std::uintmax_t>(limits::max_scene_file_bytes), "4 MiB"};
-  return parse_scene(read_user_file(path, scene_file), path);
+  Scene scene = parse_scene(read_user_file(path, scene_file), path);
+  for (const std::string& warning : scene.warnings) std::cerr << "impulse2d: warning: " << warning << "\n";
+  return scene;
 }
 
 }  // namespace impulse2d::demos

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/error.h"
 #include "scene/interrupt.h"
 #include "scene/usage_error.h"
 
@@ -58,6 +59,45 @@ SceneRun::SceneRun(const Scene& scene, const Params& params)
     }
   }
   bodies_in_run_ = bodies_so_far;
+  for (const JointSpec& spec : scene.joints) create_joint(spec, 0);
+}
+
+void SceneRun::create_joint(const JointSpec& spec, std::int64_t step) {
+  const auto body = [&](int index) {
+    const bool exists = index >= 0 && static_cast<std::size_t>(index) < created_.size() &&
+                        world_.is_valid(created_[static_cast<std::size_t>(index)]);
+    if (!exists) {
+      throw UsageError(scene_.source + ": " + spec.origin + ": body " + std::to_string(index) +
+                       " does not exist at step " + std::to_string(step) +
+                       " (not created yet, or removed)");
+    }
+    return created_[static_cast<std::size_t>(index)];
+  };
+  const BodyId a = body(spec.body_a);
+  const BodyId b = body(spec.body_b);
+  JointId id;
+  try {
+    id = create_scene_joint(world_, spec, a, b);
+  } catch (const Error& error) {
+    throw UsageError(scene_.source + ": " + spec.origin + ": " + error.what());
+  }
+  if (!spec.name.empty()) joints_[spec.name] = id;
+}
+
+JointId SceneRun::event_joint(const SceneEvent& event) const {
+  const std::optional<JointId> id = joint_named(event.joint_name);
+  if (!id) {
+    throw UsageError(scene_.source + ": " + event.origin + ": joint \"" + event.joint_name +
+                     "\" does not exist at step " + std::to_string(event.step) +
+                     " (not created yet, destroyed, or one of its bodies was removed)");
+  }
+  return *id;
+}
+
+std::optional<JointId> SceneRun::joint_named(const std::string& name) const {
+  const auto found = joints_.find(name);
+  if (found == joints_.end() || !world_.is_valid(found->second)) return std::nullopt;
+  return found->second;
 }
 
 void SceneRun::verify_model() const {
@@ -116,6 +156,15 @@ void SceneRun::apply_event(const SceneEvent& event) {
       break;
     case SceneEventKind::Button:
       script_->button(world_, event.button, event.pressed);
+      break;
+    case SceneEventKind::CreateJoint:
+      create_joint(event.joint, event.step);
+      break;
+    case SceneEventKind::DestroyJoint:
+      world_.destroy_joint(event_joint(event));
+      break;
+    case SceneEventKind::MouseTarget:
+      world_.set_mouse_target(event_joint(event), event.target);
       break;
   }
 }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -63,6 +64,10 @@ class SceneRun {
   /// slot, or empty (the overlay then shows the slot index). Valid while this run lives.
   std::function<std::string(std::uint32_t slot)> body_labels() const;
 
+  /// The living joint named `name` in the scene (its `joints` or a create_joint event), or
+  /// nothing (not created yet, destroyed, or destroyed with one of its bodies).
+  std::optional<JointId> joint_named(const std::string& name) const;
+
   /// Where a following camera looks now: the followed body's position, or nothing when the
   /// scene's camera does not follow or the body does not exist (yet).
   std::optional<vec2> followed_position() const;
@@ -89,6 +94,11 @@ class SceneRun {
   };
   void verify_model() const;  // verify_shape_kinds, naming the scene file
   BodyId event_body(const SceneEvent& event) const;
+  // Creates a scene joint (`origin` names it in messages); throws `UsageError` when a body
+  // does not exist (yet, or any more) or the core refuses the definition.
+  void create_joint(const JointSpec& spec, std::int64_t step);
+  // The living joint an event names; throws `UsageError` naming the event otherwise.
+  JointId event_joint(const SceneEvent& event) const;
 
   const Scene& scene_;
   Params params_;
@@ -98,6 +108,7 @@ class SceneRun {
   std::size_t next_event_ = 0;
   std::vector<ActiveForce> forces_;  // force events in their window, in application order
   std::vector<BodyId> created_;  // creation index -> handle
+  std::map<std::string, JointId> joints_;  // joint name -> handle (named joints only)
   std::vector<Divergence> divergences_;
   int bodies_in_run_ = 0;
   bool strict_ = false;
