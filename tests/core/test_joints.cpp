@@ -352,6 +352,196 @@ TEST_P(Joints, DISABLED_ChainDriftAtRest) {
   EXPECT_LE(loaded.separation, 1e-2);
 }
 
+// A pendulum at rest (bob straight below its pivot): the revolute joint's reaction on the bob
+// is its weight, m g up, to float rounding (the accumulated impulse over the step, divided by it).
+TEST_P(Joints, PendulumReactionIsTheWeight) {
+  World world(settings_of(GetParam()));
+  const BodyId ground = add_ground(world);
+  const BodyId bob = add_ball(world, {0.0f, -1.0f}, 0.1f);
+  RevoluteJointDef def;
+  def.body_a = ground;
+  def.body_b = bob;
+  def.local_anchor_b = {0.0f, 1.0f};
+  const JointId joint = world.create_joint(def);
+  for (int i = 0; i < 300; ++i) world.step();
+  const vec2 force = world.joint_reaction_force(joint);
+  const float weight = world.body(bob).mass * g;
+  std::printf("pendulum reaction (%.7e, %.7e) weight %.7e rel %.2e\n", force.x, force.y, weight,
+              force.y / weight - 1.0f);
+  EXPECT_NEAR(force.y / weight, 1.0f, 1e-5f);
+  EXPECT_NEAR(force.x / weight, 0.0f, 1e-5f);
+  EXPECT_NEAR(world.joint_reaction_torque(joint), 0.0f, 1e-6f * weight);
+}
+
+// A chain of 8 links hanging at rest: each joint carries the weight of the links below it.
+TEST_P(Joints, HangingChainReactionsAreTheWeightsBelow) {
+  World world(settings_of(GetParam()));
+  const BodyId ground = add_ground(world);
+  std::vector<BodyId> links;
+  std::vector<JointId> joints;
+  BodyId previous = ground;
+  for (int i = 0; i < 8; ++i) {
+    const BodyId link = add_ball(world, {0.0f, -0.25f * (i + 1)}, 0.1f, 1.0f + 0.5f * i);
+    RevoluteJointDef def;
+    def.body_a = previous;
+    def.body_b = link;
+    def.local_anchor_a = {0.0f, i == 0 ? 0.0f : -0.125f};
+    def.local_anchor_b = {0.0f, i == 0 ? 0.25f : 0.125f};
+    joints.push_back(world.create_joint(def));
+    links.push_back(link);
+    previous = link;
+  }
+  for (int i = 0; i < 600; ++i) world.step();
+  float below = 0.0f;
+  for (int i = 7; i >= 0; --i) {
+    below += world.body(links[i]).mass * g;
+    const vec2 force = world.joint_reaction_force(joints[i]);
+    std::printf("joint %d reaction %.7e weight below %.7e rel %.2e\n", i, force.y, below, force.y / below - 1.0f);
+    EXPECT_NEAR(force.y / below, 1.0f, 1e-4f);
+    EXPECT_NEAR(force.x / below, 0.0f, 1e-4f);
+  }
+}
+
+// A rigid weld holds a 1 m beam (a disc at its end: 1 m lever) out horizontally from a static
+// wall: the relative pose stays put under the load's moment (angle and anchor drift measured).
+// DISABLED: fails today (default settings): the weld turns 1.4e-2 rad and droops 2.8 cm (soft
+// step; 5.5e-2 / 11 cm accumulated, 9.0e-2 / 15 cm per-iteration). Same cause as the chain: the
+// soft angular row is a spring of I (2 pi f)^2 with I the disc's own inertia, so the moment
+// m g L turns it g L / (r^2 / 2 (2 pi f)^2) = 1.4e-2 rad at 60 Hz (as measured). Target: 1e-3.
+TEST_P(Joints, DISABLED_RigidWeldHoldsTheRelativePose) {
+  World world(settings_of(GetParam()));
+  const BodyId ground = add_ground(world);
+  const BodyId arm = add_ball(world, {1.0f, 0.0f}, 0.1f);
+  WeldJointDef def;
+  def.body_a = ground;
+  def.body_b = arm;
+  def.local_anchor_b = {-1.0f, 0.0f};
+  world.create_joint(def);
+  for (int i = 0; i < 300; ++i) world.step();
+  const BodyView end = world.body(arm);
+  const float droop = -end.transform.position.y;
+  std::printf("weld angle %.3e rad droop %.3e m x %.6f\n", end.angle, droop, end.transform.position.x);
+  // The soft rigid parts are springs of the joint hertz: the 1 m lever under m g turns it by
+  // about g L / (L^2 (2 pi f)^2) (7e-5 rad at 60 Hz, 3e-4 at 30 Hz): 1e-3 rad / 1 mm bounds it.
+  EXPECT_LT(std::fabs(end.angle), 1e-3f);
+  EXPECT_LT(std::fabs(droop), 1e-3f);
+  EXPECT_NEAR(end.transform.position.x, 1.0f, 1e-3f);
+}
+
+// A soft weld (gravity off): the body oscillates about the weld at the set linear hertz, and
+// turns back at the set angular hertz (each measured against implicit Euler's discrete period).
+TEST_P(Joints, SoftWeldFrequenciesAreTheSetHertz) {
+  for (const bool angular : {false, true}) {
+    WorldSettings settings = settings_of(GetParam());
+    settings.gravity = {0.0f, 0.0f};
+    World world(settings);
+    const BodyId ground = add_ground(world);
+    const BodyId body = add_ball(world, {0.0f, 0.0f}, 0.1f);
+    WeldJointDef def;
+    def.body_a = ground;
+    def.body_b = body;
+    const float hertz = 2.0f;
+    def.linear_hertz = angular ? 0.0f : hertz;
+    def.angular_hertz = angular ? hertz : 0.0f;
+    def.linear_damping_ratio = def.angular_damping_ratio = 0.0f;
+    world.create_joint(def);
+    if (angular) {
+      world.set_angular_velocity(body, 0.5f);
+    } else {
+      world.set_linear_velocity(body, {0.5f, 0.0f});
+    }
+    const double dt = settings.time_step;
+    std::vector<double> ups;
+    double last = 0.0;
+    world.step();
+    last = angular ? world.body(body).angle : world.body(body).transform.position.x;
+    for (int i = 2; i <= static_cast<int>(4.0 / dt); ++i) {
+      world.step();
+      const double x = angular ? world.body(body).angle : world.body(body).transform.position.x;
+      if (last < 0.0 && x >= 0.0) ups.push_back((i - 1) * dt + dt * (-last) / (x - last));
+      last = x;
+    }
+    const double h = dt / settings.substeps;
+    const double wh = 2.0 * pi * hertz * h;
+    const double period = mean_period(ups);
+    std::printf("weld %s period %.6f discrete %.6f\n", angular ? "angular" : "linear", period,
+                wh / std::atan(wh) / hertz);
+    EXPECT_NEAR(period * hertz / (wh / std::atan(wh)), 1.0, 0.01);
+  }
+}
+
+// A wheel on a static chassis (gravity off): the suspension oscillates at its hertz along the
+// axis, and the motor spins the wheel at its speed.
+TEST_P(Joints, WheelSuspensionFrequencyAndMotorSpeed) {
+  WorldSettings settings = settings_of(GetParam());
+  settings.gravity = {0.0f, 0.0f};
+  World world(settings);
+  const BodyId chassis = add_ground(world);
+  const BodyId wheel = add_ball(world, {0.0f, 0.0f}, 0.2f);
+  WheelJointDef def;
+  def.body_a = chassis;
+  def.body_b = wheel;
+  def.local_axis_a = {0.0f, 1.0f};
+  def.hertz = 2.0f;
+  def.damping_ratio = 0.0f;
+  def.enable_motor = true;
+  def.motor_speed = 3.0f;
+  def.max_motor_torque = 100.0f;
+  world.create_joint(def);
+  world.set_linear_velocity(wheel, {0.0f, 0.5f});
+  const double dt = settings.time_step;
+  std::vector<double> ups;
+  double last = 0.0;
+  for (int i = 1; i <= static_cast<int>(4.0 / dt); ++i) {
+    world.step();
+    const double y = world.body(wheel).transform.position.y;
+    if (i > 1 && last < 0.0 && y >= 0.0) ups.push_back((i - 1) * dt + dt * (-last) / (y - last));
+    last = y;
+  }
+  const double h = dt / settings.substeps;
+  const double wh = 2.0 * pi * def.hertz * h;
+  const double period = mean_period(ups);
+  const BodyView end = world.body(wheel);
+  std::printf("wheel period %.6f discrete %.6f spin %.6f x %.3e\n", period, wh / std::atan(wh) / def.hertz,
+              end.angular_velocity, end.transform.position.x);
+  EXPECT_NEAR(period * def.hertz / (wh / std::atan(wh)), 1.0, 0.01);
+  EXPECT_NEAR(end.angular_velocity, 3.0f, 1e-4f);
+  EXPECT_NEAR(end.transform.position.x, 0.0f, 1e-3f);  // stays on its line
+}
+
+// A motor joint drives a body (gravity off) to its offset from a static body, never with more
+// than max_force: it arrives, and the reaction force stays within max_force every step.
+TEST_P(Joints, MotorJointReachesTheOffsetWithBoundedForce) {
+  WorldSettings settings = settings_of(GetParam());
+  settings.gravity = {0.0f, 0.0f};
+  World world(settings);
+  const BodyId ground = add_ground(world);
+  const BodyId body = add_ball(world, {0.0f, 0.0f}, 0.2f);
+  MotorJointDef def;
+  def.body_a = ground;
+  def.body_b = body;
+  def.linear_offset = {1.0f, 0.5f};
+  def.angular_offset = 0.5f;
+  def.max_force = 2.0f;
+  def.max_torque = 1.0f;
+  const JointId joint = world.create_joint(def);
+  float largest = 0.0f, largest_torque = 0.0f;
+  for (int i = 0; i < 600; ++i) {
+    world.step();
+    largest = std::max(largest, glm::length(world.joint_reaction_force(joint)));
+    largest_torque = std::max(largest_torque, std::fabs(world.joint_reaction_torque(joint)));
+  }
+  const BodyView end = world.body(body);
+  std::printf("motor joint at (%.5f, %.5f) angle %.5f, largest force %.6f torque %.6f\n",
+              end.transform.position.x, end.transform.position.y, end.angle, largest, largest_torque);
+  EXPECT_NEAR(end.transform.position.x, 1.0f, 1e-3f);
+  EXPECT_NEAR(end.transform.position.y, 0.5f, 1e-3f);
+  EXPECT_NEAR(end.angle, 0.5f, 1e-3f);
+  EXPECT_LE(largest, 2.0f * (1.0f + 1e-5f));
+  EXPECT_LE(largest_torque, 1.0f * (1.0f + 1e-5f));
+  EXPECT_GT(largest, 1.99f);  // it did push at its limit on the way
+}
+
 TEST_P(Joints, TwoRunsAreBitIdentical) {
   auto run = [&] {
     World world(settings_of(GetParam()));
