@@ -38,7 +38,14 @@ json check_to_json(const GoldenCheck& check, const json& files) {
                          {"unit", escape.unit}});
     }
     noise = {{"within", check.noise->within()},
+             {"cannot_tell", check.noise->cannot_tell()},
              {"compared", check.noise->compared},
+             {"scene_scale", check.noise->scene_scale},
+             {"bound", check.noise->bound},
+             {"largest_move", check.noise->largest_move},
+             {"envelope_reach", check.noise->envelope_reach},
+             {"stops_telling_step", check.noise->stops_telling_step},
+             {"last_telling_step", check.noise->last_telling_step},
              {"escapes", std::move(escapes)}};
   }
   return {{"name", check.name},

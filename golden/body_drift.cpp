@@ -9,6 +9,16 @@
 
 namespace impulse2d::golden {
 
+bool is_slot_named(const std::vector<BodyPose>& poses) {
+  for (const BodyPose& pose : poses) {
+    if (pose.name.rfind("body ", 0) == 0 && pose.name.size() > 5 &&
+        pose.name[5] >= '0' && pose.name[5] <= '9') {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<BodyDrift> largest_drifts(const std::vector<BodyPose>& golden,
                                       const std::vector<BodyPose>& actual, std::size_t count) {
   std::map<std::string, const BodyPose*> actual_by_name;

@@ -25,6 +25,10 @@ struct BodyDrift {
   std::string note;       ///< "only in golden" / "only in actual" when unmatched, else empty
 };
 
+/// True when the poses are named by world slot ("body 7", "body 7 (generation 2)"), as
+/// sidecars before issue 29 name them, rather than by creation order ("body #7", "ball (#3)").
+bool is_slot_named(const std::vector<BodyPose>& poses);
+
 /// The `count` bodies that drifted most, bodies matched by name. Unmatched bodies come
 /// first, then by distance, then by rotation, descending; bodies that did not move at all
 /// are left out.

@@ -172,11 +172,15 @@ CheckOutcome run_golden_check(const std::string& name, const std::string& scene,
   if (!matches(check)) {
     check.second_render_identical = same_production(actual, produce());
     if (golden_sidecar && golden_sidecar->state_hash != actual.state_hash) {
+      // A sidecar written before bodies were named by creation order is judged by slot.
+      const std::vector<BodyPose>& actual_bodies =
+          is_slot_named(golden_sidecar->bodies) && !actual.slot_bodies.empty() ? actual.slot_bodies
+                                                                               : actual.bodies;
       check.moved_bodies =
-          largest_drifts(golden_sidecar->bodies, actual.bodies, settings.drift_count);
+          largest_drifts(golden_sidecar->bodies, actual_bodies, settings.drift_count);
       if (!golden_sidecar->noise.empty()) {
         check.noise = judge_against_envelope(golden_sidecar->noise, golden_sidecar->bodies,
-                                             actual.bodies, actual.samples);
+                                             actual_bodies, actual.samples);
       }
     }
   }

@@ -25,7 +25,12 @@ namespace impulse2d::golden {
 struct ProducedFrame {
   image::Image image;                   ///< the rendered frame
   std::uint64_t state_hash = 0;  ///< the world's state hash at that frame
-  std::vector<BodyPose> bodies;  ///< every body's pose at that frame, for drift reports
+  /// Every body's pose at that frame, named by creation order (and the scene file's names),
+  /// for drift reports and the noise judgement.
+  std::vector<BodyPose> bodies;
+  /// The same poses named by world slot ("body 7 (generation 2)"), to judge a sidecar
+  /// written before bodies were named by creation order (`is_slot_named`); may be empty.
+  std::vector<BodyPose> slot_bodies;
   /// Whole-world quantities at `noise_checkpoint_steps(frame)`, judged against the golden's
   /// noise envelope when the state hash differs.
   std::vector<PhysicsSample> samples;

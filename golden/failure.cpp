@@ -3,6 +3,7 @@
 
 #include "image/hex_hash.h"
 
+#include <iomanip>
 #include <sstream>
 
 namespace impulse2d::golden {
@@ -10,7 +11,7 @@ namespace impulse2d::golden {
 namespace {
 
 /// How many envelope escapes a message names.
-constexpr std::size_t kEscapesNamed = 5;
+constexpr std::size_t kEscapesNamed = 3;
 
 /// "Image: <comparison>", or why the pixels were not compared.
 std::string image_text(const GoldenCheck& check) {
@@ -32,6 +33,12 @@ std::string renderer_note(const GoldenCheck& check) {
          "', this run by '" + check.actual_renderer.describe() + "'";
 }
 
+/// "physics state hash X, the golden's sidecar has Y".
+std::string hashes(const GoldenCheck& check) {
+  return "physics state hash " + image::to_hex_hash(check.actual_state_hash) +
+         ", the golden's sidecar has " + image::to_hex_hash(*check.expected_state_hash);
+}
+
 }  // namespace
 
 FailureClass classify_failure(const GoldenCheck& check) {
@@ -47,7 +54,8 @@ FailureClass classify_failure(const GoldenCheck& check) {
   }
   if (check.expected_state_hash && *check.expected_state_hash != check.actual_state_hash) {
     if (!check.noise) return FailureClass::SimulationDiverged;
-    return check.noise->within() ? FailureClass::NumericalNoise : FailureClass::BehaviourChanged;
+    if (!check.noise->within()) return FailureClass::BehaviourChanged;
+    return check.noise->cannot_tell() ? FailureClass::CannotTell : FailureClass::NumericalNoise;
   }
   if (check.renderer_baseline_missing) {
     return check.pixels_required ? FailureClass::RendererBaselineRequired
@@ -65,6 +73,7 @@ std::string failure_class_name(FailureClass failure_class) {
     case FailureClass::SizeMismatch: return "size mismatch";
     case FailureClass::SimulationDiverged: return "simulation diverged";
     case FailureClass::NumericalNoise: return "numerical noise";
+    case FailureClass::CannotTell: return "cannot tell";
     case FailureClass::BehaviourChanged: return "behaviour changed";
     case FailureClass::RasterisationDiffers: return "rasterisation differs";
     case FailureClass::NoRendererBaseline: return "no baseline for this renderer";
@@ -120,22 +129,28 @@ std::string failure_message(const GoldenCheck& check) {
            << image_text(check);
       break;
     case FailureClass::NumericalNoise:
-      text << "physics state hash is " << image::to_hex_hash(check.actual_state_hash)
-           << ", the golden's sidecar has " << image::to_hex_hash(*check.expected_state_hash)
-           << ", but " << check.noise->describe(kEscapesNamed, kNextLine) << kNextLine
-           << "a chaotic scene amplified a rounding change (reordered arithmetic, another "
-              "compiler or flag): review the images and promote"
+      text << std::setprecision(3) << "every body and quantity stayed inside the golden's noise "
+           << "envelope, and no body moved more than " << check.noise->largest_move
+           << " m (bound " << check.noise->bound << " m, 1 % of the scene's size "
+           << check.noise->scene_scale << " m)" << kNextLine
+           << "a rounding change (reordered arithmetic, another compiler or flag): review the "
+              "images and promote"
            << kNextLine << "bodies that moved most: " << describe_drifts(check.moved_bodies)
-           << kNextLine << image_text(check);
+           << kNextLine << hashes(check) << kNextLine << image_text(check);
+      break;
+    case FailureClass::CannotTell:
+      text << check.noise->describe_cannot_tell() << kNextLine
+           << "do not promote on trust: check the change at an earlier frame, or a scene that "
+              "is not chaotic"
+           << kNextLine << "bodies that moved most: " << describe_drifts(check.moved_bodies)
+           << kNextLine << hashes(check) << kNextLine << image_text(check);
       break;
     case FailureClass::BehaviourChanged:
-      text << "physics state hash is " << image::to_hex_hash(check.actual_state_hash)
-           << ", the golden's sidecar has " << image::to_hex_hash(*check.expected_state_hash)
-           << ", and the run left the golden's noise envelope (what rounding-sized perturbations "
-              "do to this scene):"
+      text << "the run left the golden's noise envelope (what rounding-sized perturbations do "
+              "to this scene); largest escapes, relative to their envelope:"
            << kNextLine << check.noise->describe(kEscapesNamed, kNextLine) << kNextLine
            << "a physics change, not rounding: fix it, or promote only if it was meant"
-           << kNextLine << image_text(check);
+           << kNextLine << hashes(check) << kNextLine << image_text(check);
       break;
     case FailureClass::NoRendererBaseline:
       text << "physics checked and matches (state hash " << image::to_hex_hash(check.actual_state_hash)

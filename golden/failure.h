@@ -27,8 +27,13 @@ enum class FailureClass {
   /// The physics state hash differs from the sidecar's, which has no noise envelope.
   SimulationDiverged,
   /// The state hash differs, but every body and quantity stayed inside the golden's noise
-  /// envelope: a chaotic scene amplified a rounding change (safe to promote after a look).
+  /// envelope, and that envelope and the run's largest move are small against the scene
+  /// (`kNoiseBoundFraction`): a rounding change (safe to promote after a look).
   NumericalNoise,
+  /// The run stayed inside the envelope, but the envelope is large against the scene: its
+  /// chaos amplifies rounding to the size of the change observed, so noise and a real change
+  /// cannot be told apart at this frame (an earlier frame can). Never promoted on trust.
+  CannotTell,
   /// The state hash differs and bodies or quantities left the golden's noise envelope: the
   /// physics behaves differently (a regression unless intended).
   BehaviourChanged,
@@ -82,7 +87,8 @@ struct GoldenCheck {
 };
 
 /// Classifies a check: Nondeterminism, then MissingGolden, SizeMismatch; when the state
-/// hashes differ (whatever the pixels say) NumericalNoise or BehaviourChanged by `noise`, or
+/// hashes differ (whatever the pixels say) NumericalNoise, CannotTell or BehaviourChanged by
+/// `noise`, or
 /// SimulationDiverged without one; then NoRendererBaseline (RendererBaselineRequired when
 /// `pixels_required`) when the pixels had nothing to be compared with; RasterisationDiffers (same state, the comparison failed), else None.
 FailureClass classify_failure(const GoldenCheck& check);

@@ -37,10 +37,7 @@ constexpr Quantity kQuantities[] = {
 
 /// How far outside its envelope an escape is, for ordering: infinite for an unmatched one
 /// or from a zero envelope.
-double severity(const EnvelopeEscape& escape) {
-  if (escape.unmatched || escape.envelope <= 0.0) return std::numeric_limits<double>::infinity();
-  return escape.measured / escape.envelope;
-}
+double severity(const EnvelopeEscape& escape) { return escape.severity(); }
 
 /// Adds an escape when |actual - golden| exceeds the envelope.
 void compare(NoiseVerdict& verdict, const std::string& what, double golden, double actual,
@@ -48,7 +45,9 @@ void compare(NoiseVerdict& verdict, const std::string& what, double golden, doub
   ++verdict.compared;
   const double measured = std::abs(actual - golden);
   if (!(measured <= kNoiseMargin * envelope)) {
-    verdict.escapes.push_back({what, measured, envelope, unit, body});
+    EnvelopeEscape escape{what, measured, envelope, unit, body};
+    escape.reference = body ? 0.0 : golden;
+    verdict.escapes.push_back(std::move(escape));
   }
 }
 
@@ -60,6 +59,12 @@ std::vector<std::int64_t> noise_checkpoint_steps(std::int64_t frame, int count) 
   const std::int64_t n = std::min<std::int64_t>(count, frame);
   for (std::int64_t i = 1; i <= n; ++i) steps.push_back(frame * i / n);
   return steps;
+}
+
+double EnvelopeEscape::severity() const {
+  if (unmatched) return std::numeric_limits<double>::infinity();
+  const double floor = 1e-6 * (1.0 + std::abs(reference));
+  return measured / std::max(envelope, floor);
 }
 
 std::string EnvelopeEscape::describe() const {
@@ -76,29 +81,45 @@ std::string NoiseVerdict::describe(std::size_t count, const std::string& separat
     return "every body and quantity inside the noise envelope (" + std::to_string(compared) +
            " compared)";
   }
-  std::string quantities;
-  std::string bodies;
-  std::size_t quantities_named = 0;
-  std::size_t bodies_named = 0;
-  std::size_t bodies_outside = 0;
-  for (const EnvelopeEscape& escape : escapes) {
-    std::string& text = escape.body ? bodies : quantities;
-    std::size_t& named = escape.body ? bodies_named : quantities_named;
-    if (escape.body) ++bodies_outside;
-    if (named == count) continue;
-    text += (named == 0 ? "" : "; ") + escape.describe();
-    ++named;
-  }
   std::string text;
-  if (!quantities.empty()) {
-    text = "quantities: " + quantities + " (" + std::to_string(escapes.size() - bodies_outside) +
-           " outside)";
+  for (std::size_t i = 0; i < escapes.size() && i < count; ++i) {
+    text += (i == 0 ? "" : separator) + std::to_string(i + 1) + ". " + escapes[i].describe();
   }
-  if (!bodies.empty()) {
-    text += (text.empty() ? "bodies: " : separator + "bodies: ") + bodies + " (" +
-            std::to_string(bodies_outside) + " outside)";
+  if (escapes.size() > count) {
+    std::size_t bodies = 0;
+    for (std::size_t i = count; i < escapes.size(); ++i) bodies += escapes[i].body ? 1 : 0;
+    const std::size_t more = escapes.size() - count;
+    text += separator + "(" + std::to_string(more) + " more outside the envelope: " +
+            std::to_string(bodies) + (bodies == 1 ? " body, " : " bodies, ") +
+            std::to_string(more - bodies) + (more - bodies == 1 ? " quantity)" : " quantities)");
   }
   return text;
+}
+
+std::string NoiseVerdict::describe_cannot_tell() const {
+  std::ostringstream text;
+  const double spread = envelope_reach / kNoiseMargin;
+  text << std::setprecision(3) << "cannot tell at this frame: the run stayed inside the noise "
+       << "envelope, but ";
+  if (spread * kNoiseMargin > bound) {
+    text << "rounding alone (the perturbed runs) already moves bodies up to " << spread
+         << " m here (limit " << envelope_reach << " m), ";
+  }
+  text << "and this run moved " << (largest_move_body.empty() ? "no body" : largest_move_body)
+       << " " << largest_move << " m; the bound within which a change is called noise is "
+       << bound << " m (1 % of the scene's size, " << scene_scale << " m)";
+  if (stops_telling_step >= 0) {
+    text << "; the scene amplifies rounding beyond that bound from step " << stops_telling_step;
+    if (last_telling_step >= 0) {
+      text << ", and a frame at step " << last_telling_step << " or earlier still tells";
+    } else {
+      text << " on, so no earlier checkpoint tells either";
+    }
+  } else if (!spread_recorded) {
+    text << "; this sidecar does not record from which step the scene stops telling "
+            "(re-promote it to record that)";
+  }
+  return text.str();
 }
 
 NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
@@ -108,21 +129,46 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
   NoiseVerdict verdict;
   std::map<std::string, const BodyNoise*> noise_by_name;
   for (const BodyNoise& noise : envelope.bodies) noise_by_name[noise.name] = &noise;
+  const std::set<std::string> extra_bodies(envelope.extra_bodies.begin(),
+                                           envelope.extra_bodies.end());
   std::map<std::string, const BodyPose*> actual_by_name;
   for (const BodyPose& pose : actual_bodies) actual_by_name[pose.name] = &pose;
+
+  // The scene's size: the box around the golden's bodies.
+  if (!golden_bodies.empty()) {
+    double min_x = golden_bodies[0].x, max_x = min_x, min_y = golden_bodies[0].y, max_y = min_y;
+    for (const BodyPose& pose : golden_bodies) {
+      min_x = std::min(min_x, pose.x);
+      max_x = std::max(max_x, pose.x);
+      min_y = std::min(min_y, pose.y);
+      max_y = std::max(max_y, pose.y);
+    }
+    verdict.scene_scale = std::max(1.0, std::hypot(max_x - min_x, max_y - min_y));
+  }
+  verdict.bound = kNoiseBoundFraction * verdict.scene_scale;
 
   for (const BodyPose& golden : golden_bodies) {
     const auto actual = actual_by_name.find(golden.name);
     const auto noise = noise_by_name.find(golden.name);
+    const double distance_noise = noise != noise_by_name.end() ? noise->second->distance : 0.0;
+    verdict.envelope_reach = std::max(verdict.envelope_reach, kNoiseMargin * distance_noise);
     if (actual == actual_by_name.end()) {
-      verdict.escapes.push_back({golden.name + " (missing in this run)", 0.0, 0.0, "", true, true});
+      // Removed earlier in this run: noise when some perturbed run removed it too.
+      if (noise == noise_by_name.end() || !noise->second->may_be_missing) {
+        verdict.escapes.push_back(
+            {golden.name + " (missing in this run)", 0.0, 0.0, "", true, true});
+      }
+      ++verdict.compared;
       continue;
     }
-    const double distance_noise = noise != noise_by_name.end() ? noise->second->distance : 0.0;
     const double rotation_noise = noise != noise_by_name.end() ? noise->second->rotation : 0.0;
     ++verdict.compared;
     const double distance =
         std::hypot(actual->second->x - golden.x, actual->second->y - golden.y);
+    if (distance > verdict.largest_move) {
+      verdict.largest_move = distance;
+      verdict.largest_move_body = golden.name;
+    }
     if (!(distance <= kNoiseMargin * distance_noise)) {
       verdict.escapes.push_back({golden.name + " position", distance, distance_noise, "m", true});
     }
@@ -131,12 +177,24 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
     actual_by_name.erase(actual);
   }
   for (const auto& extra : actual_by_name) {
+    ++verdict.compared;
+    if (extra_bodies.count(extra.first) != 0) continue;  // some perturbed run had it too
     verdict.escapes.push_back({extra.first + " (not in the golden run)", 0.0, 0.0, "", true, true});
   }
 
   std::map<std::int64_t, const PhysicsSample*> actual_by_step;
   for (const PhysicsSample& sample : actual_samples) actual_by_step[sample.step] = &sample;
+  std::int64_t previous_step = -1;
   for (const NoiseCheckpoint& checkpoint : envelope.checkpoints) {
+    if (checkpoint.body_spread >= 0.0) {
+      verdict.spread_recorded = true;
+      if (verdict.stops_telling_step < 0 &&
+          kNoiseMargin * checkpoint.body_spread > verdict.bound) {
+        verdict.stops_telling_step = checkpoint.golden.step;
+        verdict.last_telling_step = previous_step;
+      }
+    }
+    previous_step = checkpoint.golden.step;
     const std::string at = " at step " + std::to_string(checkpoint.golden.step);
     const auto found = actual_by_step.find(checkpoint.golden.step);
     if (found == actual_by_step.end()) {
@@ -150,6 +208,10 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
     }
     compare(verdict, "contact count" + at, checkpoint.golden.contacts, found->second->contacts,
             checkpoint.spread.contacts, "");
+    if (checkpoint.golden.bodies >= 0 && found->second->bodies >= 0) {
+      compare(verdict, "living bodies" + at, checkpoint.golden.bodies, found->second->bodies,
+              checkpoint.spread.bodies, "");
+    }
   }
   std::stable_sort(verdict.escapes.begin(), verdict.escapes.end(),
                    [](const EnvelopeEscape& a, const EnvelopeEscape& b) {
@@ -171,21 +233,29 @@ json noise_envelope_to_json(const NoiseEnvelope& envelope) {
     }
     item["contacts"] = checkpoint.golden.contacts;
     item["contacts_noise"] = checkpoint.spread.contacts;
+    if (checkpoint.golden.bodies >= 0) {
+      item["bodies"] = checkpoint.golden.bodies;
+      item["bodies_noise"] = std::max(checkpoint.spread.bodies, 0);
+    }
+    if (checkpoint.body_spread >= 0.0) item["body_spread"] = checkpoint.body_spread;
     checkpoints.push_back(std::move(item));
   }
   json bodies = json::array();
   for (const BodyNoise& body : envelope.bodies) {
-    bodies.push_back(
-        {{"name", body.name}, {"distance", body.distance}, {"rotation", body.rotation}});
+    json item = {{"name", body.name}, {"distance", body.distance}, {"rotation", body.rotation}};
+    if (body.may_be_missing) item["may_be_missing"] = true;
+    bodies.push_back(std::move(item));
   }
-  return {{"perturbations", envelope.perturbations},
-          {"checkpoints", std::move(checkpoints)},
-          {"bodies", std::move(bodies)}};
+  json object = {{"perturbations", envelope.perturbations},
+                 {"checkpoints", std::move(checkpoints)},
+                 {"bodies", std::move(bodies)}};
+  if (!envelope.extra_bodies.empty()) object["extra_bodies"] = envelope.extra_bodies;
+  return object;
 }
 
 NoiseEnvelope noise_envelope_from_json(const json& object, const std::string& origin) {
   const FieldReader top(object, origin, "noise.");
-  top.reject_unknown({"perturbations", "checkpoints", "bodies"});
+  top.reject_unknown({"perturbations", "checkpoints", "bodies", "extra_bodies"});
   NoiseEnvelope envelope;
   const json& perturbations = top.array("perturbations");
   if (perturbations.empty()) top.fail("perturbations", "must name at least one perturbation");
@@ -196,7 +266,8 @@ NoiseEnvelope noise_envelope_from_json(const json& object, const std::string& or
     envelope.perturbations.push_back(item.get<std::string>());
   }
   const json& checkpoints = top.array("checkpoints");
-  std::set<std::string> checkpoint_keys = {"step", "contacts", "contacts_noise"};
+  std::set<std::string> checkpoint_keys = {"step",   "contacts",     "contacts_noise",
+                                           "bodies", "bodies_noise", "body_spread"};
   for (const Quantity& quantity : kQuantities) {
     checkpoint_keys.insert(quantity.key);
     checkpoint_keys.insert(std::string(quantity.key) + "_noise");
@@ -218,14 +289,33 @@ NoiseEnvelope noise_envelope_from_json(const json& object, const std::string& or
     }
     checkpoint.golden.contacts = item.integer("contacts", 0);
     checkpoint.spread.contacts = item.integer("contacts_noise", 0);
+    if (item.has("bodies")) {
+      checkpoint.golden.bodies = item.integer("bodies", 0);
+      checkpoint.spread.bodies = item.integer("bodies_noise", 0);
+    }
+    if (item.has("body_spread")) checkpoint.body_spread = item.non_negative("body_spread");
     envelope.checkpoints.push_back(checkpoint);
   }
   const json& bodies = top.array("bodies");
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const FieldReader body(bodies[i], origin, "noise.bodies[" + std::to_string(i) + "].");
-    body.reject_unknown({"name", "distance", "rotation"});
-    envelope.bodies.push_back(
-        {body.string("name", false), body.non_negative("distance"), body.non_negative("rotation")});
+    body.reject_unknown({"name", "distance", "rotation", "may_be_missing"});
+    BodyNoise noise{body.string("name", false), body.non_negative("distance"),
+                    body.non_negative("rotation")};
+    if (body.has("may_be_missing")) {
+      const json& flag = body.get("may_be_missing");
+      if (!flag.is_boolean()) body.fail("may_be_missing", "expected true or false, got " + flag.dump());
+      noise.may_be_missing = flag.get<bool>();
+    }
+    envelope.bodies.push_back(std::move(noise));
+  }
+  if (top.has("extra_bodies")) {
+    for (const json& item : top.array("extra_bodies")) {
+      if (!item.is_string() || item.get<std::string>().empty()) {
+        top.fail("extra_bodies", "expected non-empty strings, got " + item.dump());
+      }
+      envelope.extra_bodies.push_back(item.get<std::string>());
+    }
   }
   return envelope;
 }

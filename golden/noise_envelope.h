@@ -29,6 +29,9 @@ struct PhysicsSample {
   double momentum_y = 0.0;        ///< total linear momentum, y, kg m/s
   double angular_momentum = 0.0;  ///< about the world origin, kg m^2/s
   int contacts = 0;               ///< touching pairs
+  /// Living bodies (spawns and removals change it); -1 when not recorded (sidecars before
+  /// issue 29).
+  int bodies = -1;
 };
 
 /// One checkpoint of the envelope: the golden run's quantities and how far the perturbed
@@ -37,6 +40,10 @@ struct PhysicsSample {
 struct NoiseCheckpoint {
   PhysicsSample golden;  ///< the golden run at this step
   PhysicsSample spread;  ///< the noise of each quantity (its `step` equals golden.step)
+  /// The largest distance any body of any perturbed run strayed from the golden run, at
+  /// this checkpoint or before, metres: how far the scene has amplified rounding by this
+  /// step. -1 when not recorded (sidecars before issue 29).
+  double body_spread = -1.0;
 };
 
 /// How far one body strayed under the perturbations, over every step up to the frame.
@@ -44,6 +51,9 @@ struct BodyNoise {
   std::string name;       ///< the body's label, as in `BodyPose::name`
   double distance = 0.0;  ///< largest centre-of-mass distance from the golden run, metres
   double rotation = 0.0;  ///< largest angle difference from the golden run, radians
+  /// True when some perturbed run had already removed this body by the frame (the golden
+  /// run still has it): its absence in a later run is noise too.
+  bool may_be_missing = false;
 };
 
 /// Everything measured about a golden's sensitivity to rounding.
@@ -54,6 +64,9 @@ struct NoiseEnvelope {
   std::vector<NoiseCheckpoint> checkpoints;
   /// Per body, in the golden's body order.
   std::vector<BodyNoise> bodies;
+  /// Bodies some perturbed run had alive at the frame that the golden run had not (removed
+  /// earlier, or spawned only there): their presence in a later run is noise too.
+  std::vector<std::string> extra_bodies;
 
   /// True when nothing was measured (a sidecar without an envelope).
   bool empty() const { return perturbations.empty(); }
@@ -71,6 +84,13 @@ std::vector<std::int64_t> noise_checkpoint_steps(std::int64_t frame, int count =
 /// checkpoints, before the scene saturates.
 inline constexpr double kNoiseMargin = 2.0;
 
+/// "Numerical noise" is said only where the envelope is small against the scene: where no
+/// body moved, and the envelope lets no body move, more than this fraction of the scene's
+/// size (the diagonal of the box around the golden's bodies at the frame, at least 1 m).
+/// Beyond it a rounding change *could* explain the change, but so could a real one: the
+/// verdict is "cannot tell", never the advice to promote.
+inline constexpr double kNoiseBoundFraction = 0.01;
+
 /// One way a run left the envelope.
 struct EnvelopeEscape {
   std::string what;      ///< e.g. "body 12 position" or "angular momentum at step 75"
@@ -80,6 +100,14 @@ struct EnvelopeEscape {
   bool body = false;     ///< true for a body's pose, false for a whole-world quantity
   /// True when the body or sample exists on one side only (nothing to measure then).
   bool unmatched = false;
+  /// The golden run's value (0 for a body's position or angle): sets the floor under the
+  /// envelope when the escape is ordered by size (`severity`).
+  double reference = 0.0;
+
+  /// How far outside its envelope: measured / max(envelope, 1e-6 x (1 + |reference|)), so
+  /// an escape from a zero envelope by rounding-sized amounts (4e-11 of a momentum) ranks
+  /// below a large escape from a real envelope; infinite for an unmatched body or sample.
+  double severity() const;
 
   /// "body 12 position off by 0.31 m (noise envelope 0.002 m, limit 0.004)"; for an
   /// unmatched one just `what`.
@@ -88,17 +116,46 @@ struct EnvelopeEscape {
 
 /// The judgement of one run against a golden's envelope.
 struct NoiseVerdict {
-  /// Every escape, worst first (by measured / envelope, an escape from a zero envelope
-  /// first of all); empty when the run stayed inside the envelope.
+  /// Every escape, worst first (by `EnvelopeEscape::severity`: size relative to its
+  /// envelope, unmatched bodies first); empty when the run stayed inside the envelope.
   std::vector<EnvelopeEscape> escapes;
   /// How many quantities were compared (bodies x 2 + checkpoints x 5).
   std::size_t compared = 0;
+  /// The scene's size: the diagonal of the box around the golden's bodies at the frame
+  /// (at least 1 m), metres.
+  double scene_scale = 1.0;
+  /// The noise bound: `kNoiseBoundFraction` x `scene_scale`, metres.
+  double bound = 0.01;
+  /// The farthest any body of this run is from the golden run at the frame, metres, and its
+  /// name.
+  double largest_move = 0.0;
+  std::string largest_move_body;
+  /// The farthest the envelope lets a body move at the frame (`kNoiseMargin` x the largest
+  /// body noise), metres.
+  double envelope_reach = 0.0;
+  /// The first checkpoint step at which the perturbed runs already differ by more than
+  /// `bound` (from then on the scene amplifies rounding beyond what can be told from a
+  /// change); -1 when they never do, or the sidecar does not record it.
+  std::int64_t stops_telling_step = -1;
+  /// The last checkpoint step before `stops_telling_step` (a frame there still tells noise
+  /// from a change); -1 when none does.
+  std::int64_t last_telling_step = -1;
+  /// True when the sidecar records the per-step spread (`NoiseCheckpoint::body_spread`).
+  bool spread_recorded = false;
 
   /// True when nothing left the envelope.
   bool within() const { return escapes.empty(); }
-  /// "quantities: <the `count` worst whole-world escapes><separator>bodies: <the `count`
-  /// worst body escapes> (B bodies outside)", each part only when it has escapes; or "every
-  /// body and quantity inside the noise envelope (N compared)".
+  /// True when the run stayed inside the envelope but the envelope (or the run's largest
+  /// move) is beyond `bound`: the scene's own chaos could explain it, and so could a real
+  /// change.
+  bool cannot_tell() const {
+    return within() && (largest_move > bound || envelope_reach > bound);
+  }
+  /// "the perturbed runs ... step N ... frame M" for a cannot-tell verdict.
+  std::string describe_cannot_tell() const;
+  /// The `count` worst escapes, one per part ("1. ball (#3) position off by ...", joined by
+  /// `separator`), then "(N more outside the envelope: B bodies, Q quantities)" when there
+  /// are more; or "every body and quantity inside the noise envelope (N compared)".
   std::string describe(std::size_t count, const std::string& separator = "; ") const;
 };
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -94,6 +95,7 @@ void widen(PhysicsSample& spread, const PhysicsSample& golden, const PhysicsSamp
   spread.angular_momentum = std::max(
       spread.angular_momentum, std::abs(perturbed.angular_momentum - golden.angular_momentum));
   spread.contacts = std::max(spread.contacts, std::abs(perturbed.contacts - golden.contacts));
+  spread.bodies = std::max(spread.bodies, std::abs(perturbed.bodies - golden.bodies));
 }
 
 }  // namespace
@@ -107,19 +109,24 @@ NoiseEnvelope measure_noise_envelope(const GoldenSpec& spec, const SceneVariant&
     envelope.perturbations.push_back(perturbation.name);
   }
 
-  // Bodies by name; a body one run has and another lacks cannot be compared, so it is left
-  // to the judgement, which reports it.
+  // Bodies by creation order (`GoldenRun::body_poses`), never by slot: a perturbed run that
+  // removes a body a step earlier, or spawns into another slot, still names its bodies alike.
   std::map<std::string, BodyNoise> noise;
+  double body_spread = 0.0;  // the largest distance of any body so far
   auto record_bodies = [&] {
-    const std::vector<BodyPose> reference = body_poses(golden.world());
+    const std::vector<BodyPose> reference = golden.body_poses();
     for (const auto& run : perturbed) {
-      const std::vector<BodyPose> poses = body_poses(run->world());
-      for (std::size_t i = 0; i < reference.size() && i < poses.size(); ++i) {
-        if (poses[i].name != reference[i].name) continue;
-        BodyNoise& body = noise[reference[i].name];
-        body.distance = std::max(
-            body.distance, std::hypot(poses[i].x - reference[i].x, poses[i].y - reference[i].y));
-        body.rotation = std::max(body.rotation, std::abs(poses[i].angle - reference[i].angle));
+      std::map<std::string, const BodyPose*> by_name;
+      const std::vector<BodyPose> poses = run->body_poses();
+      for (const BodyPose& pose : poses) by_name[pose.name] = &pose;
+      for (const BodyPose& pose : reference) {
+        const auto found = by_name.find(pose.name);
+        if (found == by_name.end()) continue;  // not (yet, or any more) in that run
+        BodyNoise& body = noise[pose.name];
+        const double distance = std::hypot(found->second->x - pose.x, found->second->y - pose.y);
+        body.distance = std::max(body.distance, distance);
+        body.rotation = std::max(body.rotation, std::abs(found->second->angle - pose.angle));
+        body_spread = std::max(body_spread, distance);
       }
     }
   };
@@ -141,18 +148,38 @@ NoiseEnvelope measure_noise_envelope(const GoldenSpec& spec, const SceneVariant&
       // momentum again), so each spread is the largest up to this step.
       if (!envelope.checkpoints.empty()) checkpoint.spread = envelope.checkpoints.back().spread;
       checkpoint.spread.step = checkpoint.golden.step;
+      checkpoint.spread.bodies = std::max(checkpoint.spread.bodies, 0);
       for (const auto& run : perturbed) {
         widen(checkpoint.spread, checkpoint.golden, sample_physics(run->world()));
       }
+      checkpoint.body_spread = body_spread;
       envelope.checkpoints.push_back(checkpoint);
       ++next_checkpoint;
     }
   }
-  // Only the bodies alive at the frame are judged.
-  for (const BodyPose& pose : body_poses(golden.world())) {
-    const BodyNoise& body = noise[pose.name];
-    envelope.bodies.push_back({pose.name, body.distance, body.rotation});
+  // Only the bodies alive at the frame are judged; which bodies are alive is noise too (a
+  // body some perturbed run had removed by now, or had and the golden run had not).
+  const std::vector<BodyPose> reference = golden.body_poses();
+  std::set<std::string> alive;
+  for (const BodyPose& pose : reference) alive.insert(pose.name);
+  std::set<std::string> missing_somewhere;
+  std::set<std::string> extra;
+  for (const auto& run : perturbed) {
+    std::set<std::string> names;
+    for (const BodyPose& pose : run->body_poses()) {
+      names.insert(pose.name);
+      if (alive.count(pose.name) == 0) extra.insert(pose.name);
+    }
+    for (const std::string& name : alive) {
+      if (names.count(name) == 0) missing_somewhere.insert(name);
+    }
   }
+  for (const BodyPose& pose : reference) {
+    const BodyNoise& body = noise[pose.name];
+    envelope.bodies.push_back(
+        {pose.name, body.distance, body.rotation, missing_somewhere.count(pose.name) != 0});
+  }
+  envelope.extra_bodies.assign(extra.begin(), extra.end());
   return envelope;
 }
 

@@ -45,7 +45,7 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
       demos::scene_camera(scene.view.camera, run.world(), renderer.width(), renderer.height());
   ProducedFrame produced;
   for (const std::int64_t checkpoint : noise_checkpoint_steps(spec.step)) {
-    while (run.step_count() < checkpoint) run.step();
+    while (run.step_count() < checkpoint) golden_run.step();
     produced.samples.push_back(sample_physics(run.world()));
   }
 
@@ -62,7 +62,8 @@ ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer&
 
   produced.image = image::Image{frame.width, frame.height, frame.rgba, {}};
   produced.state_hash = run.world().state_hash();
-  produced.bodies = body_poses(run.world());
+  produced.bodies = golden_run.body_poses();
+  produced.slot_bodies = body_poses(run.world());
   produced.renderer = split_fingerprint(renderer.fingerprint());
   produced.image.text = frame_metadata(spec, run.world(), produced.renderer);
   return produced;

@@ -97,7 +97,11 @@ TEST_F(GoldenCommand, RoundingSizedChangeIsNumericalNoise) {
   });
   const Result result = run("check scenes/dominoes.json --junit junit.xml");
   EXPECT_EQ(result.status, 1) << result.out << result.err;
-  EXPECT_NE(result.out.find("golden 'dominoes/down': numerical noise"), std::string::npos)
+  EXPECT_NE(result.out.find("golden 'dominoes/falling': numerical noise"), std::string::npos)
+      << result.out;
+  // By 'down' rounding alone moves the dominoes up to 13 cm, more than 1 % of the scene's
+  // size (5.4 cm): noise could explain the change there, and so could a real one.
+  EXPECT_NE(result.out.find("golden 'dominoes/down': cannot tell"), std::string::npos)
       << result.out;
   EXPECT_EQ(result.out.find("behaviour changed"), std::string::npos) << result.out;
 }

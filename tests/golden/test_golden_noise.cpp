@@ -97,8 +97,13 @@ TEST(GoldenNoise, ReorderedInertiaSumIsNumericalNoise) {
     ASSERT_GT(count.bodies, 0) << golden;
     // The reorder must really change some inertias (else this would test nothing) ...
     EXPECT_GT(count.changed, 0) << golden;
-    // ... and that must really change the run, or the class would be "passed".
-    EXPECT_EQ(outcome.failure_class, FailureClass::NumericalNoise) << outcome.message();
+    // ... and that must really change the run, or the class would be "passed". It stays
+    // inside the envelope; random_polygons amplifies it to metres (2 m at motion), beyond 1 %
+    // of the scene's size, so since issue 29 the honest verdict is "cannot tell", and never
+    // "behaviour changed".
+    EXPECT_TRUE(outcome.failure_class == FailureClass::NumericalNoise ||
+                outcome.failure_class == FailureClass::CannotTell)
+        << outcome.message();
     ASSERT_TRUE(outcome.check.noise.has_value()) << golden;
     EXPECT_TRUE(outcome.check.noise->within()) << golden;
   }

@@ -57,9 +57,84 @@ TEST(NoiseEnvelope, InsideTheMarginIsNoiseBeyondItNamesWhatLeft) {
   // Worst first: angular momentum is 40x its noise, the ball 3x.
   EXPECT_EQ(outside.escapes[0].what, "angular momentum at step 10");
   EXPECT_EQ(outside.escapes[1].what, "ball position");
-  EXPECT_NE(outside.describe(5).find("bodies: ball position off by 0.3 m (noise envelope 0.1 m, limit 0.2)"),
+  EXPECT_NE(outside.describe(5).find("2. ball position off by 0.3 m (noise envelope 0.1 m, limit 0.2)"),
             std::string::npos)
       << outside.describe(5);
+  // Only the `count` largest are named, then how many more.
+  EXPECT_NE(outside.describe(1).find("(1 more outside the envelope: 1 body, 0 quantities)"),
+            std::string::npos)
+      << outside.describe(1);
+}
+
+TEST(NoiseEnvelope, ZeroEnvelopeTriviaRanksBelowLargeEscapes) {
+  // Issue 29: "momentum x off by 4.23e-11 (envelope 0)" was listed before "angular momentum
+  // off by 4.65"; sizes are relative to max(envelope, 1e-6 x (1 + |value|)).
+  NoiseEnvelope envelope = small_envelope();
+  envelope.checkpoints[0].spread.momentum_x = 0.0;
+  const NoiseVerdict verdict = judge_against_envelope(
+      envelope, kGoldenBodies, kGoldenBodies, {{10, 50.0, 1.0 + 4.23e-11, -2.0, 5.15, 3}});
+  ASSERT_EQ(verdict.escapes.size(), 2u) << verdict.describe(5);
+  EXPECT_EQ(verdict.escapes[0].what, "angular momentum at step 10");
+  EXPECT_EQ(verdict.escapes[1].what, "momentum x at step 10");
+}
+
+TEST(NoiseEnvelope, InsideALargeEnvelopeIsCannotTellNamingTheStepItStopsTelling) {
+  // One ball, scene size 1 m: the bound is 1 cm. The envelope lets it move 0.2 m.
+  NoiseEnvelope envelope = small_envelope();
+  NoiseCheckpoint early = envelope.checkpoints[0];
+  early.golden.step = 5;
+  early.spread.step = 5;
+  early.body_spread = 0.001;
+  envelope.checkpoints[0].body_spread = 0.1;
+  envelope.checkpoints.insert(envelope.checkpoints.begin(), early);
+  const NoiseVerdict verdict = judge_against_envelope(
+      envelope, kGoldenBodies, {{"ball", 1.15, 2.0, 0.0}},
+      {{5, 50.0, 1.0, -2.0, 0.5, 3}, {10, 50.0, 1.0, -2.0, 0.5, 3}});
+  EXPECT_TRUE(verdict.within()) << verdict.describe(5);
+  EXPECT_TRUE(verdict.cannot_tell());
+  EXPECT_DOUBLE_EQ(verdict.bound, 0.01);
+  EXPECT_EQ(verdict.stops_telling_step, 10);
+  EXPECT_EQ(verdict.last_telling_step, 5);
+  const std::string text = verdict.describe_cannot_tell();
+  EXPECT_NE(text.find("from step 10, and a frame at step 5 or earlier still tells"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("bound 0.01 m"), std::string::npos) << text;
+
+  // A move within the bound, inside an envelope within it too, is noise.
+  envelope.bodies[0].distance = 0.004;
+  for (NoiseCheckpoint& checkpoint : envelope.checkpoints) checkpoint.body_spread = 0.004;
+  const NoiseVerdict small = judge_against_envelope(
+      envelope, kGoldenBodies, {{"ball", 1.005, 2.0, 0.0}},
+      {{5, 50.0, 1.0, -2.0, 0.5, 3}, {10, 50.0, 1.0, -2.0, 0.5, 3}});
+  EXPECT_TRUE(small.within()) << small.describe(5);
+  EXPECT_FALSE(small.cannot_tell());
+}
+
+TEST(NoiseEnvelope, TheLivingSetIsPartOfTheEnvelope) {
+  // A body some perturbed run had removed may be missing; one some run kept may be extra.
+  NoiseEnvelope envelope = small_envelope();
+  envelope.bodies[0].may_be_missing = true;
+  envelope.extra_bodies = {"body #7"};
+  envelope.checkpoints[0].golden.bodies = 4;
+  envelope.checkpoints[0].spread.bodies = 1;
+  const NoiseVerdict verdict = judge_against_envelope(
+      envelope, kGoldenBodies, {{"body #7", 5.0, 5.0, 0.0}}, {{10, 50.0, 1.0, -2.0, 0.5, 3, 5}});
+  EXPECT_TRUE(verdict.within()) << verdict.describe(5);
+  const NoiseVerdict two_more = judge_against_envelope(
+      envelope, kGoldenBodies, kGoldenBodies, {{10, 50.0, 1.0, -2.0, 0.5, 3, 7}});
+  ASSERT_FALSE(two_more.within());
+  EXPECT_EQ(two_more.escapes[0].what, "living bodies at step 10");
+  const NoiseVerdict stranger = judge_against_envelope(
+      envelope, kGoldenBodies, {{"body #8", 5.0, 5.0, 0.0}}, {{10, 50.0, 1.0, -2.0, 0.5, 3, 4}});
+  EXPECT_NE(stranger.describe(5).find("body #8 (not in the golden run)"), std::string::npos);
+
+  const NoiseEnvelope back =
+      noise_envelope_from_json(noise_envelope_to_json(envelope), "sidecar 'a.json'");
+  EXPECT_TRUE(back.bodies[0].may_be_missing);
+  EXPECT_EQ(back.extra_bodies, envelope.extra_bodies);
+  EXPECT_EQ(back.checkpoints[0].golden.bodies, 4);
+  EXPECT_EQ(back.checkpoints[0].spread.bodies, 1);
 }
 
 TEST(NoiseEnvelope, AZeroEnvelopeAllowsNoChangeAndMissingDataEscapes) {
@@ -123,7 +198,8 @@ ProducedFrame ball_frame(double x) {
   frame.image = image::make_image(8, 8, image::Rgba{200, 200, 200, 255});
   frame.image.set_pixel(static_cast<int>(x * 2.0) % 8, 4, image::Rgba{0, 0, 0, 255});
   frame.state_hash = static_cast<std::uint64_t>(x * 1000.0);
-  frame.bodies = {{"ball", x, 2.0, 0.0}};
+  // A ground 40 m away gives the scene its size: noise is bounded by 1 % of it (0.4 m).
+  frame.bodies = {{"ball", x, 2.0, 0.0}, {"ground", 41.0, 2.0, 0.0}};
   frame.samples = {{10, 50.0, 1.0, -2.0, 0.5, 3}};
   return frame;
 }
