@@ -32,7 +32,10 @@ enum DebugDrawFlag : std::uint32_t {
   draw_sleeping = 1u << 9,           ///< sleeping bodies dimmed
   draw_broad_phase = 1u << 10,       ///< candidate pairs from the broad phase
   draw_body_ids = 1u << 11,          ///< each body's index as a label
-  draw_all = 0xFFFu,                 ///< everything above
+  /// joints: anchors, the line between them, axes, limit arcs and stops, spring coils, motor
+  /// direction, reaction-force arrows
+  draw_joints = 1u << 12,
+  draw_all = 0x1FFFu,                ///< everything above
 };
 
 /// The colours of each drawn role; a renderer sets these per theme.
@@ -52,6 +55,8 @@ struct DebugPalette {
   Color center_of_mass{0.0f, 0.0f, 0.0f, 1.0f};     ///< centre of mass marks
   Color broad_phase_pair{0.90f, 0.60f, 0.00f, 0.6f};///< lines between candidate pair centres
   Color label{0.0f, 0.0f, 0.0f, 1.0f};              ///< text
+  Color joint{0.47f, 0.24f, 0.63f, 1.0f};           ///< joint anchors, lines, axes, limits, springs, motors
+  Color joint_reaction{0.80f, 0.12f, 0.35f, 1.0f};  ///< joint reaction-force arrows
 };
 
 /// Options of one `World::draw` call.

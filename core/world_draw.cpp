@@ -8,6 +8,9 @@
 
 namespace impulse2d {
 
+// The joints overlay (core/world_draw_joints.cpp).
+void draw_world_joints(const WorldState& state, DebugDraw& draw, const DebugDrawOptions& options);
+
 namespace {
 
 Color fill_of(const Body& body, const DebugDrawOptions& options) {
@@ -118,6 +121,7 @@ void World::draw(DebugDraw& draw, const DebugDrawOptions& options) const {
     if (flags & draw_center_of_mass) draw.draw_point(center, 5.0f, palette.center_of_mass);
     if (flags & draw_body_ids) draw.draw_text(center, std::to_string(i), palette.label);
   }
+  if (flags & draw_joints) draw_world_joints(*state_, draw, options);
 }
 
 }  // namespace impulse2d

@@ -2,6 +2,7 @@
 #include "render/frame_renderer.h"
 
 #include "core/world.h"
+#include "render/joint_overlay.h"
 #include "render/motion_trails.h"
 #include "render/offscreen_context.h"
 #include "render/driver_quirks.h"
@@ -121,6 +122,10 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   primitives_->next_layer();
   draw_contacts(*primitives_, world, draw_options, options.contacts, scale);
   primitives_->next_layer();
+  if ((draw_options.flags & draw_joints) && world.joint_count() > 0) {
+    draw_joints_overlay(*primitives_, world, draw_options, options.contacts.max_arrow_pixels * static_cast<float>(scale));
+    primitives_->next_layer();
+  }
   if (draw_options.flags & draw_body_ids) draw_body_labels(*primitives_, world, draw_options, options.body_labels);
   primitives_->next_layer();
   if (options.extra_overlays) options.extra_overlays(*primitives_, draw_options);

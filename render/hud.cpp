@@ -87,6 +87,7 @@ std::uint32_t drawn_overlay_flags(const World& world, std::uint32_t flags) {
     if (body.type != BodyType::Static && length_squared(body.linear_velocity) > 0.0f) drawn |= draw_velocities;
     if (body.type == BodyType::Dynamic && !body.awake) drawn |= draw_sleeping;
   }
+  if (world.joint_count() > 0) drawn |= draw_joints;
   if (flags & draw_broad_phase) {
     SegmentCounter pairs;
     DebugDrawOptions options;
@@ -113,6 +114,10 @@ std::vector<LegendEntry> legend_entries(const DebugDrawOptions& options, std::ui
   if (on(draw_sleeping)) entries.push_back({p.sleeping_fill, "asleep"});
   if (on(draw_broad_phase)) entries.push_back({p.broad_phase_pair, "pair"});
   if (on(draw_body_ids)) entries.push_back({p.label, "id"});
+  if (on(draw_joints)) {
+    entries.push_back({p.joint, "joint"});
+    entries.push_back({p.joint_reaction, "reaction"});
+  }
   if (trails_on) entries.push_back({trail_color, "trail"});
   return entries;
 }
@@ -124,7 +129,8 @@ std::vector<LegendEntry> legend_notes(const DebugDrawOptions& options, std::uint
   const auto on = [drawn_flags](std::uint32_t flags) { return (drawn_flags & flags) != 0; };
   const std::string bar = std::to_string(static_cast<int>(kScaleBarPixels)) + " px = ";
   std::vector<LegendEntry> notes;
-  if (on(draw_normal_impulses | draw_friction_impulses)) {
+  // Joint reaction forces are drawn as the impulse of one step, on the impulse arrows' scale.
+  if (on(draw_normal_impulses | draw_friction_impulses | draw_joints)) {
     notes.push_back({p.label, "impulse " + bar + format("%.3g N s", bar_metres / options.impulse_scale), false});
   }
   if (on(draw_velocities)) {
@@ -137,7 +143,7 @@ std::vector<LegendEntry> legend_notes(const DebugDrawOptions& options, std::uint
                          format(", >= %.0f px", min_penetration_pixels),
                      false});
   }
-  if (on(draw_contact_normals | draw_normal_impulses | draw_friction_impulses)) {
+  if (on(draw_contact_normals | draw_normal_impulses | draw_friction_impulses | draw_joints)) {
     notes.push_back({p.label, format("arrows cut at %.0f px //", max_arrow_pixels), false});
   }
   return notes;

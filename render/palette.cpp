@@ -41,6 +41,8 @@ ThemePalette light_palette() {
   d.center_of_mass = rgb(0, 0, 0);
   d.broad_phase_pair = rgb(180, 160, 0, 0.6f);  // Okabe-Ito yellow darkened to read on white
   d.label = rgb(20, 20, 28);
+  d.joint = rgb(110, 50, 150);
+  d.joint_reaction = rgb(200, 30, 90);
   return p;
 }
 
@@ -66,6 +68,8 @@ ThemePalette dark_palette() {
   d.center_of_mass = rgb(255, 255, 255);
   d.broad_phase_pair = rgb(170, 170, 190, 0.45f);  // neutral: yellow is taken by velocity
   d.label = rgb(232, 232, 236);
+  d.joint = rgb(205, 160, 255);
+  d.joint_reaction = rgb(255, 110, 150);
   return p;
 }
 

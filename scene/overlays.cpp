@@ -21,6 +21,7 @@ const std::vector<OverlayName>& overlay_names() {
       {"sleeping", draw_sleeping, "sleeping bodies dimmed"},
       {"broadphase", draw_broad_phase, "broad-phase pairs"},
       {"ids", draw_body_ids, "body indices"},
+      {"joints", draw_joints, "joint anchors, axes, limits, springs, motors and reaction forces"},
       {"contacts",
        draw_contact_points | draw_contact_normals | draw_normal_impulses | draw_friction_impulses |
            draw_penetration,

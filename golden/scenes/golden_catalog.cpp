@@ -29,6 +29,13 @@ constexpr SceneFrames kSceneFrames[] = {
     {"heavy_on_light", 30, 300},
 };
 
+/// The scenes with joints (issue 30): the same frames, their motion overlays with the joints'.
+constexpr SceneFrames kJointSceneFrames[] = {
+    {"pendulum", 45, 300},  {"double_pendulum", 60, 300}, {"rope_bridge", 90, 480},
+    {"car", 120, 480},      {"ragdolls", 120, 600},       {"catapult", 90, 240},
+    {"heavy_chain", 60, 300}, {"mouse_drag", 120, 360},
+};
+
 /// A built-in scene's golden at the default size, parameters and theme.
 GoldenSpec builtin(const std::string& scene, const char* name, std::int64_t step,
                    std::uint32_t overlays) {
@@ -49,6 +56,13 @@ std::vector<GoldenSpec> make_catalog() {
     catalog.push_back(builtin(scene, "settled", frames.settled, 0));
     catalog.push_back(builtin(scene, "motion_overlays", frames.motion, kPhysicsOverlays));
     catalog.push_back(builtin(scene, "settled_overlays", frames.settled, kPhysicsOverlays));
+  }
+  for (const SceneFrames& frames : kJointSceneFrames) {
+    const std::string scene = frames.scene;
+    catalog.push_back(builtin(scene, "start", 0, 0));
+    catalog.push_back(builtin(scene, "motion", frames.motion, 0));
+    catalog.push_back(builtin(scene, "settled", frames.settled, 0));
+    catalog.push_back(builtin(scene, "motion_overlays", frames.motion, kPhysicsOverlays | draw_joints));
   }
   // Every overlay once, on the scene with every shape pair in contact.
   catalog.push_back(builtin("shape_pairs", "motion_all_overlays", 30, draw_all));

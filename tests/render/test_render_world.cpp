@@ -170,7 +170,7 @@ TEST(RenderWorld, LegendListsTheOverlaysDrawnWithScalesInItsNotes) {
   EXPECT_EQ(notes[2].label, "arrows cut at 120 px //");
   EXPECT_FALSE(notes[0].swatch);
   EXPECT_EQ(legend_entries(options, drawn, true, Color{}).back().label, "trail");
-  EXPECT_EQ(legend_entries(options, draw_all, false, Color{}).size(), 11u);
+  EXPECT_EQ(legend_entries(options, draw_all, false, Color{}).size(), 13u);
   options.penetration_scale = 10.0f;
   EXPECT_EQ(legend_notes(options, draw_penetration, camera, 240.0f, 8.0f)[0].label, "depth x10, >= 8 px");
   // Only what the world draws: a world without contacts has no contact entries.
