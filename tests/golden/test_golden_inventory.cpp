@@ -4,6 +4,9 @@
 /// sidecar describes its catalog entry.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <vector>
@@ -28,6 +31,19 @@ std::vector<std::string> catalog_ids() {
   std::vector<std::string> ids;
   for (const GoldenSpec& spec : golden_catalog()) ids.push_back(spec.id());
   return ids;
+}
+
+// docs/golden.md states the catalogue's size; issue 29 found it saying 61 when there were 66.
+TEST(GoldenDocs, FiguresMatchTheCatalog) {
+  const std::filesystem::path doc =
+      std::filesystem::path(IMPULSE2D_GOLDEN_DIR).parent_path() / "docs" / "golden.md";
+  std::ifstream file(doc);
+  ASSERT_TRUE(file) << doc;
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string figure =
+      "The catalogue holds " + std::to_string(golden_catalog().size()) + " built-in goldens";
+  EXPECT_NE(text.find(figure), std::string::npos)
+      << doc.string() << " should say '" << figure << "' (update the figure with the catalogue)";
 }
 
 TEST(GoldenCatalog, CoversEveryBuiltinSceneWithUniqueNames) {
