@@ -13,7 +13,7 @@ namespace impulse2d {
 namespace {
 
 constexpr float kPi = 3.14159265f;
-constexpr float kMarkRadius = 0.3f;   // limit arcs and motor arcs, metres
+constexpr float kMaxMarkRadius = 0.3f;   // limit arcs and motor arcs, metres, at most
 constexpr int kArcSegments = 12;
 
 Transform drawn_pose(const Body& body, float alpha) {
@@ -71,7 +71,7 @@ void draw_stop(DebugDraw& draw, vec2 point, vec2 axis, Color color) {
 }
 
 // A curved arrow about `center` turning counter-clockwise for `speed` > 0, clockwise below.
-void draw_turn(DebugDraw& draw, vec2 center, float start_angle, float speed, Color color) {
+void draw_turn(DebugDraw& draw, vec2 center, float start_angle, float speed, float kMarkRadius, Color color) {
   if (speed == 0.0f) return;
   const float sweep = speed > 0.0f ? 0.5f * kPi : -0.5f * kPi;
   const float radius = 0.6f * kMarkRadius;
@@ -98,6 +98,13 @@ void draw_world_joints(const WorldState& state, DebugDraw& draw, const DebugDraw
     const vec2 anchor_b = pose_b.apply(joint.local_anchor_b);
     const float angle_a = drawn_angle(body_a, alpha);
     const float angle_b = drawn_angle(body_b, alpha);
+    // Marks no larger than a third of the smaller body's longest side (small ragdoll limbs).
+    const auto longest = [](const Body& body) {
+      return std::max(body.aabb.upper.x - body.aabb.lower.x, body.aabb.upper.y - body.aabb.lower.y);
+    };
+    const float kMarkRadius = std::min(kMaxMarkRadius, std::max(0.05f, longest(body_a) < longest(body_b)
+                                                                            ? longest(body_a) / 3.0f
+                                                                            : longest(body_b) / 3.0f));
     switch (joint.type) {
       case JointType::Revolute: {
         draw.draw_segment(pose_a.position, anchor_a, color);
@@ -113,7 +120,7 @@ void draw_world_joints(const WorldState& state, DebugDraw& draw, const DebugDraw
         if (joint.enable_spring && joint.hertz > 0.0f) {
           draw_arc(draw, anchor_a, 0.45f * kMarkRadius, angle_b, angle_b + 1.5f * kPi, color);
         }
-        if (joint.enable_motor) draw_turn(draw, anchor_b, angle_b + 0.5f * kPi, joint.motor_speed, color);
+        if (joint.enable_motor) draw_turn(draw, anchor_b, angle_b + 0.5f * kPi, joint.motor_speed, kMarkRadius, color);
         break;
       }
       case JointType::Prismatic:
@@ -134,7 +141,7 @@ void draw_world_joints(const WorldState& state, DebugDraw& draw, const DebugDraw
         }
         if (joint.enable_motor) {
           if (joint.type == JointType::Wheel) {
-            draw_turn(draw, anchor_b, angle_b + 0.5f * kPi, joint.motor_speed, color);
+            draw_turn(draw, anchor_b, angle_b + 0.5f * kPi, joint.motor_speed, kMarkRadius, color);
           } else if (joint.motor_speed != 0.0f) {
             const vec2 push = axis * (joint.motor_speed > 0.0f ? kMarkRadius : -kMarkRadius);
             const vec2 side(-axis.y * 0.1f, axis.x * 0.1f);

@@ -17,8 +17,8 @@ void build(World& world, const Params& params) {
   // Bumps: low half-buried discs, then a row of small ones.
   for (int i = 0; i < 8; ++i) {
     const float x = 4.0f + 3.5f * static_cast<float>(i);
-    const float radius = i % 2 == 0 ? 0.5f : 0.35f;
-    add_body(world, BodyType::Static, make_circle(radius), {x, -radius + 0.22f}, ground);
+    const float radius = i % 2 == 0 ? 0.4f : 0.3f;
+    add_body(world, BodyType::Static, make_circle(radius), {x, -radius + 0.15f}, ground);
   }
   const Material body{"Chassis", 2.0f, 0.1f, 0.6f, 0.5f};
   const Material tyre{"Tyre", 1.0f, 0.1f, 1.0f, 0.9f};

@@ -18,14 +18,14 @@ constexpr float limit = 0.35f;
 
 void build(World& world, const Params& params) {
   const Material ground = materials::static_ground();
-  add_static_box(world, {4.0f, -0.5f}, {14.0f, 0.5f}, ground);
+  add_static_box(world, {-4.0f, -0.5f}, {14.0f, 0.5f}, ground);
   const vec2 wedge[3] = {{-0.6f, 0.0f}, {0.6f, 0.0f}, {0.0f, pivot_height - 0.12f}};
   const BodyId fulcrum = world.create_body([&] {
     BodyDef def;
     def.type = BodyType::Static;
     def.material = ground;
     vec2 centroid;
-    const Shape shape = make_polygon(wedge, 3, &centroid);
+    make_polygon(wedge, 3, &centroid);
     def.position = centroid;
     return def;
   }(), make_polygon(wedge, 3));
@@ -59,7 +59,7 @@ Scene catapult() {
   scene.model.polygons = true;
   scene.model.restitution = false;
   scene.view.camera.mode = CameraSpec::Mode::FitBounds;
-  scene.view.camera.bounds = make_bounds({-5.0f, -0.5f}, {17.0f, 10.0f});
+  scene.view.camera.bounds = make_bounds({-16.0f, -0.5f}, {6.0f, 10.0f});
   scene.view.steps = 360;
   scene.view.draw.flags = draw_shapes | draw_joints;
   scene.build = build;
