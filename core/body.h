@@ -51,6 +51,20 @@ struct BodyDef {
   std::uint32_t collision_layers = 1;    ///< collides with bodies whose layers share a bit
   Material material = materials::wood(); ///< density, restitution, friction
   std::uint64_t user_data = 0;           ///< any value the caller wants back
+  /// Report this body's contacts' begin and end of touch (`World::contact_events`); a pair
+  /// reports when either body asks (Box2D v3: on by default).
+  bool enable_contact_events = true;
+  /// Report impacts faster than `World::hit_event_threshold()` (`ContactEvents::hit`); a pair
+  /// reports when either body asks (off by default, as Box2D v3).
+  bool enable_hit_events = false;
+  /// A sensor: no collision response at all (no contacts, bullets pass), but it reports every
+  /// non-sensor body whose collision layers share a bit with its own that begins or stops
+  /// overlapping it (`World::sensor_events`).
+  bool is_sensor = false;
+  /// For a sensor: also report static bodies (off by default).
+  bool sensor_detects_static = false;
+  /// Sensors see this body (on by default; a sensor itself is never seen).
+  bool enable_sensor_events = true;
 };
 
 /// What users read of a body, returned by `World::body(id)`: a copy of its state taken when
@@ -82,6 +96,7 @@ struct BodyView {
   std::uint64_t user_data = 0;        ///< the caller's value
   const Shape* shape = nullptr;       ///< in body-local coordinates, centroid at the origin
   const Material* material = nullptr; ///< what it is made of
+  bool is_sensor = false;             ///< detects overlaps, never collides
 };
 
 }  // namespace impulse2d

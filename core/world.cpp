@@ -4,6 +4,7 @@
 #include "core/solver/integrate.h"
 #include "core/solver/step_solver.h"
 #include "core/solver/world_state.h"
+#include "core/world_events.h"
 
 #include <algorithm>
 #include <chrono>
@@ -127,6 +128,26 @@ const std::vector<Contact>& World::sleeping_contacts() const { return state_->sl
 void World::set_contact_filter(ContactFilter filter) { state_->contact_filter = std::move(filter); }
 const StepStats& World::stats() const { return state_->stats; }
 const std::vector<BodyId>& World::diverged_bodies() const { return state_->diverged_bodies; }
+const ContactEvents& World::contact_events() const { return state_->events.contact; }
+const SensorEvents& World::sensor_events() const { return state_->events.sensor; }
+float World::hit_event_threshold() const { return state_->events.hit_event_threshold; }
+
+void World::set_hit_event_threshold(float speed) {
+  if (!(std::isfinite(speed) && speed >= 0.0f)) {
+    throw Error("World::set_hit_event_threshold: speed must be finite and >= 0 (got " +
+                std::to_string(speed) + ")");
+  }
+  state_->events.hit_event_threshold = speed;
+}
+
+namespace {
+// Counts the living bodies that ask for each kind of event (`sign` +1 on creation, -1 on removal).
+void count_event_flags(WorldEvents& events, const Body& body, int sign) {
+  if (body.enable_contact_events) events.contact_event_bodies += sign;
+  if (body.enable_hit_events) events.hit_event_bodies += sign;
+  if (body.is_sensor) events.sensor_bodies += sign;
+}
+}  // namespace
 
 void World::set_settings(const WorldSettings& settings) {
   validate_settings(settings);
@@ -212,6 +233,12 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   body.speculative = def.speculative;
   body.collision_layers = def.collision_layers;
   body.user_data = def.user_data;
+  body.enable_contact_events = def.enable_contact_events;
+  body.enable_hit_events = def.enable_hit_events;
+  body.is_sensor = def.is_sensor;
+  body.sensor_detects_static = def.sensor_detects_static;
+  body.enable_sensor_events = def.enable_sensor_events;
+  count_event_flags(state_->events, body, +1);
   body.aabb = compute_aabb(body.shape, body.transform);
   state_->bodies[index] = body;
   state_->alive[index] = 1;
@@ -221,7 +248,8 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
 }
 
 void World::remove_body(BodyId id) {
-  checked_body(*state_, id, "World::remove_body");
+  count_event_flags(state_->events, checked_body(*state_, id, "World::remove_body"), -1);
+  end_events_of_removed_body(*state_, id);
   state_->alive[id.index] = 0;
   state_->broad_phase.remove_body(id.index);
   state_->free_slots.push_back(id.index);
@@ -382,6 +410,7 @@ void World::step() {
     body.previous_position = body.transform.position;
     body.previous_angle = body.angle;
   }
+  begin_step_events(world);
   if (!world.solver || world.solver_method != world.settings.solver) {
     world.solver = make_step_solver(world.settings.solver);
     world.solver_method = world.settings.solver;
@@ -398,6 +427,7 @@ void World::step() {
                                world.joint_alive, world.settings, world.settings.time_step);
   }
   finish_bodies(world);
+  collect_step_events(world);
   world.time += static_cast<double>(world.settings.time_step);
   ++world.step_count;
   world.stats.body_count = world.living_body_count;

@@ -6,6 +6,7 @@
 #include "core/body.h"
 #include "core/contact.h"
 #include "core/debug_draw.h"
+#include "core/events.h"
 #include "core/joint.h"
 #include "core/settings.h"
 #include "core/step_stats.h"
@@ -189,6 +190,17 @@ class World {
   /// sleeping pair): false lets them pass through each other until they separate (e.g.
   /// dropping through a one-way platform). Returns false when the pair is not touching. Throws `Error` on a stale handle.
   bool set_contact_enabled(BodyId a, BodyId b, bool enabled);
+
+  /// The last step's contact events: begin and end of touch, hits (see events.h). Valid
+  /// until the next step; reading allocates nothing.
+  const ContactEvents& contact_events() const;
+  /// The last step's sensor events: shapes that began or stopped overlapping a sensor.
+  const SensorEvents& sensor_events() const;
+  /// Sets the approach speed (m/s, >= 0) above which a touching pair with hit events on makes
+  /// a `ContactHitEvent` (default 1 m/s, Box2D v3's). Throws `Error` when negative or not finite.
+  void set_hit_event_threshold(float speed);
+  /// The approach speed (m/s) above which hits are reported.
+  float hit_event_threshold() const;
 
   /// Counts and timings of the last step.
   const StepStats& stats() const;

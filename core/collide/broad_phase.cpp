@@ -33,6 +33,7 @@ BodyPair ordered(std::uint32_t a, std::uint32_t b) { return a < b ? BodyPair{a, 
 bool bodies_can_collide(const Body& a, const Body& b) {
   if (!is_moving(a) && !is_moving(b)) return false;
   if (a.type != BodyType::Dynamic && b.type != BodyType::Dynamic) return false;
+  if (a.is_sensor || b.is_sensor) return false;  // sensors only report overlaps (events)
   return (a.collision_layers & b.collision_layers) != 0;
 }
 

@@ -52,7 +52,7 @@ int BulletSweeper::sweep(std::vector<Body>& bodies, const std::vector<std::uint8
   bool trees_cover_bodies = false;
   for (std::uint32_t b = 0; b < bodies.size(); ++b) {
     Body& bullet = bodies[b];
-    if (!alive[b] || !bullet.is_bullet || bullet.type != BodyType::Dynamic || !bullet.awake) continue;
+    if (!alive[b] || !bullet.is_bullet || bullet.is_sensor || bullet.type != BodyType::Dynamic || !bullet.awake) continue;
     const float spacing = 0.5f * smallest_extent(bullet.shape);
     const Transform end = bullet.transform;
     const float end_angle = bullet.angle;
@@ -76,7 +76,7 @@ int BulletSweeper::sweep(std::vector<Body>& bodies, const std::vector<std::uint8
     candidates_.clear();
     for (const std::uint32_t o : nearby_) {
       const Body& other = bodies[o];
-      if (o == b || !alive[o] || other.is_bullet) continue;
+      if (o == b || !alive[o] || other.is_bullet || other.is_sensor) continue;
       if ((other.collision_layers & bullet.collision_layers) == 0) continue;
       if (!compute_aabb(other.shape, other.transform).overlaps(swept)) continue;
       // Already touching at the start: the ordinary contact handles that pair.

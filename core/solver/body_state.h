@@ -38,6 +38,11 @@ struct Body {
   std::uint32_t collision_layers = 1;  ///< bitmask
   Aabb aabb;                     ///< world bounds, updated each step
   std::uint64_t user_data = 0;   ///< the caller's value
+  bool enable_contact_events = true;  ///< report begin/end touch of its pairs
+  bool enable_hit_events = false;     ///< report its pairs' impacts
+  bool is_sensor = false;             ///< no contacts; reports overlaps instead
+  bool sensor_detects_static = false; ///< as a sensor: also reports static bodies
+  bool enable_sensor_events = true;   ///< sensors see it
   Material material;          ///< what it is made of
   Shape shape;                ///< in body-local coordinates, centroid at the origin
 };
@@ -67,6 +72,7 @@ inline BodyView view_of(const Body& body) {
   view.user_data = body.user_data;
   view.shape = &body.shape;
   view.material = &body.material;
+  view.is_sensor = body.is_sensor;
   return view;
 }
 

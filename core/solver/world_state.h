@@ -15,6 +15,7 @@
 #include "core/solver/wide_contact_solver.h"
 #include "core/step_stats.h"
 #include "core/world.h"
+#include "core/world_events.h"
 
 #include <cstdint>
 #include <memory>
@@ -63,6 +64,7 @@ struct WorldState {
   StepStats stats;                        ///< of the last step
   bool bounds_current = true;  ///< every living body's aabb matches its transform
   std::vector<BodyId> diverged_bodies;    ///< of the last step
+  WorldEvents events;                     ///< touches, overlaps and the caller's event buffers
   double time = 0.0;                      ///< simulated seconds
   std::int64_t step_count = 0;            ///< steps taken
   float accumulator = 0.0f;               ///< `World::advance`'s left-over time, seconds

@@ -1,0 +1,234 @@
+// Events of a step (events.h): after the step, this step's touching pairs and sensor overlaps
+// are compared with the last step's (both sorted by slot pair), so the solver never calls out
+// and a world without events steps exactly as before (this only reads what the step made).
+#include "core/world_events.h"
+
+#include "core/collide.h"
+#include "core/solver/world_state.h"
+
+#include <algorithm>
+
+namespace impulse2d {
+
+namespace {
+
+ShapeId shape_of(BodyId body) { return ShapeId{body, 0}; }
+
+bool key_less(const EventPair& a, const EventPair& b) { return a.key() < b.key(); }
+
+// Relative approach speed (m/s, > 0 closing) of a contact point under the bodies' free
+// velocities (what they carry into the step plus the step's gravity and forces).
+float free_approach_speed(const WorldEvents& events, const Contact& contact, const ContactPoint& point) {
+  const std::uint32_t a = contact.body_a.index;
+  const std::uint32_t b = contact.body_b.index;
+  const vec2 relative = (events.free_linear_velocity[b] + cross(events.free_angular_velocity[b], point.anchor_b)) -
+                        (events.free_linear_velocity[a] + cross(events.free_angular_velocity[a], point.anchor_a));
+  return -glm::dot(relative, contact.normal);
+}
+
+// A contact touches in a step when one of its points, moving freely through the step from the
+// gap it had when the step began, would end it less than `slop` apart (or overlapping): a
+// resting point, an overlap, or a speculative point the bodies close within the step (the
+// solver then stops them at the surface). A contact turned off by the filter does not touch.
+// This reads only what the step began with, so it is the same in every solver (whose stored
+// impulses differ: a bounce's is dropped, the per-iteration solver keeps none).
+bool is_touching(const WorldEvents& events, const Contact& contact, float slop, float dt) {
+  if (!contact.enabled) return false;
+  for (int i = 0; i < contact.point_count; ++i) {
+    const ContactPoint& point = contact.points[i];
+    const float gap = -point.depth;
+    if (gap - free_approach_speed(events, contact, point) * dt <= slop) return true;
+  }
+  return false;
+}
+
+template <class Vector>
+void reserve_at_least(Vector& vector, std::size_t size) {
+  if (vector.capacity() < size) vector.reserve(size);
+}
+
+// Calls begin(pair) for each pair of `now` not in `before` and end(pair) for each of `before`
+// not in `now`; both sorted by key; the calls come in key order.
+template <class Begin, class End>
+void compare_pairs(const std::vector<EventPair>& before, const std::vector<EventPair>& now,
+                   Begin begin, End end) {
+  std::size_t i = 0;
+  std::size_t j = 0;
+  while (i < before.size() || j < now.size()) {
+    if (j == now.size() || (i < before.size() && before[i].key() < now[j].key())) {
+      end(before[i++]);
+    } else if (i == before.size() || now[j].key() < before[i].key()) {
+      begin(now[j++]);
+    } else {
+      ++i;
+      ++j;
+    }
+  }
+}
+
+void collect_contact_events(WorldState& world) {
+  WorldEvents& events = world.events;
+  const float slop = world.settings.slop;
+  const float dt = world.settings.time_step;
+  std::vector<EventPair>& next = events.next;
+  reserve_at_least(next, world.contacts.capacity() + world.sleeping_contacts.capacity());
+  next.clear();
+  auto wants = [&world](const Contact& contact) {
+    return world.bodies[contact.body_a.index].enable_contact_events ||
+           world.bodies[contact.body_b.index].enable_contact_events;
+  };
+  // Merge the awake and the set-aside contacts (each sorted by pair, disjoint): a pair that
+  // fell asleep keeps touching.
+  const std::vector<Contact>& awake = world.contacts;
+  const std::vector<Contact>& resting = world.sleeping_contacts;
+  std::size_t i = 0;
+  std::size_t j = 0;
+  while (i < awake.size() || j < resting.size()) {
+    const bool take_awake =
+        j == resting.size() ||
+        (i < awake.size() && EventPair{awake[i].body_a, awake[i].body_b}.key() <
+                                 EventPair{resting[j].body_a, resting[j].body_b}.key());
+    const Contact& contact = take_awake ? awake[i++] : resting[j++];
+    if (wants(contact) && is_touching(events, contact, slop, dt)) next.push_back({contact.body_a, contact.body_b});
+  }
+  reserve_at_least(events.contact.begin, next.capacity());
+  reserve_at_least(events.contact.end, events.touching.capacity() + events.contact.end.size());
+  compare_pairs(
+      events.touching, next,
+      [&events](const EventPair& pair) {
+        events.contact.begin.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+      },
+      [&events](const EventPair& pair) {
+        events.contact.end.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+      });
+  std::swap(events.touching, next);
+}
+
+void collect_hit_events(WorldState& world) {
+  WorldEvents& events = world.events;
+  reserve_at_least(events.contact.hit, world.contacts.capacity());
+  for (const Contact& contact : world.contacts) {
+    const Body& a = world.bodies[contact.body_a.index];
+    const Body& b = world.bodies[contact.body_b.index];
+    if (!(a.enable_hit_events || b.enable_hit_events) ||
+        !is_touching(events, contact, world.settings.slop, world.settings.time_step)) {
+      continue;
+    }
+    int fastest = -1;
+    float fastest_speed = events.hit_event_threshold;
+    for (int p = 0; p < contact.point_count; ++p) {
+      const float approach = free_approach_speed(events, contact, contact.points[p]);
+      if (approach > fastest_speed) {
+        fastest_speed = approach;
+        fastest = p;
+      }
+    }
+    if (fastest < 0) continue;
+    events.contact.hit.push_back({shape_of(contact.body_a), shape_of(contact.body_b), contact.body_a,
+                                  contact.body_b, contact.points[fastest].point, contact.normal,
+                                  fastest_speed});
+  }
+}
+
+void collect_sensor_events(WorldState& world) {
+  WorldEvents& events = world.events;
+  std::vector<EventPair>& next = events.next;
+  next.clear();
+  for (std::uint32_t s = 0; s < world.bodies.size(); ++s) {
+    const Body& sensor = world.bodies[s];
+    if (!world.alive[s] || !sensor.is_sensor) continue;
+    world.broad_phase.query(sensor.aabb, events.nearby);  // ascending slots
+    for (const std::uint32_t o : events.nearby) {
+      const Body& other = world.bodies[o];
+      if (o == s || !world.alive[o] || other.is_sensor || !other.enable_sensor_events) continue;
+      if (other.type == BodyType::Static && !sensor.sensor_detects_static) continue;
+      if ((other.collision_layers & sensor.collision_layers) == 0) continue;
+      if (!other.aabb.overlaps(sensor.aabb)) continue;
+      if (collide(sensor.shape, sensor.transform, other.shape, other.transform).point_count == 0) continue;
+      next.push_back({sensor.id, other.id});
+    }
+  }
+  reserve_at_least(events.sensor.begin, next.capacity());
+  reserve_at_least(events.sensor.end, events.sensor_overlaps.capacity() + events.sensor.end.size());
+  compare_pairs(
+      events.sensor_overlaps, next,
+      [&events](const EventPair& pair) {
+        events.sensor.begin.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+      },
+      [&events](const EventPair& pair) {
+        events.sensor.end.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+      });
+  std::swap(events.sensor_overlaps, next);
+}
+
+}  // namespace
+
+void begin_step_events(WorldState& world) {
+  WorldEvents& events = world.events;
+  events.contact.begin.clear();
+  events.contact.end.clear();
+  events.contact.hit.clear();
+  events.sensor.begin.clear();
+  events.sensor.end.clear();
+  if (!events.removed_touches.empty()) {
+    std::stable_sort(events.removed_touches.begin(), events.removed_touches.end(), key_less);
+    for (const EventPair& pair : events.removed_touches) {
+      events.contact.end.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+    }
+    events.removed_touches.clear();
+  }
+  if (!events.removed_overlaps.empty()) {
+    std::stable_sort(events.removed_overlaps.begin(), events.removed_overlaps.end(), key_less);
+    for (const EventPair& pair : events.removed_overlaps) {
+      events.sensor.end.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+    }
+    events.removed_overlaps.clear();
+  }
+  if (events.hit_event_bodies == 0 && events.contact_event_bodies == 0 && events.touching.empty()) return;
+  // The velocity each body would end the step with if nothing touched it: what it carries
+  // into the step plus the step's gravity and applied forces (a pass over the bodies, read
+  // only; contact events and hits are judged on it).
+  const std::size_t count = world.bodies.size();
+  if (events.free_linear_velocity.size() < count) {
+    events.free_linear_velocity.resize(count);
+    events.free_angular_velocity.resize(count);
+  }
+  const float dt = world.settings.time_step;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Body& body = world.bodies[i];
+    vec2 linear = body.linear_velocity;
+    float angular = body.angular_velocity;
+    if (world.alive[i] && body.type == BodyType::Dynamic && body.awake) {
+      linear += (world.settings.gravity * body.gravity_scale + body.force * body.inverse_mass) * dt;
+      angular += body.inverse_inertia * body.torque * dt;
+    }
+    events.free_linear_velocity[i] = linear;
+    events.free_angular_velocity[i] = angular;
+  }
+}
+
+void collect_step_events(WorldState& world) {
+  WorldEvents& events = world.events;
+  if (events.contact_event_bodies > 0 || !events.touching.empty()) collect_contact_events(world);
+  if (events.hit_event_bodies > 0) collect_hit_events(world);
+  if (events.sensor_bodies > 0 || !events.sensor_overlaps.empty()) collect_sensor_events(world);
+}
+
+void end_events_of_removed_body(WorldState& world, BodyId id) {
+  WorldEvents& events = world.events;
+  auto move_out = [&id](std::vector<EventPair>& from, std::vector<EventPair>& into) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      if (from[i].a == id || from[i].b == id) {
+        into.push_back(from[i]);
+      } else {
+        from[kept++] = from[i];
+      }
+    }
+    from.resize(kept);
+  };
+  move_out(events.touching, events.removed_touches);
+  move_out(events.sensor_overlaps, events.removed_overlaps);
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,54 @@
+#pragma once
+/// @file world_events.h
+/// The world's event bookkeeping (internal): what touched after the last step, what each
+/// sensor held, the buffers the caller reads, and the stages that fill them after a step.
+
+#include "core/events.h"
+#include "core/math.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace impulse2d {
+
+struct WorldState;
+
+/// Two bodies of a remembered touch or overlap, ordered by slot (sensor first for sensors).
+struct EventPair {
+  BodyId a;  ///< smaller slot (or the sensor)
+  BodyId b;  ///< larger slot (or the visitor)
+  /// Slot key for ordering: a.index << 32 | b.index.
+  std::uint64_t key() const { return static_cast<std::uint64_t>(a.index) << 32 | b.index; }
+};
+
+/// Event state of a world; copied with it and saved in snapshots.
+struct WorldEvents {
+  float hit_event_threshold = 1.0f;  ///< m/s (Box2D v3's default)
+  int contact_event_bodies = 0;      ///< living bodies with enable_contact_events
+  int hit_event_bodies = 0;          ///< living bodies with enable_hit_events
+  int sensor_bodies = 0;             ///< living sensors
+
+  std::vector<EventPair> touching;        ///< pairs touching after the last step, by key
+  std::vector<EventPair> sensor_overlaps; ///< (sensor, visitor) after the last step, by key
+  std::vector<EventPair> removed_touches; ///< ended by remove_body since the last step
+  std::vector<EventPair> removed_overlaps;///< ended by remove_body since the last step
+
+  ContactEvents contact;  ///< the caller's buffers (last step's events)
+  SensorEvents sensor;    ///< the caller's buffers (last step's events)
+
+  // Scratch (reused; no allocation once warm).
+  std::vector<EventPair> next;            ///< this step's touching / overlaps
+  std::vector<vec2> free_linear_velocity; ///< per slot: start velocity + the step's forces
+  std::vector<float> free_angular_velocity;  ///< per slot, rad/s
+  std::vector<std::uint32_t> nearby;      ///< broad-phase query output
+};
+
+/// Start of a step: clears the caller's buffers (moving in the end events of removed bodies)
+/// and, when hit events are on, records each body's pre-solve velocity.
+void begin_step_events(WorldState& world);
+/// End of a step (after bodies are finished): contact begin/end/hit and sensor events.
+void collect_step_events(WorldState& world);
+/// `remove_body(id)`: the body's touches and overlaps end (reported after the next step).
+void end_events_of_removed_body(WorldState& world, BodyId id);
+
+}  // namespace impulse2d
