@@ -8,6 +8,7 @@
 #include "core/debug_draw.h"
 #include "core/events.h"
 #include "core/joint.h"
+#include "core/query.h"
 #include "core/settings.h"
 #include "core/step_stats.h"
 
@@ -175,6 +176,25 @@ class World {
   /// Every body hit along the ray, sorted by fraction (then slot order).
   std::vector<RayHit> raycast_all(vec2 origin, vec2 translation,
                                   std::uint32_t layers = 0xFFFFFFFFu) const;
+
+  /// Bodies whose shapes overlap `shape` placed at `transform` (a Box turns with the
+  /// rotation), by the narrow phase's own test (touching at zero depth is no overlap), that pass
+  /// `filter`. Writes the `capacity` smallest slots, ascending, into `out` and returns how many
+  /// bodies overlap in all (may exceed `capacity`). Allocates nothing (keep `filter.accept`'s
+  /// captures small); throws `Error` on an invalid shape, a non-finite transform or
+  /// capacity > 0 without a buffer.
+  int overlap_shape(const Shape& shape, const Transform& transform, BodyId* out, int capacity,
+                    const QueryFilter& filter = QueryFilter{}) const;
+  /// Moves `shape` from `transform` along `translation` (metres; rotation kept) and returns the
+  /// first body it meets among those passing `filter`: fraction of the translation (to about
+  /// 1e-6 m along it), point on that body and its surface normal; ties by smallest slot. A body
+  /// overlapping at the start is met at fraction 0. Allocates nothing.
+  std::optional<ShapeCastHit> cast_shape(const Shape& shape, const Transform& transform,
+                                         vec2 translation,
+                                         const QueryFilter& filter = QueryFilter{}) const;
+  /// The first body hit along `origin` -> `origin + translation` among those passing `filter`
+  /// (layer mask, sensors, static bodies, callback); ties by smallest slot. Allocates nothing.
+  std::optional<RayHit> raycast_closest(vec2 origin, vec2 translation, const QueryFilter& filter) const;
 
   /// Touching pairs after the last step, sorted by (A's slot, B's slot).
   const std::vector<Contact>& contacts() const;

@@ -56,6 +56,20 @@ class BroadPhase {
   /// `origin + translation` (metres) meets: a superset of the bodies the segment can hit.
   void raycast(vec2 origin, vec2 translation, std::vector<std::uint32_t>& slots) const;
 
+  /// Calls `visit(slot)` for each slot whose fat box overlaps or touches `box` (and each slot
+  /// with non-finite bounds), in tree order, allocating nothing; stops when `visit` returns
+  /// false. Callers that need slot order sort or select themselves (world queries).
+  template <typename Visit>
+  void visit_overlaps(const Aabb& box, Visit&& visit) const {
+    for (const std::uint32_t slot : unbounded_) {
+      if (!visit(slot)) return;
+    }
+    bool going = true;
+    for (const DynamicTree& tree : trees_) {
+      tree.query(box, [&](std::uint32_t slot) { return going = visit(slot); });
+      if (!going) return;
+    }
+  }
   /// The tree holding the proxies of bodies of `type` (for tests and statistics).
   const DynamicTree& tree(BodyType type) const { return trees_[static_cast<std::size_t>(type)]; }
 
