@@ -231,6 +231,17 @@ class World {
   /// position, stopped and put to sleep instead of spreading NaN. Cleared by the next step.
   const std::vector<BodyId>& diverged_bodies() const;
 
+  /// The whole state of the world as bytes (layout in snapshot.h): bodies, shapes, joints,
+  /// contacts with their warm-start impulses and friction state, settings, time and event
+  /// state. A world restored from it continues bit for bit as this one.
+  std::vector<std::uint8_t> save_snapshot() const;
+  /// Replaces this world's state by the one saved in `bytes` (the broad phase is rebuilt;
+  /// this world's contact filter is kept). Throws `Error` saying what is wrong for a buffer of
+  /// another version, a truncated one or one with changed bytes, leaving this world unchanged.
+  void restore_snapshot(const std::vector<std::uint8_t>& bytes);
+  /// As above, from `size` bytes at `data`.
+  void restore_snapshot(const std::uint8_t* data, std::size_t size);
+
   /// Emits the world to `draw`: shapes (interpolated by `options.interpolation_alpha`), then
   /// overlays in the order of `DebugDrawFlag`.
   void draw(DebugDraw& draw, const DebugDrawOptions& options) const;
