@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -119,7 +120,9 @@ TEST(OverlapQuery, AgreesWithTheNarrowPhaseForEveryPair) {
           float deepest = 0.0f;
           const Manifold m = collide(shapes[query], xf, *view.shape, view.transform);
           for (int i = 0; i < m.point_count; ++i) deepest = std::max(deepest, m.points[i].depth);
-          if (deepest > 1e-4f) EXPECT_EQ(distance.distance, 0.0f);
+          if (deepest > 1e-4f) {
+            EXPECT_EQ(distance.distance, 0.0f);
+          }
           ++overlaps;
         } else {
           // Apart by the narrow phase: GJK finds a gap, unless they only just touch.
