@@ -14,10 +14,11 @@ constexpr float wheel_radius = 0.4f;
 void build(World& world, const Params& params) {
   const Material ground = materials::static_ground();
   add_static_box(world, {20.0f, -0.5f}, {30.0f, 0.5f}, ground);
-  // Bumps: low half-buried discs, then a row of small ones.
+  // Bumps: large discs buried but for 15 cm, gentle humps (and never whole in view, so the
+  // legend band over the ground hides no body).
   for (int i = 0; i < 8; ++i) {
     const float x = 4.0f + 3.5f * static_cast<float>(i);
-    const float radius = i % 2 == 0 ? 0.4f : 0.3f;
+    const float radius = i % 2 == 0 ? 1.5f : 1.0f;
     add_body(world, BodyType::Static, make_circle(radius), {x, -radius + 0.15f}, ground);
   }
   const Material body{"Chassis", 2.0f, 0.1f, 0.6f, 0.5f};
