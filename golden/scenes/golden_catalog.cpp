@@ -63,6 +63,7 @@ std::vector<GoldenSpec> make_catalog() {
     catalog.push_back(builtin(scene, "motion", frames.motion, 0));
     catalog.push_back(builtin(scene, "settled", frames.settled, 0));
     catalog.push_back(builtin(scene, "motion_overlays", frames.motion, kPhysicsOverlays | draw_joints));
+    catalog.push_back(builtin(scene, "settled_overlays", frames.settled, kPhysicsOverlays | draw_joints));
   }
   // Every overlay once, on the scene with every shape pair in contact.
   catalog.push_back(builtin("shape_pairs", "motion_all_overlays", 30, draw_all));

@@ -11,6 +11,8 @@
 #include "core/world.h"
 #include "scene_load_error.h"
 #include "frames/scene_camera.h"
+#include "render/frame_scale.h"
+#include "render/hud_layout.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_run.h"
 #include "scene/usage_error.h"
@@ -226,7 +228,8 @@ TEST(SceneFile, ButtonsTheSceneDoesNotHaveAreRejectedBeforeTheRun) {
   }
 }
 
-TEST(SceneFile, AFollowingCameraKeepsTheNamedBodyAtTheImageCentre) {
+// The centre of the space the HUD band (top) and the legend band (bottom) leave free.
+TEST(SceneFile, AFollowingCameraKeepsTheNamedBodyInTheMiddleBetweenTheBands) {
   const Scene scene = parse_scene(
       R"({"bodies": [{"type": "static", "shape": {"type": "box", "half_extents": [5, 0.5]},
                       "position": [0, -1], "material": "Static"},
@@ -244,8 +247,10 @@ TEST(SceneFile, AFollowingCameraKeepsTheNamedBodyAtTheImageCentre) {
   EXPECT_EQ(*run.followed_position(), ball);
   const render::Camera followed = frame_camera(camera, run);
   const vec2 pixel = followed.world_to_pixel(ball);
+  const render::PanelBands bands = render::panel_bands(render::frame_scale(200, 100));
+  EXPECT_GT(bands.top, 0.0f);
   EXPECT_NEAR(pixel.x, 100.0f, 1e-3f);
-  EXPECT_NEAR(pixel.y, 50.0f, 1e-3f);
+  EXPECT_NEAR(pixel.y, bands.top + (100.0f - bands.top - bands.bottom) / 2.0f, 1e-3f);
   EXPECT_FLOAT_EQ(followed.pixels_per_metre(), 20.0f);
 }
 

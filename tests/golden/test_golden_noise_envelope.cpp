@@ -99,7 +99,7 @@ TEST(NoiseEnvelope, InsideALargeEnvelopeIsCannotTellNamingTheStepItStopsTelling)
   EXPECT_NE(text.find("from step 10, and a frame at step 5 or earlier still tells"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("bound 0.01 m"), std::string::npos) << text;
+  EXPECT_NE(text.find("the bound within which a change is called noise is 0.01 m"), std::string::npos) << text;
 
   // A move within the bound, inside an envelope within it too, is noise.
   envelope.bodies[0].distance = 0.004;
