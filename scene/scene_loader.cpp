@@ -36,7 +36,10 @@ WorldSettings read_settings(const JsonCursor& node) {
                    "restitution_threshold", "friction_mixing", "restitution_mixing", "integrator",
                    "broad_phase", "sleep_linear_speed", "sleep_angular_speed", "time_to_sleep",
                    "max_linear_speed", "contact_hertz", "contact_damping_ratio",
-                   "contact_push_max_speed", "speculative_margin", "contact_recycle_distance"});
+                   "contact_push_max_speed", "speculative_margin", "contact_recycle_distance",
+                   "hit_event_speed"});
+  // ("hit_event_speed" is the world's hit-event threshold, not a WorldSettings field: the
+  // caller reads it.)
   // A named solver starts from its own sub-steps and passes (`settings_for`).
   WorldSettings settings;
   if (auto field = node.optional_field("solver")) {
@@ -285,7 +288,7 @@ ReadShape read_shape(const JsonCursor& node) {
 BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   node.allow_only({"name", "type", "shape", "position", "angle", "velocity", "angular_velocity",
                    "gravity_scale", "linear_damping", "angular_damping", "fixed_rotation", "bullet",
-                   "layers", "material", "one_way"});
+                   "layers", "material", "one_way", "sensor", "sensor_detects_static", "events"});
   BodySpawn body;
   BodyDef& def = body.def;
   if (auto field = node.optional_field("type")) {
@@ -329,6 +332,18 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   }
   if (auto field = node.optional_field("layers")) {
     def.collision_layers = static_cast<std::uint32_t>(field->integer(0, 0xFFFFFFFFll));
+  }
+  if (auto field = node.optional_field("sensor")) def.is_sensor = field->boolean();
+  if (auto field = node.optional_field("sensor_detects_static")) {
+    if (!def.is_sensor) field->fail("only a sensor detects bodies: add \"sensor\": true");
+    def.sensor_detects_static = field->boolean();
+  }
+  if (auto events = node.optional_field("events")) {
+    events->expect_object();
+    events->allow_only({"contact", "hit", "sensor"});
+    if (auto field = events->optional_field("contact")) def.enable_contact_events = field->boolean();
+    if (auto field = events->optional_field("hit")) def.enable_hit_events = field->boolean();
+    if (auto field = events->optional_field("sensor")) def.enable_sensor_events = field->boolean();
   }
   def.material = table.at("Wood");
   if (auto field = node.optional_field("material"))
@@ -499,7 +514,13 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   scene.description = "scene file " + file;
   if (auto field = root.optional_field("description")) scene.description = field->string();
   if (auto field = root.optional_field("caption")) scene.view.caption = field->string();
-  if (auto field = root.optional_field("settings")) scene.settings = read_settings(*field);
+  std::optional<float> hit_event_speed;
+  if (auto field = root.optional_field("settings")) {
+    scene.settings = read_settings(*field);
+    if (auto speed = field->optional_field("hit_event_speed")) {
+      hit_event_speed = speed->non_negative();  // (finite: every JSON number read is)
+    }
+  }
 
   MaterialTable table;
   for (const Material& material : materials::all()) table[material.name] = material;
@@ -765,7 +786,8 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   }
 
   for (const auto& [name, index] : names) scene.body_names[index] = name;
-  scene.build = [bodies](World& world, const Params&) {
+  scene.build = [bodies, hit_event_speed](World& world, const Params&) {
+    if (hit_event_speed) world.set_hit_event_threshold(*hit_event_speed);
     for (const BodySpawn& body : bodies) world.create_body(body.def, body.shape);
   };
   return scene;
