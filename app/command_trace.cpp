@@ -1,10 +1,13 @@
 /// @file command_trace.cpp
-/// `impulse2d trace`: per-step body states of a run as CSV or JSON.
+/// `impulse2d trace`: per-step body states (or, with --events, contact and sensor events) of a
+/// run as CSV or JSON; --save-state / --load-state save the world after the run and start it
+/// from a saved one.
 #include <CLI/CLI.hpp>
 #include <memory>
 
 #include "app/command.h"
 #include "app/scene_command.h"
+#include "app/state_file.h"
 #include "app/strict_number_check.h"
 #include "scene/run_limits.h"
 #include "scene/trace_writer.h"
@@ -18,6 +21,9 @@ struct TraceArguments {
   SceneArguments scene;        ///< what to run (the scene's length unless steps is given)
   std::int64_t every = 1;      ///< sample every k-th step
   std::string format = "csv";  ///< csv or json
+  bool events = false;         ///< print events instead of body states
+  std::string save_state;      ///< file to write the world to after the run, or empty
+  std::string load_state;      ///< file to start the world from, or empty
 };
 
 /// A trace, checked and ready: what `trace_scene` runs and `print_trace_plan` shows.
@@ -26,7 +32,9 @@ struct TraceJob {
   TraceFormat format = TraceFormat::Csv;  ///< csv or json
   std::int64_t samples = 0;               ///< steps printed: 0, k, 2k, ... and the last
   std::int64_t moving = 0;                ///< bodies that are not static, one row each
-  std::unique_ptr<SceneRun> run;          ///< the run, built and not yet stepped
+  std::unique_ptr<SceneRun> run;          ///< the run, built (and loaded), not yet stepped
+  std::uint64_t fingerprint = 0;          ///< the scene's, for --save-state
+  std::int64_t first_step = 0;            ///< the run's step count before it runs
 };
 
 /// Every check a trace makes before any work; the run and --dry-run both start here. Throws
@@ -43,6 +51,9 @@ TraceJob prepare_trace(const TraceArguments& arguments) {
     throw UsageError("--every " + std::to_string(arguments.every) + ": must be at least 1");
   }
   job.run = start_run(job.resolved, arguments.scene);
+  job.fingerprint = scene_fingerprint(*job.run);
+  if (!arguments.load_state.empty()) load_state_file(arguments.load_state, *job.run);
+  job.first_step = job.run->step_count();
   for (const BodyId id : job.run->world().body_ids()) {
     job.moving += job.run->world().body(id).type == BodyType::Static ? 0 : 1;
   }
@@ -65,17 +76,28 @@ void print_trace_plan(const TraceJob& job, const TraceArguments& arguments, std:
   out << "dry run: trace " << job.resolved.scene.name << " (" << job.resolved.scene.source << ")\n"
       << "  parameters: "
       << (job.resolved.params.specs().empty() ? "none" : job.resolved.params.summary()) << "\n"
-      << "  steps: 0.." << job.resolved.steps << ", every " << arguments.every << ": "
+      << "  steps: " << job.first_step << ".." << job.first_step + job.resolved.steps << ", every " << arguments.every << ": "
       << job.samples << " samples of the moving bodies (" << job.moving << " at the start)\n"
       << "  writes: " << (job.format == TraceFormat::Json ? "JSON" : "CSV")
-      << " to standard output\n"
+      << (arguments.events ? " events" : "") << " to standard output"
+      << (arguments.save_state.empty() ? "" : ", the world after the run to " + arguments.save_state)
+      << "\n"
       << "nothing was run or written\n";
 }
 
 /// Writes the trace of `job` to `out`.
-void trace_scene(TraceJob& job, std::int64_t every, std::ostream& out) {
-  const std::string text = trace_run(*job.run, job.resolved.steps, every, job.format);
+void trace_scene(TraceJob& job, const TraceArguments& arguments, std::ostream& out) {
+  const std::int64_t last = job.first_step + job.resolved.steps;
+  std::string text;
+  if (arguments.events) {
+    text = trace_events(*job.run, last, job.format);
+  } else {
+    // (From a saved state at step s the samples are the multiples of k from s on and the
+    // last: the rows a run from step 0 prints for those steps, bit for bit.)
+    text = trace_run(*job.run, last, arguments.every, job.format);
+  }
   warn_divergences(*job.run);
+  if (!arguments.save_state.empty()) save_state_file(arguments.save_state, *job.run, job.fingerprint);
   out << text;
 }
 
@@ -92,13 +114,21 @@ Command add_trace_command(CLI::App& program, const ProgramOptions&) {
       ->capture_default_str()
       ->check(whole_number_check());
   command->add_option("--format", trace->format, "csv or json")->capture_default_str();
+  command->add_flag("--events", trace->events,
+                    "print contact and sensor events "
+                    "(step,kind,shape_a,shape_b,body_a,body_b,x,y,nx,ny,speed) instead of body states");
+  command->add_option("--save-state", trace->save_state,
+                      "write the world after the run to this file (for --load-state)");
+  command->add_option("--load-state", trace->load_state,
+                      "start from a world saved by --save-state of the same scene; --steps "
+                      "counts the steps after it");
 
   Command result;
   result.parser = command;
   result.dry_run = [trace](std::ostream& out) { print_trace_plan(prepare_trace(*trace), *trace, out); };
   result.run = [trace](std::ostream& out) {
     TraceJob job = prepare_trace(*trace);
-    trace_scene(job, trace->every, out);
+    trace_scene(job, *trace, out);
     return 0;
   };
   return result;

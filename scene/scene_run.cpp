@@ -169,6 +169,32 @@ void SceneRun::apply_event(const SceneEvent& event) {
   }
 }
 
+void SceneRun::restore_snapshot(const std::vector<std::uint8_t>& snapshot) {
+  if (script_) {
+    throw UsageError("scene " + scene_.name +
+                     " runs a script whose state a snapshot does not hold; it cannot start "
+                     "from a saved state");
+  }
+  World restored(world_.settings());
+  restored.restore_snapshot(snapshot);  // throws Error, leaving this run as it was
+  const std::int64_t step = restored.step_count();
+  std::size_t next = 0;
+  for (; next < events_.size() && events_[next]->step < step; ++next) {
+    const SceneEvent& event = *events_[next];
+    const bool done = event.kind == SceneEventKind::Impulse ||
+                      (event.kind == SceneEventKind::Force && event.step + event.steps <= step);
+    if (!done) {
+      throw UsageError(scene_.source + ": " + event.origin + " (step " +
+                       std::to_string(event.step) + ") comes before the saved state's step " +
+                       std::to_string(step) +
+                       "; only impulses and finished forces can be resumed from a saved state");
+    }
+  }
+  world_.restore_snapshot(snapshot);
+  next_event_ = next;
+  forces_.clear();
+}
+
 void SceneRun::step() {
   const std::int64_t step = world_.step_count();
   bool changed = false;

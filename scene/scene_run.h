@@ -48,6 +48,14 @@ class SceneRun {
   /// `Interrupted` when SIGINT, SIGTERM or SIGHUP arrived.
   void step();
 
+  /// Continues this run from `snapshot` (`World::save_snapshot` of a run of the same scene):
+  /// the world takes its state, and the scene's events before its step are taken as done.
+  /// Throws `UsageError` when the run could not continue from it exactly: the scene has a
+  /// script, or events before that step that leave state outside the world (spawns, removals,
+  /// joints, buttons, mouse targets, forces still acting). Throws `Error` for a snapshot the
+  /// core refuses (the world then keeps its state).
+  void restore_snapshot(const std::vector<std::uint8_t>& snapshot);
+
   /// With `strict`, `step` throws `std::runtime_error` naming the first body that diverges
   /// (the command line's `--strict`); without, divergences are only recorded.
   void set_strict(bool strict) { strict_ = strict; }

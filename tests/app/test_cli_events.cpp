@@ -1,0 +1,191 @@
+// `impulse2d trace --events`, `--save-state` and `--load-state` run as a subprocess (issue 32).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Output {
+  int exit = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// Runs `impulse2d <args>` in `folder` (args are shell words).
+Output run_cli(const fs::path& folder, const std::string& args) {
+  const std::string command = "cd '" + folder.string() + "' && '" IMPULSE2D_CLI "' " + args +
+                              " > stdout.txt 2> stderr.txt";
+  const int status = std::system(command.c_str());
+  Output result;
+  result.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = slurp(folder / "stdout.txt");
+  result.err = slurp(folder / "stderr.txt");
+  return result;
+}
+
+fs::path fresh_folder(const std::string& name) {
+  const fs::path folder = fs::temp_directory_path() /
+                          ("impulse2d_events_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  for (const char c : line) {
+    if (c == ',') {
+      fields.push_back(field);
+      field.clear();
+    } else {
+      field += c;
+    }
+  }
+  fields.push_back(field);
+  return fields;
+}
+
+/// A ball (radius 0.5, its bottom `drop` m above the ground) falling onto static ground.
+std::string drop_scene(double drop) {
+  return R"({"name": "drop", "settings": {"gravity": [0, -10], "time_step": 0.0166666675,
+    "hit_event_speed": 1.0},
+    "bodies": [
+      {"name": "ground", "type": "static", "shape": {"type": "box", "half_extents": [10, 0.5]},
+       "position": [0, -0.5]},
+      {"name": "ball", "shape": {"type": "circle", "radius": 0.5}, "position": [0, )" +
+         std::to_string(drop + 0.5) + R"(], "material": "Rock", "events": {"hit": true}}],
+    "run": {"steps": 120}})";
+}
+
+}  // namespace
+
+TEST(TraceEvents, ABallDroppedOnTheGroundBeginsTouchingAndHitsOnceAtTheSameStep) {
+  const fs::path folder = fresh_folder("drop");
+  const double drop = 5.0, gravity = 10.0;
+  std::ofstream(folder / "drop.json") << drop_scene(drop);
+  const Output result = run_cli(folder, "trace drop.json --events --steps 75");
+  ASSERT_EQ(result.exit, 0) << result.err;
+  const std::vector<std::string> lines = lines_of(result.out);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0], "step,kind,shape_a,shape_b,body_a,body_b,x,y,nx,ny,speed");
+  int begins = 0, hits = 0;
+  std::string begin_step, hit_step;
+  double speed = 0.0;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const std::vector<std::string> fields = fields_of(lines[i]);
+    ASSERT_EQ(fields.size(), 11u) << lines[i];
+    if (fields[1] == "begin_touch") {
+      ++begins;
+      begin_step = fields[0];
+      EXPECT_EQ(fields[4], "0");
+      EXPECT_EQ(fields[5], "1");
+      EXPECT_EQ(fields[6], "") << "a begin has no point";
+    } else if (fields[1] == "hit") {
+      ++hits;
+      hit_step = fields[0];
+      EXPECT_EQ(fields[4], "0");
+      EXPECT_EQ(fields[5], "1");
+      EXPECT_NEAR(std::stod(fields[9]), 1.0, 1e-6) << "normal from the ground (A) up to the ball";
+      speed = std::stod(fields[10]);
+    }
+  }
+  EXPECT_EQ(begins, 1) << result.out;
+  EXPECT_EQ(hits, 1) << result.out;
+  EXPECT_EQ(begin_step, hit_step);
+  const double expected = std::sqrt(2.0 * gravity * drop);
+  EXPECT_NEAR(speed, expected, 0.01 * expected);
+
+  // The same events as JSON.
+  const Output json = run_cli(folder, "trace drop.json --events --steps 75 --format json");
+  ASSERT_EQ(json.exit, 0) << json.err;
+  const nlohmann::json document = nlohmann::json::parse(json.out);
+  int json_hits = 0;
+  for (const nlohmann::json& event : document.at("events")) {
+    if (event.at("kind") == "hit") {
+      ++json_hits;
+      EXPECT_EQ(std::to_string(event.at("step").get<int>()), hit_step);
+      EXPECT_FLOAT_EQ(event.at("speed").get<float>(), static_cast<float>(speed));
+    } else {
+      EXPECT_FALSE(event.contains("x")) << event.dump();
+    }
+  }
+  EXPECT_EQ(json_hits, 1);
+  fs::remove_all(folder);
+}
+
+TEST(TraceState, SavingAfterNStepsAndLoadingForNMoreEqualsTwoNSteps) {
+  const fs::path folder = fresh_folder("state");
+  for (const std::string scene : {"pyramid", "drop.json"}) {
+    std::ofstream(folder / "drop.json") << drop_scene(1.0);
+    const Output whole = run_cli(folder, "trace " + scene + " --steps 80");
+    ASSERT_EQ(whole.exit, 0) << whole.err;
+    const Output first = run_cli(folder, "trace " + scene + " --steps 40 --save-state s.state");
+    ASSERT_EQ(first.exit, 0) << first.err;
+    ASSERT_TRUE(fs::exists(folder / "s.state"));
+    const Output second = run_cli(folder, "trace " + scene + " --steps 40 --load-state s.state");
+    ASSERT_EQ(second.exit, 0) << second.err;
+    // Every row of the resumed run (steps 40..80) is the whole run's row, bit for bit.
+    const std::vector<std::string> all = lines_of(whole.out), resumed = lines_of(second.out);
+    ASSERT_GT(resumed.size(), 2u);
+    ASSERT_LE(resumed.size(), all.size());
+    for (std::size_t i = 1; i <= resumed.size() - 1; ++i) {
+      EXPECT_EQ(resumed[resumed.size() - i], all[all.size() - i]) << scene;
+    }
+    EXPECT_EQ(fields_of(resumed[1])[0], "40");
+  }
+  fs::remove_all(folder);
+}
+
+TEST(TraceState, AStateOfAnotherSceneOrACorruptFileIsRefusedWithExitTwo) {
+  const fs::path folder = fresh_folder("refuse");
+  ASSERT_EQ(run_cli(folder, "trace pyramid --steps 5 --save-state p.state").exit, 0);
+  const Output other = run_cli(folder, "trace ball_pit --steps 5 --load-state p.state");
+  EXPECT_EQ(other.exit, 2);
+  EXPECT_NE(other.err.find("p.state"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("pyramid"), std::string::npos) << other.err;
+
+  std::string bytes = slurp(folder / "p.state");
+  ASSERT_GT(bytes.size(), 100u);
+  for (const std::size_t at : {std::size_t{8}, std::size_t{12}, std::size_t{40}, bytes.size() / 2, bytes.size() - 1}) {
+    std::string changed = bytes;
+    changed[at] = static_cast<char>(changed[at] ^ 0x5a);
+    std::ofstream(folder / "bad.state", std::ios::binary) << changed;
+    const Output bad = run_cli(folder, "trace pyramid --steps 5 --load-state bad.state");
+    EXPECT_EQ(bad.exit, 2) << "byte " << at << ": " << bad.err;
+    EXPECT_NE(bad.err.find("bad.state"), std::string::npos) << bad.err;
+  }
+  std::ofstream(folder / "short.state", std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  const Output truncated = run_cli(folder, "trace pyramid --steps 5 --load-state short.state");
+  EXPECT_EQ(truncated.exit, 2);
+  EXPECT_NE(truncated.err.find("short.state"), std::string::npos) << truncated.err;
+  const Output missing = run_cli(folder, "trace pyramid --steps 5 --load-state nowhere.state");
+  EXPECT_EQ(missing.exit, 2);
+  EXPECT_NE(missing.err.find("nowhere.state"), std::string::npos) << missing.err;
+  fs::remove_all(folder);
+}
