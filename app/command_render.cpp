@@ -9,6 +9,7 @@
 
 #include "app/command.h"
 #include "app/scene_command.h"
+#include "app/state_file.h"
 #include "app/strict_number_check.h"
 #include "app/view_options.h"
 #include "demos/scene_registry.h"
@@ -45,6 +46,7 @@ struct RenderArguments {
   bool quiet = false;                   ///< no progress and no summary line
   ViewArguments view;                   ///< HUD, legend, scales, camera, highlight
   bool html = false;                    ///< also write the browser viewer `<scene>.html`
+  std::string load_state;               ///< start from a world saved by trace --save-state
 };
 
 /// Creates the folder the video goes into when it is missing (with --no-frames nothing else
@@ -127,6 +129,7 @@ RenderJob prepare_render(const RenderArguments& arguments) {
   }
 
   job.run = start_run(resolved, arguments.scene);
+  if (!arguments.load_state.empty()) load_state_file(arguments.load_state, *job.run);
   check_trails(options.trails, *job.run, "--trails");
   check_view_bodies(arguments.view, *job.run);
   check_camera(arguments.view, *job.run, options.width, options.height);
@@ -270,6 +273,9 @@ Command add_render_command(CLI::App& program, ProgramOptions& options) {
                     "also write <scene>.html beside the frames: a viewer for the browser "
                     "(scrubber, play/pause, step/time/energy/contacts, timeline) with an "
                     "overlay switch pre-rendered into <scene>.overlays/");
+  command->add_option("--load-state", render->load_state,
+                      "start from a world saved by `trace --save-state` of the same scene (frame "
+                      "steps stay the run's own: frames before the saved step show it as saved)");
   command->add_flag("--clean", render->clean,
                     "replace frames of the same scene already in the output directory "
                     "(without it they are an error); done only when the run succeeds");
