@@ -11,14 +11,14 @@ seconds="${1:-60}"
 build_dir="${2:-build-asan}"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/sanitizer_suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-if [ ! -x "$build_dir/tests/fuzz/fuzz_scene_loader" ]; then
+if [ ! -x "$build_dir/tests/fuzz/fuzz_restore_snapshot" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" -DCMAKE_C_FLAGS_RELEASE="-O1 -gline-tables-only" \
     -DIMPULSE2D_SANITIZE=ON -DIMPULSE2D_FUZZ=ON >/dev/null
-  cmake --build "$build_dir" -j "$(nproc)" --target fuzz_scene_loader fuzz_narrow_phase
+  cmake --build "$build_dir" -j "$(nproc)" --target fuzz_scene_loader fuzz_narrow_phase fuzz_restore_snapshot
 fi
 status=0
-for target in fuzz_scene_loader fuzz_narrow_phase; do
+for target in fuzz_scene_loader fuzz_narrow_phase fuzz_restore_snapshot; do
   name="${target#fuzz_}"
   binary="$build_dir/tests/fuzz/$target"
   # Earlier crashes first: each must now pass.
