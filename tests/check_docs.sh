@@ -154,7 +154,8 @@ for ((i = 0; i < ${#dry_run_only[@]}; i += 2)); do
 done
 [ "$real" -gt 0 ] || fail "found no impulse2d command to run in the pages' sh blocks"
 
-# Local links and images: [text](path) and ![alt](path), relative to the page.
+# Local links and images: [text](path) and ![alt](path), relative to the page, outside fenced
+# code blocks (where `[&](BodyId id)` is a lambda, not a link).
 links=0
 for page in "${pages[@]}"; do
   page_dir=$(dirname "$page")
@@ -166,7 +167,8 @@ for page in "${pages[@]}"; do
     links=$((links + 1))
     path="${target%%#*}"
     [ -e "$page_dir/$path" ] || fail "${page#$source_dir/}: the link '$target' leads nowhere"
-  done < <(grep -o '\]([^)]*)' "$page" | sed 's/^](//; s/)$//; s/ .*$//')
+  done < <(awk '/^```/ { fenced = !fenced; next } !fenced' "$page" | grep -o '\]([^)]*)' |
+    sed 's/^](//; s/)$//; s/ .*$//')
 done
 
 # The README fits on a few screens, and its table of contents lists every section.
