@@ -1,24 +1,12 @@
 // Shape queries allocate nothing for a caller who passes a buffer (issue 32). Own binary: it
-// replaces the global operator new to count allocations.
+// counts allocations (tests/support/allocation_counter.cpp replaces the global operator new).
 #include "core/world.h"
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
+#include "tests/support/allocation_counter.h"
 
-namespace {
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;
-  throw std::bad_alloc();
-}
-void operator delete(void* memory) noexcept { std::free(memory); }
-void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
+using impulse2d::testing::allocation_count;
 
 using namespace impulse2d;
 
@@ -35,13 +23,13 @@ TEST(QueryAllocations, OverlapCastAndRayAllocateNothing) {
   const Shape circle = make_circle(0.2f);
   QueryFilter filter;
   filter.accept = [&buffer](BodyId id) { return id != buffer[0] || true; };
-  const long before = allocations.load();
+  const long before = allocation_count();
   int found = 0;
   for (int i = 0; i < 50; ++i) {
     found += world.overlap_shape(box, Transform{{5.0f, 5.0f}, Rotation{}}, buffer, 16, filter);
     found += world.cast_shape(circle, Transform{{-5.0f, 4.2f}, Rotation{}}, {40.0f, 0.0f}, filter).has_value();
     found += world.raycast_closest({-5.0f, 3.0f}, {40.0f, 0.0f}, filter).has_value();
   }
-  EXPECT_EQ(allocations.load() - before, 0);
+  EXPECT_EQ(allocation_count() - before, 0);
   EXPECT_GT(found, 0);
 }

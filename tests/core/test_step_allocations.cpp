@@ -1,24 +1,13 @@
 // The steady-state step allocates nothing: once buffers have grown to fit a scene, stepping
-// it reuses them (every solver method, every broad phase). Counted by replacing the global operator new for this test binary only.
+// it reuses them (every solver method, every broad phase). Counted by
+// tests/support/allocation_counter.cpp, compiled into this binary only.
 #include "core/world.h"
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
+#include "tests/support/allocation_counter.h"
 
-namespace {
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;
-  throw std::bad_alloc();
-}
-void operator delete(void* memory) noexcept { std::free(memory); }
-void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
+using impulse2d::testing::allocation_count;
 
 using namespace impulse2d;
 
@@ -46,9 +35,9 @@ void build_busy_scene(World& world) {
 }
 
 long allocations_during(World& world, int steps) {
-  const long before = allocations.load();
+  const long before = allocation_count();
   for (int i = 0; i < steps; ++i) world.step();
-  return allocations.load() - before;
+  return allocation_count() - before;
 }
 
 }  // namespace
@@ -75,8 +64,8 @@ TEST(StepAllocations, SteadyStateStepAllocatesNothing) {
 }
 
 TEST(StepAllocations, TheCounterSeesAllocations) {
-  const long before = allocations.load();
+  const long before = allocation_count();
   World world;
   world.create_body(BodyDef{}, make_circle(1.0f));
-  EXPECT_GT(allocations.load(), before);  // creating bodies grows the slot vectors
+  EXPECT_GT(allocation_count(), before);  // creating bodies grows the slot vectors
 }
