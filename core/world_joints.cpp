@@ -85,16 +85,59 @@ class JointCheck {
   const char* caller_;
 };
 
-template <class Def>
-Joint common(JointType type, const Def& def) {
-  Joint joint;
-  joint.type = type;
-  joint.body_a = def.body_a;
-  joint.body_b = def.body_b;
-  joint.collide_connected = def.collide_connected;
-  joint.user_data = def.user_data;
-  return joint;
-}
+// Checks a definition part by part (in the order of its fields) and fills the joint record.
+class JointBuilder {
+ public:
+  template <class Def>
+  JointBuilder(const WorldState& world, const char* caller, JointType type, const Def& def)
+      : check_(world, caller) {
+    check_.bodies(def.body_a, def.body_b);
+    joint_.type = type;
+    joint_.body_a = def.body_a;
+    joint_.body_b = def.body_b;
+    joint_.collide_connected = def.collide_connected;
+    joint_.user_data = def.user_data;
+  }
+
+  const JointCheck& check() const { return check_; }
+  Joint& joint() { return joint_; }
+
+  void anchors(vec2 local_anchor_a, vec2 local_anchor_b) {
+    check_.finite(local_anchor_a, "local_anchor_a");
+    check_.finite(local_anchor_b, "local_anchor_b");
+    joint_.local_anchor_a = local_anchor_a;
+    joint_.local_anchor_b = local_anchor_b;
+  }
+  void reference_angle(float angle) {
+    check_.finite(angle, "reference_angle");
+    joint_.reference_angle = angle;
+  }
+  void spring(bool enable, float hertz, float damping_ratio) {
+    check_.non_negative(hertz, "hertz");
+    check_.non_negative(damping_ratio, "damping_ratio");
+    joint_.enable_spring = enable;
+    joint_.hertz = hertz;
+    joint_.damping_ratio = damping_ratio;
+  }
+  void limit(bool enable, float lower, float upper, const char* names) {
+    check_.ordered(lower, upper, names);
+    joint_.enable_limit = enable;
+    joint_.lower = lower;
+    joint_.upper = upper;
+  }
+  void motor(bool enable, float speed, float max_motor, const char* max_name) {
+    check_.finite(speed, "motor_speed");
+    check_.non_negative(max_motor, max_name);
+    joint_.enable_motor = enable;
+    joint_.motor_speed = speed;
+    joint_.max_motor = max_motor;
+  }
+  void axis(vec2 local_axis_a) { joint_.local_axis_a = check_.unit(local_axis_a, "local_axis_a"); }
+
+ private:
+  JointCheck check_;
+  Joint joint_;
+};
 
 JointId add_joint(WorldState& world, Joint joint) {
   std::uint32_t index;
@@ -149,108 +192,55 @@ void WorldState::destroy_joints_of(BodyId id) {
 }
 
 JointId World::create_joint(const RevoluteJointDef& def) {
-  JointCheck check(*state_, "World::create_joint (revolute)");
-  check.bodies(def.body_a, def.body_b);
-  check.finite(def.local_anchor_a, "local_anchor_a");
-  check.finite(def.local_anchor_b, "local_anchor_b");
-  check.finite(def.reference_angle, "reference_angle");
-  check.non_negative(def.hertz, "hertz");
-  check.non_negative(def.damping_ratio, "damping_ratio");
-  check.ordered(def.lower_angle, def.upper_angle, "lower_angle/upper_angle");
-  check.finite(def.motor_speed, "motor_speed");
-  check.non_negative(def.max_motor_torque, "max_motor_torque");
-  Joint joint = common(JointType::Revolute, def);
-  joint.local_anchor_a = def.local_anchor_a;
-  joint.local_anchor_b = def.local_anchor_b;
-  joint.reference_angle = def.reference_angle;
-  joint.enable_spring = def.enable_spring;
-  joint.hertz = def.hertz;
-  joint.damping_ratio = def.damping_ratio;
-  joint.enable_limit = def.enable_limit;
-  joint.lower = def.lower_angle;
-  joint.upper = def.upper_angle;
-  joint.enable_motor = def.enable_motor;
-  joint.motor_speed = def.motor_speed;
-  joint.max_motor = def.max_motor_torque;
-  return add_joint(*state_, joint);
+  JointBuilder build(*state_, "World::create_joint (revolute)", JointType::Revolute, def);
+  build.anchors(def.local_anchor_a, def.local_anchor_b);
+  build.reference_angle(def.reference_angle);
+  build.spring(def.enable_spring, def.hertz, def.damping_ratio);
+  build.limit(def.enable_limit, def.lower_angle, def.upper_angle, "lower_angle/upper_angle");
+  build.motor(def.enable_motor, def.motor_speed, def.max_motor_torque, "max_motor_torque");
+  return add_joint(*state_, build.joint());
 }
 
 JointId World::create_joint(const PrismaticJointDef& def) {
-  JointCheck check(*state_, "World::create_joint (prismatic)");
-  check.bodies(def.body_a, def.body_b);
-  check.finite(def.local_anchor_a, "local_anchor_a");
-  check.finite(def.local_anchor_b, "local_anchor_b");
-  check.finite(def.reference_angle, "reference_angle");
-  check.non_negative(def.hertz, "hertz");
-  check.non_negative(def.damping_ratio, "damping_ratio");
-  check.ordered(def.lower_translation, def.upper_translation, "lower_translation/upper_translation");
-  check.finite(def.motor_speed, "motor_speed");
-  check.non_negative(def.max_motor_force, "max_motor_force");
-  Joint joint = common(JointType::Prismatic, def);
-  joint.local_anchor_a = def.local_anchor_a;
-  joint.local_anchor_b = def.local_anchor_b;
-  joint.local_axis_a = check.unit(def.local_axis_a, "local_axis_a");
-  joint.reference_angle = def.reference_angle;
-  joint.enable_spring = def.enable_spring;
-  joint.hertz = def.hertz;
-  joint.damping_ratio = def.damping_ratio;
-  joint.enable_limit = def.enable_limit;
-  joint.lower = def.lower_translation;
-  joint.upper = def.upper_translation;
-  joint.enable_motor = def.enable_motor;
-  joint.motor_speed = def.motor_speed;
-  joint.max_motor = def.max_motor_force;
-  return add_joint(*state_, joint);
+  JointBuilder build(*state_, "World::create_joint (prismatic)", JointType::Prismatic, def);
+  build.anchors(def.local_anchor_a, def.local_anchor_b);
+  build.reference_angle(def.reference_angle);
+  build.spring(def.enable_spring, def.hertz, def.damping_ratio);
+  build.limit(def.enable_limit, def.lower_translation, def.upper_translation,
+              "lower_translation/upper_translation");
+  build.motor(def.enable_motor, def.motor_speed, def.max_motor_force, "max_motor_force");
+  build.axis(def.local_axis_a);
+  return add_joint(*state_, build.joint());
 }
 
 JointId World::create_joint(const DistanceJointDef& def) {
-  JointCheck check(*state_, "World::create_joint (distance)");
-  check.bodies(def.body_a, def.body_b);
-  check.finite(def.local_anchor_a, "local_anchor_a");
-  check.finite(def.local_anchor_b, "local_anchor_b");
-  check.non_negative(def.length, "length");
-  check.non_negative(def.hertz, "hertz");
-  check.non_negative(def.damping_ratio, "damping_ratio");
-  check.non_negative(def.min_length, "min_length");
-  check.non_negative(def.max_length, "max_length");
-  check.ordered(def.min_length, def.max_length, "min_length/max_length");
-  check.finite(def.motor_speed, "motor_speed");
-  check.non_negative(def.max_motor_force, "max_motor_force");
-  Joint joint = common(JointType::Distance, def);
-  joint.local_anchor_a = def.local_anchor_a;
-  joint.local_anchor_b = def.local_anchor_b;
+  JointBuilder build(*state_, "World::create_joint (distance)", JointType::Distance, def);
+  build.anchors(def.local_anchor_a, def.local_anchor_b);
+  build.check().non_negative(def.length, "length");
+  build.spring(def.enable_spring, def.hertz, def.damping_ratio);
+  build.check().non_negative(def.min_length, "min_length");
+  build.check().non_negative(def.max_length, "max_length");
+  build.check().ordered(def.min_length, def.max_length, "min_length/max_length");
+  build.motor(def.enable_motor, def.motor_speed, def.max_motor_force, "max_motor_force");
+  Joint& joint = build.joint();
   joint.length = def.length;
-  joint.enable_spring = def.enable_spring;
-  joint.hertz = def.hertz;
-  joint.damping_ratio = def.damping_ratio;
   joint.enable_limit = def.enable_limit;
+  // No limit: a spring or free joint ranges freely; a rigid one holds the rest length.
   joint.min_length = def.enable_limit ? def.min_length : 0.0f;
-  joint.max_length = def.enable_limit ? def.max_length : 0.0f;
-  if (!def.enable_limit) {
-    // No limit: a spring or free joint ranges freely; a rigid one holds the rest length.
-    joint.min_length = 0.0f;
-    joint.max_length = 1e30f;
-  }
-  joint.enable_motor = def.enable_motor;
-  joint.motor_speed = def.motor_speed;
-  joint.max_motor = def.max_motor_force;
+  joint.max_length = def.enable_limit ? def.max_length : 1e30f;
   return add_joint(*state_, joint);
 }
 
 JointId World::create_joint(const WeldJointDef& def) {
-  JointCheck check(*state_, "World::create_joint (weld)");
-  check.bodies(def.body_a, def.body_b);
-  check.finite(def.local_anchor_a, "local_anchor_a");
-  check.finite(def.local_anchor_b, "local_anchor_b");
-  check.finite(def.reference_angle, "reference_angle");
+  JointBuilder build(*state_, "World::create_joint (weld)", JointType::Weld, def);
+  build.anchors(def.local_anchor_a, def.local_anchor_b);
+  build.reference_angle(def.reference_angle);
+  const JointCheck& check = build.check();
   check.non_negative(def.linear_hertz, "linear_hertz");
   check.non_negative(def.angular_hertz, "angular_hertz");
   check.non_negative(def.linear_damping_ratio, "linear_damping_ratio");
   check.non_negative(def.angular_damping_ratio, "angular_damping_ratio");
-  Joint joint = common(JointType::Weld, def);
-  joint.local_anchor_a = def.local_anchor_a;
-  joint.local_anchor_b = def.local_anchor_b;
-  joint.reference_angle = def.reference_angle;
+  Joint& joint = build.joint();
   joint.linear_hertz = def.linear_hertz;
   joint.angular_hertz = def.angular_hertz;
   joint.linear_damping_ratio = def.linear_damping_ratio;
@@ -259,34 +249,19 @@ JointId World::create_joint(const WeldJointDef& def) {
 }
 
 JointId World::create_joint(const WheelJointDef& def) {
-  JointCheck check(*state_, "World::create_joint (wheel)");
-  check.bodies(def.body_a, def.body_b);
-  check.finite(def.local_anchor_a, "local_anchor_a");
-  check.finite(def.local_anchor_b, "local_anchor_b");
-  check.non_negative(def.hertz, "hertz");
-  check.non_negative(def.damping_ratio, "damping_ratio");
-  check.ordered(def.lower_translation, def.upper_translation, "lower_translation/upper_translation");
-  check.finite(def.motor_speed, "motor_speed");
-  check.non_negative(def.max_motor_torque, "max_motor_torque");
-  Joint joint = common(JointType::Wheel, def);
-  joint.local_anchor_a = def.local_anchor_a;
-  joint.local_anchor_b = def.local_anchor_b;
-  joint.local_axis_a = check.unit(def.local_axis_a, "local_axis_a");
-  joint.enable_spring = def.enable_spring;
-  joint.hertz = def.hertz;
-  joint.damping_ratio = def.damping_ratio;
-  joint.enable_limit = def.enable_limit;
-  joint.lower = def.lower_translation;
-  joint.upper = def.upper_translation;
-  joint.enable_motor = def.enable_motor;
-  joint.motor_speed = def.motor_speed;
-  joint.max_motor = def.max_motor_torque;
-  return add_joint(*state_, joint);
+  JointBuilder build(*state_, "World::create_joint (wheel)", JointType::Wheel, def);
+  build.anchors(def.local_anchor_a, def.local_anchor_b);
+  build.spring(def.enable_spring, def.hertz, def.damping_ratio);
+  build.limit(def.enable_limit, def.lower_translation, def.upper_translation,
+              "lower_translation/upper_translation");
+  build.motor(def.enable_motor, def.motor_speed, def.max_motor_torque, "max_motor_torque");
+  build.axis(def.local_axis_a);
+  return add_joint(*state_, build.joint());
 }
 
 JointId World::create_joint(const MotorJointDef& def) {
-  JointCheck check(*state_, "World::create_joint (motor)");
-  check.bodies(def.body_a, def.body_b);
+  JointBuilder build(*state_, "World::create_joint (motor)", JointType::Motor, def);
+  const JointCheck& check = build.check();
   check.finite(def.linear_offset, "linear_offset");
   check.finite(def.angular_offset, "angular_offset");
   check.non_negative(def.max_force, "max_force");
@@ -295,7 +270,7 @@ JointId World::create_joint(const MotorJointDef& def) {
   if (def.correction_factor > 1.0f) {
     throw Error("World::create_joint (motor): correction_factor must be in [0, 1]");
   }
-  Joint joint = common(JointType::Motor, def);
+  Joint& joint = build.joint();
   joint.local_anchor_a = def.linear_offset;  // B's centre is driven to this point of A
   joint.reference_angle = def.angular_offset;
   joint.max_force = def.max_force;
@@ -305,15 +280,15 @@ JointId World::create_joint(const MotorJointDef& def) {
 }
 
 JointId World::create_joint(const MouseJointDef& def) {
-  JointCheck check(*state_, "World::create_joint (mouse)");
-  check.bodies(def.body_a, def.body_b);
+  JointBuilder build(*state_, "World::create_joint (mouse)", JointType::Mouse, def);
+  const JointCheck& check = build.check();
   check.finite(def.local_anchor_b, "local_anchor_b");
   check.finite(def.target, "target");
   check.non_negative(def.hertz, "hertz");
   if (!(def.hertz > 0.0f)) throw Error("World::create_joint (mouse): hertz must be > 0");
   check.non_negative(def.damping_ratio, "damping_ratio");
   check.non_negative(def.max_force, "max_force");
-  Joint joint = common(JointType::Mouse, def);
+  Joint& joint = build.joint();
   joint.local_anchor_b = def.local_anchor_b;
   joint.target = def.target;
   joint.hertz = def.hertz;

@@ -78,6 +78,38 @@ std::pair<float, float> read_limits(const JsonCursor& node, bool angles) {
   return {lower, upper};
 }
 
+// The optional "spring" of `node` into a definition with enable_spring, hertz, damping_ratio.
+template <class Def>
+void read_spring_part(const JsonCursor& node, Def& def) {
+  if (auto field = node.optional_field("spring")) {
+    const Spring spring = read_spring(*field);
+    def.enable_spring = true;
+    def.hertz = spring.hertz;
+    def.damping_ratio = spring.damping_ratio;
+  }
+}
+
+// The optional "motor" of `node` into a definition with enable_motor and motor_speed, and its
+// limit into `max` (torque or force, named `max_name` in the file).
+template <class Def>
+void read_motor_part(const JsonCursor& node, const char* max_name, Def& def, float& max) {
+  if (auto field = node.optional_field("motor")) {
+    const Motor motor = read_motor(*field, max_name);
+    def.enable_motor = true;
+    def.motor_speed = motor.speed;
+    max = motor.max;
+  }
+}
+
+// The optional "limits" of `node` into a definition with enable_limit and `lower`, `upper`.
+template <class Def>
+void read_limits_part(const JsonCursor& node, bool angles, Def& def, float& lower, float& upper) {
+  if (auto field = node.optional_field("limits")) {
+    std::tie(lower, upper) = read_limits(*field, angles);
+    def.enable_limit = true;
+  }
+}
+
 vec2 read_axis(const JsonCursor& node) {
   const vec2 axis = node.vector_at_most(1e4f, "a direction");
   if (!(axis.x != 0.0f || axis.y != 0.0f)) node.fail("the axis must not be zero");
@@ -197,43 +229,17 @@ JointSpec read_joint(const JsonCursor& node, const JointBodies& bodies, std::vec
   switch (spec.type) {
     case JointType::Revolute: {
       RevoluteJointDef& def = spec.revolute;
-      if (auto field = node.optional_field("limits")) {
-        std::tie(def.lower_angle, def.upper_angle) = read_limits(*field, true);
-        def.enable_limit = true;
-      }
-      if (auto field = node.optional_field("motor")) {
-        const Motor motor = read_motor(*field, "max_torque");
-        def.enable_motor = true;
-        def.motor_speed = motor.speed;
-        def.max_motor_torque = motor.max;
-      }
-      if (auto field = node.optional_field("spring")) {
-        const Spring spring = read_spring(*field);
-        def.enable_spring = true;
-        def.hertz = spring.hertz;
-        def.damping_ratio = spring.damping_ratio;
-      }
+      read_limits_part(node, true, def, def.lower_angle, def.upper_angle);
+      read_motor_part(node, "max_torque", def, def.max_motor_torque);
+      read_spring_part(node, def);
       break;
     }
     case JointType::Prismatic: {
       PrismaticJointDef& def = spec.prismatic;
       spec.axis = read_axis(node.field("axis"));
-      if (auto field = node.optional_field("limits")) {
-        std::tie(def.lower_translation, def.upper_translation) = read_limits(*field, false);
-        def.enable_limit = true;
-      }
-      if (auto field = node.optional_field("motor")) {
-        const Motor motor = read_motor(*field, "max_force");
-        def.enable_motor = true;
-        def.motor_speed = motor.speed;
-        def.max_motor_force = motor.max;
-      }
-      if (auto field = node.optional_field("spring")) {
-        const Spring spring = read_spring(*field);
-        def.enable_spring = true;
-        def.hertz = spring.hertz;
-        def.damping_ratio = spring.damping_ratio;
-      }
+      read_limits_part(node, false, def, def.lower_translation, def.upper_translation);
+      read_motor_part(node, "max_force", def, def.max_motor_force);
+      read_spring_part(node, def);
       break;
     }
     case JointType::Distance: {
@@ -255,18 +261,8 @@ JointSpec read_joint(const JsonCursor& node, const JointBodies& bodies, std::vec
                       " is below min_length " + compact_number(def.min_length));
         }
       }
-      if (auto field = node.optional_field("spring")) {
-        const Spring spring = read_spring(*field);
-        def.enable_spring = true;
-        def.hertz = spring.hertz;
-        def.damping_ratio = spring.damping_ratio;
-      }
-      if (auto field = node.optional_field("motor")) {
-        const Motor motor = read_motor(*field, "max_force");
-        def.enable_motor = true;
-        def.motor_speed = motor.speed;
-        def.max_motor_force = motor.max;
-      }
+      read_spring_part(node, def);
+      read_motor_part(node, "max_force", def, def.max_motor_force);
       break;
     }
     case JointType::Weld: {
@@ -280,22 +276,10 @@ JointSpec read_joint(const JsonCursor& node, const JointBodies& bodies, std::vec
     case JointType::Wheel: {
       WheelJointDef& def = spec.wheel;
       spec.axis = read_axis(node.field("axis"));
-      if (auto field = node.optional_field("limits")) {
-        std::tie(def.lower_translation, def.upper_translation) = read_limits(*field, false);
-        def.enable_limit = true;
-      }
-      if (auto field = node.optional_field("motor")) {
-        const Motor motor = read_motor(*field, "max_torque");
-        def.enable_motor = true;
-        def.motor_speed = motor.speed;
-        def.max_motor_torque = motor.max;
-      }
-      if (auto field = node.optional_field("spring")) {
-        const Spring spring = read_spring(*field);
-        def.enable_spring = spring.hertz > 0.0f;
-        def.hertz = spring.hertz;
-        def.damping_ratio = spring.damping_ratio;
-      }
+      read_limits_part(node, false, def, def.lower_translation, def.upper_translation);
+      read_motor_part(node, "max_torque", def, def.max_motor_torque);
+      read_spring_part(node, def);
+      def.enable_spring = def.enable_spring && def.hertz > 0.0f;  // "hertz": 0 is no suspension
       break;
     }
     case JointType::Motor: {
