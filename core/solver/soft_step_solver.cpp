@@ -11,6 +11,17 @@ namespace impulse2d {
 
 using namespace contact_detail;
 
+namespace {
+
+// Joint passes per velocity iteration (soft and relax). The joints' rigid parts are stiff (half
+// the sub-step rate, solver_context.cpp), and one Gauss-Seidel pass a sub-step leaves a chain's
+// joints fighting each other: at 120 Hz one pass lets a 20-link chain fly apart, four hold it
+// to 0.66 mm (1:100 load: 4.1 mm; eight passes change neither). Joints are few beside
+// contacts, so the passes cost little.
+constexpr int kJointPasses = 4;
+
+}  // namespace
+
 void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) const {
   const float h = context.substep;
   std::vector<Body>& bodies = stages.solver_bodies();
@@ -51,7 +62,9 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     if (context.warm_starting) wide.warm_start(states.states());
     joint_pass.use_bias = true;
     for (int i = 0; i < context.velocity_iterations; ++i) {
-      if (joints) solve_joints(joint_list, states.states(), joint_pass);
+      for (int pass = 0; joints && pass < kJointPasses; ++pass) {
+        solve_joints(joint_list, states.states(), joint_pass);
+      }
       wide.solve(context, /*use_bias=*/true, states.states());
     }
     if (shock) {
@@ -65,7 +78,9 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
     stages.integrate_solver_positions(h);
     joint_pass.use_bias = false;
     for (int i = 0; i < context.velocity_iterations; ++i) {
-      if (joints) solve_joints(joint_list, states.states(), joint_pass);
+      for (int pass = 0; joints && pass < kJointPasses; ++pass) {
+        solve_joints(joint_list, states.states(), joint_pass);
+      }
       wide.solve(context, /*use_bias=*/false, states.states());  // relax
     }
     if (may_bounce) {
