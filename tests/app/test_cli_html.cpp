@@ -158,7 +158,7 @@ TEST(HtmlViewer, OverlayVariantsAreNoneAndEachGroupAlone) {
 TEST(HtmlViewer, TextAndDataCannotBreakOutOfThePage) {
   impulse2d::demos::ViewerPage page;
   page.title = "a <b>title</b> & @FRAMES@";
-  page.frames.push_back({{0, 0, 0.0, "x</script><script>alert(1)</script>.png"}, 1.0, 0});
+  page.frames.push_back({{0, 0, 0.0, "x</script><script>alert(1)</script>.png"}, 1.0, 0, {}});
   const std::string html = impulse2d::demos::html_viewer_page(page);
   EXPECT_NE(html.find("a &lt;b&gt;title&lt;/b&gt; &amp; @FRAMES@"), std::string::npos);
   EXPECT_EQ(html.find("alert(1)</script>"), std::string::npos);
