@@ -36,6 +36,12 @@ enum DebugDrawFlag : std::uint32_t {
   /// direction, reaction-force arrows
   draw_joints = 1u << 12,
   draw_all = 0x1FFFu,                ///< everything above
+  /// events (events.h): touch begin (ring) and end (cross) where the pair touches, hits (a
+  /// burst scaled by the approach speed), sensor begin and end at the visitor's centre.
+  /// `World::draw` draws nothing for it: the renderer draws those of the steps since the last
+  /// frame (render/event_marks.h). Not in `draw_all`: contact events are on by default, so it
+  /// would add marks to frames drawn with `draw_all`.
+  draw_events = 1u << 13,
 };
 
 /// The colours of each drawn role; a renderer sets these per theme.
@@ -57,6 +63,10 @@ struct DebugPalette {
   Color label{0.0f, 0.0f, 0.0f, 1.0f};              ///< text
   Color joint{0.47f, 0.24f, 0.63f, 1.0f};           ///< joint anchors, lines, axes, limits, springs, motors
   Color joint_reaction{0.80f, 0.12f, 0.35f, 1.0f};  ///< joint reaction-force arrows
+  Color sensor_fill{0.94f, 0.89f, 0.26f, 0.35f};    ///< sensor bodies (see-through)
+  Color event_touch{0.00f, 0.47f, 0.47f, 1.0f};     ///< touch begin rings and end crosses
+  Color event_hit{0.75f, 0.00f, 0.00f, 1.0f};       ///< hit bursts
+  Color event_sensor{0.63f, 0.51f, 0.00f, 1.0f};    ///< sensor begin rings and end crosses
 };
 
 /// Options of one `World::draw` call.

@@ -33,7 +33,9 @@ struct ShapeId {
 /// step's gravity and forces) from the gap it had when the step began, would end it closer than
 /// `WorldSettings::slop` (or overlapping): resting, overlapping, or a speculative point the
 /// bodies close within the step (the solver then stops them at the surface). So the step of
-/// an impact is the step of its begin, and a bounce ends the touch the step it leaves. A body
+/// an impact is the step of its begin (or the next one, when the free motion ends the begin's
+/// step just short of the surface, within the slop), and a bounce ends the touch the step it
+/// leaves. A body
 /// falling asleep keeps its touches; a contact turned off by the contact filter does not touch.
 struct ContactBeginTouchEvent {
   ShapeId shape_a;  ///< shape of the body with the smaller slot
@@ -51,8 +53,13 @@ struct ContactEndTouchEvent {
   BodyId body_b;    ///< B's body
 };
 
-/// An impact: a touching pair whose bodies approached faster than
-/// `World::hit_event_threshold()` along the contact normal at one of its points.
+/// An impact: a pair whose bodies approach faster than `World::hit_event_threshold()` along the
+/// contact normal at a point the step must stop, one that moving freely from its gap would end
+/// the step inside the other body (Box2D v3 asks for a normal impulse at the point). A point
+/// that only closes its gap in a step (the speculative contact lets it reach the surface) is hit
+/// in the next step, where it is stopped, once; a corner still in the air while another point
+/// of the pair rests is not hit until it lands. A contact that keeps being driven in faster
+/// than the threshold is hit again, as in Box2D.
 struct ContactHitEvent {
   ShapeId shape_a;          ///< shape of the body with the smaller slot
   ShapeId shape_b;          ///< the other shape

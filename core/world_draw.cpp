@@ -15,6 +15,7 @@ namespace {
 
 Color fill_of(const Body& body, const DebugDrawOptions& options) {
   const DebugPalette& palette = options.palette;
+  if (body.is_sensor) return palette.sensor_fill;
   if (body.type == BodyType::Static) return palette.static_fill;
   if (body.type == BodyType::Kinematic) return palette.kinematic_fill;
   if (!body.awake && (options.flags & draw_sleeping)) return palette.sleeping_fill;

@@ -104,21 +104,26 @@ void collect_contact_events(WorldState& world) {
   std::swap(events.touching, next);
 }
 
+// A hit is an impact: a point approaching faster than the threshold that the step must stop,
+// because moving freely from its gap it would end the step inside the other body (the solver
+// pushes at it: Box2D v3 asks for a normal impulse at the point). A point that only closes its
+// gap within the step (the speculative contact lets it arrive at the surface) is hit in the
+// next step, when it is stopped, not twice; and a corner still in the air while another point
+// of the pair rests is not hit until it lands.
 void collect_hit_events(WorldState& world) {
   WorldEvents& events = world.events;
+  const float dt = world.settings.time_step;
   reserve_at_least(events.contact.hit, world.contacts.capacity());
   for (const Contact& contact : world.contacts) {
     const Body& a = world.bodies[contact.body_a.index];
     const Body& b = world.bodies[contact.body_b.index];
-    if (!(a.enable_hit_events || b.enable_hit_events) ||
-        !is_touching(events, contact, world.settings.slop, world.settings.time_step)) {
-      continue;
-    }
+    if (!(a.enable_hit_events || b.enable_hit_events) || !contact.enabled) continue;
     int fastest = -1;
     float fastest_speed = events.hit_event_threshold;
     for (int p = 0; p < contact.point_count; ++p) {
       const float approach = free_approach_speed(events, contact, contact.points[p]);
-      if (approach > fastest_speed) {
+      const float gap = -contact.points[p].depth;
+      if (approach > fastest_speed && gap - approach * dt < 0.0f) {
         fastest_speed = approach;
         fastest = p;
       }

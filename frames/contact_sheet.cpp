@@ -16,6 +16,7 @@
 #include "scene/run_limits.h"
 #include "frames/scene_camera.h"
 #include "frames/view_frame_options.h"
+#include "render/event_marks.h"
 #include "render/frame_renderer.h"
 #include "render/motion_trails.h"
 #include "image/png.h"
@@ -179,6 +180,10 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
     frame_options.trails = &trails;
     record_trails(options.trails, run.world(), trails);
   }
+  // A tile shows the events of the steps since the tile before it.
+  render::EventMarks events;
+  const bool record_events = (options.draw.flags & draw_events) != 0;
+  if (record_events) frame_options.events = &events;
 
   // Render every tile first (the simulation runs forward once), remembering its label.
   std::vector<render::Frame> frames;
@@ -187,12 +192,14 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
     while (run.step_count() < step) {
       run.step();
       if (!options.trails.empty()) record_trails(options.trails, run.world(), trails);
+      if (record_events) events.record(run.world(), run.step_count());
     }
     frame_options.show_legend = frames.empty() && run.scene().view.show_legend;  // on the first tile
     render::HudInfo hud;
     hud.step = step;
     update_view_frame(run, frame_options, hud);
     frames.push_back(tiles.render(run.world(), frame_camera(camera, run), frame_options, hud));
+    events.clear();
     labels.push_back(step_label(step, run.world().time()));
   }
 

@@ -22,6 +22,7 @@
 #include "scene/trace_writer.h"
 #include "frames/video_encoder.h"
 #include "frames/view_frame_options.h"
+#include "render/event_marks.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
 #include "render/motion_trails.h"
@@ -143,6 +144,10 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     frame_options.trails = &trails;
     record_trails(options.trails, run.world(), trails);
   }
+  // A frame shows the events of the steps since the frame before it.
+  render::EventMarks events;
+  const bool record_events = (options.draw.flags & draw_events) != 0;
+  if (record_events) frame_options.events = &events;
 
   FrameSequenceResult result;
   std::vector<FrameIndexRow> index;
@@ -151,6 +156,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
     while (run.step_count() < frame_step) {
       run.step();
       if (!options.trails.empty()) record_trails(options.trails, run.world(), trails);
+      if (record_events) events.record(run.world(), run.step_count());
     }
     check_interrupt();
     hud.step = frame_step;
@@ -170,7 +176,8 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
                                     file.filename().string()});
       if (html) {
         viewer.frames.push_back(ViewerFrame{index.back(), mechanical_energy(run.world()),
-                                            contact_count(run.world())});
+                                            contact_count(run.world()),
+                                            render::count_event_marks(events.marks())});
       }
       metadata.put(number, frame_metadata(scene_label, options.parameters, run.world(), fingerprint));
       writer->submit(number, std::move(frame));
@@ -182,6 +189,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
       renderer.render(run.world(), frame_camera(camera, run), variant_options, hud, variant_frame);
       variant_writers[i]->submit(number, std::move(variant_frame));
     }
+    events.clear();
     ++result.frame_count;
     frames_done = result.frame_count;
     if (progress) progress(result.frame_count);
@@ -199,6 +207,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
                      std::to_string(options.width) + "x" + std::to_string(options.height);
     viewer.width = options.width;
     viewer.height = options.height;
+    viewer.events = record_events;
     for (const std::unique_ptr<render::AsyncFrameWriter>& variant_writer : variant_writers) {
       variant_writer->finish();
     }

@@ -33,6 +33,7 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
               border: 1px solid #bbb; cursor: crosshair; }
   #legend { color: #555; margin-top: 4px; }
   .energy { color: #1f5fbf; } .contacts { color: #d2691e; }
+  .touch { color: #007878; } .hit { color: #be0000; } .sensor { color: #a08200; }
   #keys { color: #777; margin-top: 12px; }
   #overlays { border: 1px solid #bbb; margin: 8px 0; max-width: @WIDTH@px; }
   #overlays label { margin-right: 1em; white-space: nowrap; }
@@ -52,10 +53,12 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
   <span>time <b id="time"></b> s</span>
   <span class="energy">energy <b id="energy"></b> J</span>
   <span class="contacts">contacts <b id="contacts"></b></span>
+  <span id="events-readout" hidden>events <b id="events"></b></span>
 </div>
 <svg id="timeline" preserveAspectRatio="none" role="img" aria-label="energy and contacts over the run">
   <polyline id="energy-line" fill="none" stroke="#1f5fbf" stroke-width="1.5" vector-effect="non-scaling-stroke"/>
   <polyline id="contacts-line" fill="none" stroke="#d2691e" stroke-width="1.5" vector-effect="non-scaling-stroke"/>
+  <g id="event-ticks"></g>
   <line id="marker" y1="0" y2="1" stroke="#c00" stroke-width="2" vector-effect="non-scaling-stroke"/>
 </svg>
 <div id="legend"></div>
@@ -84,6 +87,13 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
 
   const number = (value, digits) => value === null ? 'n/a' : Number(value.toPrecision(digits)).toString();
 
+  function describeEvents(e) {
+    const parts = [[e.touch_begin, 'begin'], [e.touch_end, 'end'], [e.hit, 'hit'],
+                   [e.sensor_begin, 'sensor in'], [e.sensor_end, 'sensor out']]
+        .filter(([n]) => n > 0).map(([n, name]) => n + ' ' + name);
+    return parts.length > 0 ? parts.join(', ') : 'none';
+  }
+
   function show(n) {
     current = Math.max(0, Math.min(last, n));
     const f = frames[current];
@@ -95,6 +105,7 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
     byId('time').textContent = number(f.time, 6);
     byId('energy').textContent = number(f.energy, 6);
     byId('contacts').textContent = f.contacts;
+    if (f.events) byId('events').textContent = describeEvents(f.events);
     marker.setAttribute('x1', current);
     marker.setAttribute('x2', current);
     document.body.dataset.frame = current;
@@ -154,6 +165,33 @@ constexpr const char* page_template = R"html(<!DOCTYPE html>
   byId('legend').innerHTML = '<span class="energy">energy ' + number(energy[0], 4) + ' .. ' +
       number(energy[1], 4) + ' J</span> &nbsp; <span class="contacts">contacts ' + contacts[0] +
       ' .. ' + contacts[1] + '</span>';
+  // With the events overlay: one tick per frame with events of each kind, in three rows at the
+  // top (touch begin or end, hit, sensor begin or end), and the frame's events in the readout.
+  if (frames.length > 0 && frames[0].events) {
+    byId('events-readout').hidden = false;
+    const rows = [['touch', '#007878', (e) => e.touch_begin + e.touch_end],
+                  ['hit', '#be0000', (e) => e.hit],
+                  ['sensor', '#a08200', (e) => e.sensor_begin + e.sensor_end]];
+    const ticks = byId('event-ticks'), totals = [0, 0, 0];
+    frames.forEach((f, i) => {
+      rows.forEach(([, colour, count], row) => {
+        const n = count(f.events);
+        if (n === 0) return;
+        totals[row] += n;
+        const tick = document.createElementNS(timeline.namespaceURI, 'line');
+        tick.setAttribute('x1', i);
+        tick.setAttribute('x2', i);
+        tick.setAttribute('y1', 0.02 + 0.1 * row);
+        tick.setAttribute('y2', 0.1 + 0.1 * row);
+        tick.setAttribute('stroke', colour);
+        tick.setAttribute('stroke-width', '2');
+        tick.setAttribute('vector-effect', 'non-scaling-stroke');
+        ticks.append(tick);
+      });
+    });
+    byId('legend').innerHTML += ' &nbsp; events (ticks): ' + rows.map(([name], row) =>
+        '<span class="' + name + '">' + name + ' ' + totals[row] + '</span>').join(' &nbsp; ');
+  }
 
   timeline.addEventListener('click', (event) => {
     const box = timeline.getBoundingClientRect();
@@ -222,12 +260,18 @@ std::string fill_template(const std::vector<std::pair<std::string, std::string>>
 std::string page_data_json(const ViewerPage& page) {
   nlohmann::json frames = nlohmann::json::array();
   for (const ViewerFrame& frame : page.frames) {
-    frames.push_back({{"frame", frame.index.frame},
-                     {"step", frame.index.step},
-                     {"time", frame.index.time},
-                     {"energy", frame.energy},  // a non-finite energy becomes null
-                     {"contacts", frame.contacts},
-                     {"file", frame.index.file}});
+    nlohmann::json row = {{"frame", frame.index.frame},
+                          {"step", frame.index.step},
+                          {"time", frame.index.time},
+                          {"energy", frame.energy},  // a non-finite energy becomes null
+                          {"contacts", frame.contacts},
+                          {"file", frame.index.file}};
+    if (page.events) {
+      row["events"] = {{"touch_begin", frame.events.touch_begin}, {"touch_end", frame.events.touch_end},
+                       {"hit", frame.events.hit}, {"sensor_begin", frame.events.sensor_begin},
+                       {"sensor_end", frame.events.sensor_end}};
+    }
+    frames.push_back(row);
   }
   nlohmann::json variants = nlohmann::json::array();
   for (const ViewerVariant& variant : page.variants) {

@@ -2,6 +2,7 @@
 #include "render/frame_renderer.h"
 
 #include "core/world.h"
+#include "render/event_marks.h"
 #include "render/joint_overlay.h"
 #include "render/motion_trails.h"
 #include "render/offscreen_context.h"
@@ -22,6 +23,13 @@ PrimitiveStyle scaled_style(PrimitiveStyle style, int scale) {
   style.label_scale *= scale;
   style.point_scale *= s;
   return style;
+}
+
+// The events a frame drawn with `options` shows: those recorded since the last frame, else
+// the world's last step's.
+std::vector<EventMark> frame_event_marks(const World& world, const FrameOptions& options, std::int64_t step) {
+  if ((options.draw.flags & draw_events) == 0) return {};
+  return options.events != nullptr ? options.events->marks() : last_step_event_marks(world, step);
 }
 
 }  // namespace
@@ -46,6 +54,9 @@ HudLayout frame_hud_layout(const World& world, const Camera& camera, const Frame
     const std::uint32_t drawn = drawn_overlay_flags(world, draw_options.flags);
     const bool trails_on = options.trails != nullptr && !options.trails->empty();
     entries = legend_entries(draw_options, drawn, trails_on, palette.trail);
+    for (LegendEntry& entry : event_legend_entries(frame_event_marks(world, options, hud.step), palette.debug)) {
+      entries.push_back(std::move(entry));
+    }
     if (options.islands) entries.push_back({island_color(0), "island"});
     if (options.contacts.feature_ids && !world.contacts().empty()) entries.push_back({palette.debug.label, "feature id"});
     if (options.highlight) entries.push_back({highlight_color, "highlight"});
@@ -124,6 +135,11 @@ void FrameRenderer::render(const World& world, const Camera& camera, const Frame
   primitives_->next_layer();
   if ((draw_options.flags & draw_joints) && world.joint_count() > 0) {
     draw_joints_overlay(*primitives_, world, draw_options, options.contacts.max_arrow_pixels * static_cast<float>(scale));
+    primitives_->next_layer();
+  }
+  const std::vector<EventMark> events = frame_event_marks(world, options, hud.step);
+  if (!events.empty()) {
+    draw_event_marks(*primitives_, events, palette.debug, draw_options.velocity_scale, scale);
     primitives_->next_layer();
   }
   if (draw_options.flags & draw_body_ids) draw_body_labels(*primitives_, world, draw_options, options.body_labels);

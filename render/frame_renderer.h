@@ -37,6 +37,7 @@ namespace impulse2d::render {
 
 class OffscreenContext;
 class MotionTrails;
+class EventMarks;
 
 /// How a frame looks, besides the camera.
 struct FrameOptions {
@@ -59,6 +60,9 @@ struct FrameOptions {
   std::optional<std::uint32_t> highlight;
   /// Motion trails to draw over the overlays (not owned; nullptr for none).
   const MotionTrails* trails = nullptr;
+  /// The events drawn with `draw_events`: those recorded since the last frame (not owned); nullptr
+  /// for the events of the world's last step alone.
+  const EventMarks* events = nullptr;
   /// Extra world-space drawing after the world's own overlays and before the trails, e.g. a
   /// scene script's character overlays; empty for none. Given the frame's overlay options so
   /// it can use the theme's palette and scales.
@@ -103,7 +107,7 @@ class FrameRenderer {
 
   /// Draws `world` (shapes, broad-phase pairs and body overlays via `World::draw`; bounding
   /// boxes with `draw_bounding_boxes`; islands with `draw_islands`; contacts with
-  /// `draw_contacts`; body labels with `draw_body_labels`), then `extra_overlays`, the highlight,
+  /// `draw_contacts`; events with `draw_event_marks`; body labels with `draw_body_labels`), then `extra_overlays`, the highlight,
   /// trails, HUD and legend, into `frame`, each group a layer over the ones before. Shapes are
   /// drawn by GL, every later layer on the CPU over the read-back frame
   /// (`PrimitiveRenderer::start_software_layers`). The camera must have this renderer's size

@@ -43,6 +43,10 @@ ThemePalette light_palette() {
   d.label = rgb(20, 20, 28);
   d.joint = rgb(110, 50, 150);
   d.joint_reaction = rgb(200, 30, 90);
+  d.sensor_fill = rgb(240, 228, 66, 0.35f);  // Okabe-Ito yellow, see-through
+  d.event_touch = rgb(0, 120, 120);
+  d.event_hit = rgb(190, 0, 0);
+  d.event_sensor = rgb(160, 130, 0);
   return p;
 }
 
@@ -70,6 +74,10 @@ ThemePalette dark_palette() {
   d.label = rgb(232, 232, 236);
   d.joint = rgb(205, 160, 255);
   d.joint_reaction = rgb(255, 110, 150);
+  d.sensor_fill = rgb(240, 228, 66, 0.25f);
+  d.event_touch = rgb(90, 220, 210);
+  d.event_hit = rgb(255, 90, 90);
+  d.event_sensor = rgb(240, 228, 66);
   return p;
 }
 

@@ -22,11 +22,14 @@ const std::vector<OverlayName>& overlay_names() {
       {"broadphase", draw_broad_phase, "broad-phase pairs"},
       {"ids", draw_body_ids, "body indices"},
       {"joints", draw_joints, "joint anchors, axes, limits, springs, motors and reaction forces"},
+      {"events", draw_events,
+       "events of the steps since the last frame: touch begin (ring) and end (cross), hits (burst), sensor "
+       "begin and end (not in 'all')"},
       {"contacts",
        draw_contact_points | draw_contact_normals | draw_normal_impulses | draw_friction_impulses |
            draw_penetration,
        "points, normals, impulses and penetration"},
-      {"all", draw_all, "everything"},
+      {"all", draw_all, "everything but events"},
   };
   return names;
 }

@@ -36,6 +36,11 @@ constexpr SceneFrames kJointSceneFrames[] = {
     {"heavy_chain", 60, 300}, {"mouse_drag", 120, 360},
 };
 
+/// The scene of events (issue 32): its overlays with the events of the frame's step.
+constexpr SceneFrames kEventSceneFrames[] = {
+    {"sensors", 57, 324},
+};
+
 /// A built-in scene's golden at the default size, parameters and theme.
 GoldenSpec builtin(const std::string& scene, const char* name, std::int64_t step,
                    std::uint32_t overlays) {
@@ -64,6 +69,14 @@ std::vector<GoldenSpec> make_catalog() {
     catalog.push_back(builtin(scene, "settled", frames.settled, 0));
     catalog.push_back(builtin(scene, "motion_overlays", frames.motion, kPhysicsOverlays | draw_joints));
     catalog.push_back(builtin(scene, "settled_overlays", frames.settled, kPhysicsOverlays | draw_joints));
+  }
+  for (const SceneFrames& frames : kEventSceneFrames) {
+    const std::string scene = frames.scene;
+    catalog.push_back(builtin(scene, "start", 0, 0));
+    catalog.push_back(builtin(scene, "motion", frames.motion, 0));
+    catalog.push_back(builtin(scene, "settled", frames.settled, 0));
+    catalog.push_back(builtin(scene, "motion_overlays", frames.motion, kPhysicsOverlays | draw_events));
+    catalog.push_back(builtin(scene, "settled_overlays", frames.settled, kPhysicsOverlays | draw_events));
   }
   // Every overlay once, on the scene with every shape pair in contact.
   catalog.push_back(builtin("shape_pairs", "motion_all_overlays", 30, draw_all));

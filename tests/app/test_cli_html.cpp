@@ -113,6 +113,28 @@ TEST_F(CliTest, HtmlViewerListsEveryFrameWithItsData) {
   EXPECT_FALSE(fs::exists(dir_ / "view" / "tutorial.overlays" / "contacts"));
 }
 
+// With the events overlay each frame carries the events of the steps since the frame before
+// (issue 32): the sensors scene's three balls enter the sensor box by step 57 and the bouncy
+// ball lands at step 57, so frames every 4 steps up to 60 count 3 sensor begins and a hit in
+// all, none lost between frames. Without the overlay the frames carry no events.
+TEST_F(CliTest, HtmlViewerWithTheEventsOverlayCountsEachFramesEvents) {
+  ASSERT_EQ(run("render sensors --frames 0:60:4 --size 160x120 --overlays events --html -o view --quiet").status, 0);
+  const nlohmann::json frames = embedded_data(read_file(dir_ / "view" / "sensors.html"))["frames"];
+  ASSERT_EQ(frames.size(), 16u);
+  int sensor_begins = 0, hits = 0;
+  for (const nlohmann::json& frame : frames) {
+    ASSERT_TRUE(frame.contains("events")) << frame.dump();
+    sensor_begins += frame["events"]["sensor_begin"].get<int>();
+    hits += frame["events"]["hit"].get<int>();
+  }
+  EXPECT_EQ(sensor_begins, 3);
+  EXPECT_EQ(hits, 1);
+  ASSERT_EQ(run("render sensors --frames 0:60:4 --size 160x120 --overlays none --html -o plain --quiet").status, 0);
+  const nlohmann::json plain = embedded_data(read_file(dir_ / "plain" / "sensors.html"))["frames"];
+  ASSERT_EQ(plain.size(), 16u);
+  EXPECT_FALSE(plain[15].contains("events"));
+}
+
 TEST_F(CliTest, HtmlWithoutFramesIsBadUsage) {
   const Result result = run("render tutorial --html --no-frames --video v.webm");
   EXPECT_EQ(result.status, 2);
@@ -158,7 +180,7 @@ TEST(HtmlViewer, OverlayVariantsAreNoneAndEachGroupAlone) {
 TEST(HtmlViewer, TextAndDataCannotBreakOutOfThePage) {
   impulse2d::demos::ViewerPage page;
   page.title = "a <b>title</b> & @FRAMES@";
-  page.frames.push_back({{0, 0, 0.0, "x</script><script>alert(1)</script>.png"}, 1.0, 0});
+  page.frames.push_back({{0, 0, 0.0, "x</script><script>alert(1)</script>.png"}, 1.0, 0, {}});
   const std::string html = impulse2d::demos::html_viewer_page(page);
   EXPECT_NE(html.find("a &lt;b&gt;title&lt;/b&gt; &amp; @FRAMES@"), std::string::npos);
   EXPECT_EQ(html.find("alert(1)</script>"), std::string::npos);

@@ -282,3 +282,91 @@ TEST(Events, SensorBeginEndAndNoResponse) {
   statics.step();
   ASSERT_EQ(statics.sensor_events().end.size(), 1u);
 }
+
+namespace {
+
+constexpr vec2 triangle_vertices[3] = {{-0.5f, 0.0f}, {0.5f, 0.0f}, {0.0f, 0.8f}};
+
+// A triangle (centroid 0.8 / 3 m above its base) with hit events, base `drop` metres above the
+// ground, turned by `angle` radians, sliding at `speed` m/s.
+BodyId add_triangle(World& world, float drop, float angle, float speed) {
+  BodyDef def;
+  def.enable_hit_events = true;
+  def.position = {0.0f, ground_top + 0.8f / 3.0f + drop};
+  def.angle = angle;
+  def.linear_velocity = {speed, 0.0f};
+  return world.create_body(def, make_polygon(triangle_vertices, 3));
+}
+
+}  // namespace
+
+// Issue 32 (c): a triangle dropped flat while sliding lands once. The speculative contact lets
+// it arrive at the ground surface in one step (it begins touching there) and stops it in the
+// next, the first step that leaves free fall: that step, and only it, reports the hit, with the
+// speed it arrives with (it used to be reported in both steps, with no end touch between).
+TEST(Events, SlidingTriangleLandingHitsOnceWhenStopped) {
+  World world;
+  add_ground(world);
+  const BodyId triangle = add_triangle(world, 0.5f, 0.0f, 4.0f);
+  World twin;  // no ground: free fall
+  const BodyId twin_triangle = add_triangle(twin, 0.5f, 0.0f, 4.0f);
+  int stopped = -1, first_end = -1;
+  std::vector<int> hit_steps;
+  float hit_speed = 0.0f, arrival_speed = 0.0f;
+  for (int step = 1; step <= 120 && first_end < 0; ++step) {
+    world.step();
+    twin.step();
+    if (stopped < 0 && !same_bits(world.body(triangle), twin.body(twin_triangle))) {
+      stopped = step;
+      arrival_speed = -twin.body(twin_triangle).linear_velocity.y;
+    }
+    for (const auto& e : world.contact_events().hit) {
+      hit_steps.push_back(step);
+      hit_speed = e.approach_speed;
+    }
+    if (!world.contact_events().end.empty()) first_end = step;
+  }
+  ASSERT_GT(stopped, 0);
+  ASSERT_EQ(hit_steps.size(), 1u) << "hits at steps " << ::testing::PrintToString(hit_steps) << ", stopped at "
+                                  << stopped << ", first end at " << first_end;
+  EXPECT_EQ(hit_steps[0], stopped);
+  EXPECT_NEAR(hit_speed, arrival_speed, 1e-4f);
+}
+
+// A hit is an impact at a point the step must stop: a corner still in the air while another
+// one rests is not hit until it lands. For each hit of a tumbling, sliding triangle, the vertex
+// nearest the hit point, moving at the hit's approach speed from where it was when the step
+// began, would reach the ground within the step.
+TEST(Events, TumblingTriangleHitsOnlyCornersThatLand) {
+  struct Throw {
+    float drop, angle, speed;
+  };
+  int hits = 0;
+  for (const Throw t : {Throw{0.05f, 0.1f, 10.0f}, Throw{1.0f, 0.3f, 6.0f}, Throw{2.0f, 0.7f, 8.0f},
+                        Throw{0.2f, 1.0f, 3.0f}, Throw{3.0f, 2.0f, 5.0f}}) {
+    World world;
+    add_ground(world);
+    const BodyId triangle = add_triangle(world, t.drop, t.angle, t.speed);
+    const float dt = world.settings().time_step;
+    for (int step = 1; step <= 240; ++step) {
+      const Transform before = world.body(triangle).transform;
+      world.step();
+      for (const auto& e : world.contact_events().hit) {
+        ++hits;
+        float nearest = 1e9f, height = 0.0f;
+        for (const vec2 local : triangle_vertices) {
+          const vec2 vertex = before.apply(local - vec2(0.0f, 0.8f / 3.0f));
+          const float distance = glm::length(vertex - e.point);
+          if (distance < nearest) {
+            nearest = distance;
+            height = vertex.y - ground_top;
+          }
+        }
+        EXPECT_LT(height - e.approach_speed * dt, 0.0f)
+            << "drop " << t.drop << " angle " << t.angle << " speed " << t.speed << ": hit at step " << step << " ("
+            << e.approach_speed << " m/s) of a corner " << height << " m above the ground";
+      }
+    }
+  }
+  EXPECT_GE(hits, 5);
+}

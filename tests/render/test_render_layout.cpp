@@ -9,6 +9,7 @@
 #include "frames/frame_sequence.h"
 #include "frames/scene_camera.h"
 #include "frames/view_frame_options.h"
+#include "render/event_marks.h"
 #include "render/frame_renderer.h"
 #include "scene/scene_run.h"
 
@@ -100,16 +101,24 @@ TEST_P(HudAndLegendLayout, CoverNoBodyAndAtMostTwelvePercentOfA320x240Frame) {
     render::FrameRenderer renderer(size.width, size.height);
     const render::Camera camera = demos::scene_camera(scene.view.camera, run.world(), size.width, size.height);
     DebugDrawOptions draw = scene.view.draw;
-    draw.flags = draw_all;
+    draw.flags = draw_all | draw_events;  // every overlay (the events one is not in `all`)
     render::FrameOptions options = demos::view_frame_options(run, draw, render::Theme::Light);
     render::FrameOptions bare = options;
     bare.show_hud = false;
     bare.show_legend = false;
+    // Each frame shows the events since the one before, as `render` draws them.
+    render::EventMarks events;
+    options.events = &events;
+    bare.events = &events;
     double worst_area = 0.0;
     // Three steps: the start, early motion and later (capped at the scene's run).
     for (const std::int64_t step : {std::int64_t{0}, std::int64_t{60}, std::int64_t{180}}) {
       const std::int64_t at = std::min<std::int64_t>(step, scene.view.steps);
-      while (run.step_count() < at) run.step();
+      events.clear();
+      while (run.step_count() < at) {
+        run.step();
+        events.record(run.world(), run.step_count());
+      }
       render::HudInfo hud;
       hud.scene_name = demos::scene_title(scene);
       hud.step = at;
