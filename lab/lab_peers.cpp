@@ -47,13 +47,13 @@ std::unique_ptr<LabSimulation> make_simulation(const demos::Scene& scene, const 
     case Engine::Impulse2d: return engine;
     case Engine::Box2d:
 #ifdef IMPULSE2D_HAVE_BOX2D
-      return make_box2d_simulation(engine->world(), method);
+      return make_box2d_simulation(engine->world(), engine->joints(), method);
 #else
       break;
 #endif
     case Engine::Chipmunk:
 #ifdef IMPULSE2D_HAVE_CHIPMUNK
-      return make_chipmunk_simulation(engine->world(), method);
+      return make_chipmunk_simulation(engine->world(), engine->joints(), method);
 #else
       break;
 #endif
