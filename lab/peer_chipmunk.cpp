@@ -69,22 +69,25 @@ void create_chipmunk_joint(cpSpace* space, const LabJoint& joint, cpBody* a, cpB
   const demos::JointSpec& spec = joint.spec;
   std::vector<cpConstraint*> parts;
   const double two_pi = 6.283185307179586;
+  // Angular constraints between two bodies that cannot turn have nothing to act on (and
+  // Chipmunk's would divide by a zero inverse moment: NaN, then its debug build aborts).
+  const bool turns = reduced_moment(a, b) > 0.0;
   switch (spec.type) {
     case JointType::Revolute: {
       const RevoluteJointDef& source = spec.revolute;
       parts.push_back(cpPivotJointNew2(a, b, to_cp(source.local_anchor_a), to_cp(source.local_anchor_b)));
       // Chipmunk's angles are absolute: the joint angle is angle_b - angle_a - reference.
-      if (source.enable_limit) {
+      if (source.enable_limit && turns) {
         parts.push_back(cpRotaryLimitJointNew(a, b, source.lower_angle + source.reference_angle,
                                               source.upper_angle + source.reference_angle));
       }
-      if (source.enable_motor) {
+      if (source.enable_motor && turns) {
         // cpSimpleMotor drives b.w - a.w towards -rate.
         cpConstraint* motor = cpSimpleMotorNew(a, b, -source.motor_speed);
         cpConstraintSetMaxForce(motor, source.max_motor_torque);
         parts.push_back(motor);
       }
-      if (source.enable_spring && source.hertz > 0.0f) {
+      if (source.enable_spring && source.hertz > 0.0f && turns) {
         const double omega = two_pi * source.hertz;
         const double moment = reduced_moment(a, b);
         parts.push_back(cpDampedRotarySpringNew(a, b, source.reference_angle, moment * omega * omega,
@@ -105,7 +108,7 @@ void create_chipmunk_joint(cpSpace* space, const LabJoint& joint, cpBody* a, cpB
       parts.push_back(cpGrooveJointNew(a, b, to_cp(source.local_anchor_a + lower * axis),
                                        to_cp(source.local_anchor_a + upper * axis),
                                        to_cp(source.local_anchor_b)));
-      parts.push_back(cpGearJointNew(a, b, source.reference_angle, 1.0));
+      if (turns) parts.push_back(cpGearJointNew(a, b, source.reference_angle, 1.0));
       break;
     }
     case JointType::Distance: {
@@ -135,7 +138,7 @@ void create_chipmunk_joint(cpSpace* space, const LabJoint& joint, cpBody* a, cpB
       const WeldJointDef& source = spec.weld;
       if (source.linear_hertz > 0.0f || source.angular_hertz > 0.0f) unsupported(joint, "a spring");
       parts.push_back(cpPivotJointNew2(a, b, to_cp(source.local_anchor_a), to_cp(source.local_anchor_b)));
-      parts.push_back(cpGearJointNew(a, b, source.reference_angle, 1.0));
+      if (turns) parts.push_back(cpGearJointNew(a, b, source.reference_angle, 1.0));
       break;
     }
     case JointType::Wheel:

@@ -273,6 +273,21 @@ TEST(LabJointPeers, PeersBounceTheSpringAtItsFrequency) {
   }
 }
 
+// The peers' prismatic joint keeps the disc on the 30 degree axis: it slides as semi-implicit
+// Euler's free slide does, a T h / 2 = 4.905 * 2 / 60 / 2 = 0.0818 m behind the exact
+// position after 2 s at one step a frame (an axis mapped wrong would be metres off); the
+// peers' weld (Box2D's b2WeldJoint, Chipmunk's pivot + gear) holds the cantilever within 1 mm.
+TEST(LabJointPeers, PeersSlideOnThePrismaticAxisAndHoldTheWeld) {
+  for (const LabMethod& peer : peer_methods(1.0f / 60.0f)) {
+    if (!engine_available(peer.engine)) continue;
+    const double slide = error_of(shipped("prismatic_slide"), peer);
+    const double weld = error_of(shipped("weld_cantilever"), peer);
+    std::printf("%s prismatic %.5f m, weld %.3g m\n", engine_name(peer.engine), slide, weld);
+    EXPECT_NEAR(slide, 4.905 * 2.0 / 60.0 / 2.0, 1e-3) << engine_name(peer.engine);
+    EXPECT_LT(weld, 1e-3) << engine_name(peer.engine);
+  }
+}
+
 // A joint a peer lacks fails the run with its name, never silently dropped: Chipmunk has no
 // wheel joint, Box2D 2.4.1 no revolute spring.
 TEST(LabJointPeers, AJointThePeerLacksIsReportedNotDropped) {
