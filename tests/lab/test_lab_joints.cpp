@@ -288,6 +288,31 @@ TEST(LabJointPeers, PeersSlideOnThePrismaticAxisAndHoldTheWeld) {
   }
 }
 
+// A revolute motor of +2 rad/s (B counter-clockwise relative to A) with a wide limit: each
+// peer spins the disc at +2 rad/s after half a second (Chipmunk's cpSimpleMotor takes the
+// opposite sign; Box2D's and Chipmunk's rotary limits are absolute angles, offset by the
+// reference angle).
+TEST(LabJointPeers, PeersDriveTheRevoluteMotorAtItsSpeed) {
+  const LabScenario scenario = parse_lab_scenario(R"({"description": "d", "answer": "a", "duration": 1,
+      "metric": {"kind": "joint_drift", "unit": "m", "threshold": 1, "meaning": "m"},
+      "scene": {"settings": {"gravity": [0, 0]}, "model": {"shapes": ["circle"], "rotation": true},
+                "bodies": [{"name": "a", "type": "static", "shape": {"type": "circle", "radius": 0.05}, "position": [0, 0]},
+                           {"name": "b", "shape": {"type": "circle", "radius": 0.2}, "position": [0, 0]}],
+                "joints": [{"type": "revolute", "bodies": ["a", "b"], "anchor": [0, 0],
+                            "motor": {"speed": 2.0, "max_torque": 100}, "limits": [-100, 100]}]}})",
+                                                  "motor.json");
+  std::vector<LabMethod> methods = peer_methods(1.0f / 60.0f);
+  methods.push_back(LabMethod{});
+  for (const LabMethod& method : methods) {
+    if (!engine_available(method.engine)) continue;
+    std::unique_ptr<LabSimulation> simulation = make_simulation(scenario.scene, method);
+    for (int step = 0; step < 30; ++step) simulation->step();
+    std::vector<BodyState> states;
+    simulation->read_states(states);
+    EXPECT_NEAR(states[1].angular_velocity, 2.0f, 1e-3f) << engine_name(method.engine);
+  }
+}
+
 // A joint a peer lacks fails the run with its name, never silently dropped: Chipmunk has no
 // wheel joint, Box2D 2.4.1 no revolute spring.
 TEST(LabJointPeers, AJointThePeerLacksIsReportedNotDropped) {
