@@ -223,7 +223,18 @@ class ChipmunkSimulation : public LabSimulation {
   ChipmunkSimulation(const ChipmunkSimulation&) = delete;
   ChipmunkSimulation& operator=(const ChipmunkSimulation&) = delete;
 
-  void step() override { cpSpaceStep(space_, method_.time_step); }
+  void step() override {
+    if (diverged_) return;
+    cpSpaceStep(space_, method_.time_step);
+    // Debian's debug build aborts the whole process when a body goes non-finite (a blown-up
+    // joint chain gets there within steps): a body beyond 1e6 m or 1e6 m/s counts as diverged
+    // and the run stops stepping, so the lab reports it instead of dying.
+    for (cpBody* body : bodies_) {
+      const cpVect p = cpBodyGetPosition(body), v = cpBodyGetVelocity(body);
+      if (!(cpvlength(p) < 1e6 && cpvlength(v) < 1e6)) diverged_ = true;
+    }
+  }
+  bool diverged() const override { return diverged_; }
   float time_step() const override { return method_.time_step; }
   vec2 gravity() const override { return gravity_; }
   int body_count() const override { return static_cast<int>(bodies_.size()); }
@@ -285,6 +296,7 @@ class ChipmunkSimulation : public LabSimulation {
   std::vector<bool> dynamic_;
   std::vector<bool> rotates_;
   std::vector<cpConstraint*> constraints_;
+  bool diverged_ = false;  // a body left the finite range: stepping stopped
   std::vector<LabJoint> joints_;
   bool friction_on_ = true;
   bool restitution_on_ = true;
