@@ -30,11 +30,6 @@ vec2 world_point(const BodyState& state, vec2 local) {
 }
 
 std::vector<LabJoint> scene_joints(const demos::Scene& scene, const World& world) {
-  if (static_cast<std::size_t>(world.joint_count()) != scene.joints.size()) {
-    throw demos::UsageError(scene.name + ": the world holds " + std::to_string(world.joint_count()) +
-                            " joints but the scene declares " + std::to_string(scene.joints.size()) +
-                            " (joints made by a script or event are not supported by the lab)");
-  }
   const std::vector<BodyId> bodies = world.body_ids();
   std::vector<LabJoint> joints;
   for (const demos::JointSpec& spec : scene.joints) {

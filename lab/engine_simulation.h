@@ -19,8 +19,8 @@ ContactCoefficients world_coefficients(const World& world, BodyId a, BodyId b);
 
 /// The joints of `scene` (its `joints`, created right after its bodies) completed from the
 /// bodies of `world` before its first step, as `demos::create_scene_joint` completes them.
-/// Throws `demos::UsageError` when `world` holds other joints than those (the peers could not
-/// build them).
+/// Joints a built-in scene's code creates are not among them (the world's `joint_count()`
+/// then exceeds the list's size).
 std::vector<LabJoint> scene_joints(const demos::Scene& scene, const World& world);
 
 /// A scene stepped by impulse2d with a method's settings.

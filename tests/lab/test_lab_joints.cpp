@@ -12,6 +12,7 @@
 #include "lab/lab_peers.h"
 #include "lab/lab_scenario.h"
 #include "lab/lab_sweep.h"
+#include "demos/scene_registry.h"
 #include "scene/usage_error.h"
 
 namespace impulse2d::lab {
@@ -347,6 +348,24 @@ TEST(LabJointPeers, AJointThePeerLacksIsReportedNotDropped) {
       EXPECT_NE(failure(with_joint("revolute"), peer).find("not supported by Box2D 2.4.1"),
                 std::string::npos);
       EXPECT_EQ(failure(with_joint("wheel"), peer), "");
+    }
+  }
+}
+
+// A built-in scene whose code makes its joints (heavy_chain): impulse2d runs it, the peers
+// refuse it by name instead of running the links unjoined.
+TEST(LabJointPeers, JointsMadeByASceneCodeAreRefusedByThePeers) {
+  const demos::Scene* scene = demos::find_builtin_scene("heavy_chain");
+  ASSERT_NE(scene, nullptr);
+  EXPECT_NE(make_simulation(*scene, LabMethod{}), nullptr);
+  for (const LabMethod& peer : peer_methods(1.0f / 60.0f)) {
+    if (!engine_available(peer.engine)) continue;
+    try {
+      make_simulation(*scene, peer);
+      ADD_FAILURE() << engine_name(peer.engine) << " ran heavy_chain without its joints";
+    } catch (const std::runtime_error& error) {
+      EXPECT_NE(std::string(error.what()).find("joints made by the scene's code"), std::string::npos)
+          << error.what();
     }
   }
 }
