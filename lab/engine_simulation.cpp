@@ -1,7 +1,10 @@
 /// @file engine_simulation.cpp
 #include "lab/engine_simulation.h"
 
+#include <algorithm>
+
 #include "core/material.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::lab {
 
@@ -19,6 +22,57 @@ void read_world_states(const World& world, const std::vector<BodyId>& bodies,
     state.inertia = body.inverse_inertia > 0.0f ? body.inertia : 0.0f;
     state.dynamic = body.type == BodyType::Dynamic;
   }
+}
+
+vec2 world_point(const BodyState& state, vec2 local) {
+  const float c = std::cos(state.angle), s = std::sin(state.angle);
+  return {state.position.x + c * local.x - s * local.y, state.position.y + s * local.x + c * local.y};
+}
+
+std::vector<LabJoint> scene_joints(const demos::Scene& scene, const World& world) {
+  const std::vector<BodyId> bodies = world.body_ids();
+  std::vector<LabJoint> joints;
+  for (const demos::JointSpec& spec : scene.joints) {
+    if (spec.body_a < 0 || spec.body_b < 0 || static_cast<std::size_t>(spec.body_a) >= bodies.size() ||
+        static_cast<std::size_t>(spec.body_b) >= bodies.size()) {
+      throw demos::UsageError(scene.name + ": " + spec.origin + ": a body of the joint is not in the world");
+    }
+    LabJoint joint;
+    joint.spec = spec;
+    joint.body_a = spec.body_a;
+    joint.body_b = spec.body_b;
+    const BodyView a = world.body(bodies[static_cast<std::size_t>(spec.body_a)]);
+    const BodyView b = world.body(bodies[static_cast<std::size_t>(spec.body_b)]);
+    // As demos::create_scene_joint: world anchors and axis into each body's frame, the relative
+    // angle now as joint angle 0, a distance joint's length from its anchors when not given.
+    joint.local_anchor_a = a.transform.apply_inverse(spec.anchor_a);
+    joint.local_anchor_b = b.transform.apply_inverse(spec.anchor_b);
+    const float axis_length = glm::length(spec.axis);
+    const vec2 axis = axis_length > 0.0f ? spec.axis / axis_length : vec2(0.0f, 0.0f);
+    const vec2 local_axis = a.transform.rotation.inverse_rotate(axis);
+    const float relative_angle = b.angle - a.angle;
+    demos::JointSpec& def = joint.spec;
+    def.revolute.local_anchor_a = def.prismatic.local_anchor_a = def.distance.local_anchor_a =
+        def.weld.local_anchor_a = def.wheel.local_anchor_a = joint.local_anchor_a;
+    def.revolute.local_anchor_b = def.prismatic.local_anchor_b = def.distance.local_anchor_b =
+        def.weld.local_anchor_b = def.wheel.local_anchor_b = def.mouse.local_anchor_b =
+            joint.local_anchor_b;
+    if (spec.type == JointType::Mouse && spec.anchor_b_is_center) {
+      def.mouse.local_anchor_b = joint.local_anchor_b = vec2(0.0f, 0.0f);
+    }
+    def.prismatic.local_axis_a = def.wheel.local_axis_a = local_axis;
+    def.revolute.reference_angle = def.prismatic.reference_angle = def.weld.reference_angle =
+        relative_angle;
+    if (!spec.has_length) {
+      def.distance.length = std::max(glm::length(spec.anchor_b - spec.anchor_a), 0.005f);
+    }
+    def.revolute.collide_connected = def.prismatic.collide_connected =
+        def.distance.collide_connected = def.weld.collide_connected =
+            def.wheel.collide_connected = def.motor.collide_connected =
+                def.mouse.collide_connected = spec.collide_connected;
+    joints.push_back(joint);
+  }
+  return joints;
 }
 
 ContactCoefficients world_coefficients(const World& world, BodyId a, BodyId b) {
@@ -43,6 +97,7 @@ EngineSimulation::EngineSimulation(const demos::Scene& scene, const LabMethod& m
     : scene_(apply_method(method, scene)) {
   run_ = std::make_unique<demos::SceneRun>(scene_, params);
   bodies_ = run_->world().body_ids();
+  joints_ = scene_joints(scene_, run_->world());
 }
 
 void EngineSimulation::step() {

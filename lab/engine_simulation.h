@@ -17,6 +17,12 @@ void read_world_states(const World& world, const std::vector<BodyId>& bodies,
 /// The coefficients `world`'s mixing rules give a contact between bodies `a` and `b`.
 ContactCoefficients world_coefficients(const World& world, BodyId a, BodyId b);
 
+/// The joints of `scene` (its `joints`, created right after its bodies) completed from the
+/// bodies of `world` before its first step, as `demos::create_scene_joint` completes them.
+/// Joints a built-in scene's code creates are not among them (the world's `joint_count()`
+/// then exceeds the list's size).
+std::vector<LabJoint> scene_joints(const demos::Scene& scene, const World& world);
+
 /// A scene stepped by impulse2d with a method's settings.
 class EngineSimulation : public LabSimulation {
  public:
@@ -33,6 +39,7 @@ class EngineSimulation : public LabSimulation {
   ContactCoefficients coefficients(int a, int b) const override;
   unsigned long long state_hash() const override;
   bool diverged() const override { return diverged_; }
+  const std::vector<LabJoint>& joints() const override { return joints_; }
   /// The world being stepped.
   const World& world() const { return run_->world(); }
 
@@ -41,6 +48,7 @@ class EngineSimulation : public LabSimulation {
   std::unique_ptr<demos::SceneRun> run_;
   std::vector<BodyId> bodies_;  // creation index -> handle
   bool diverged_ = false;       // some step reported non-finite bodies
+  std::vector<LabJoint> joints_;  // the scene's joints as built
 };
 
 }  // namespace impulse2d::lab

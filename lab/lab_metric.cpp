@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace impulse2d::lab {
 namespace {
@@ -304,7 +306,220 @@ class PeakSpeedTracker : public TrackerBase {
   double peak_ = 0.0;
 };
 
+/// The times (s) at which a sampled quantity changes sign, interpolated linearly between steps.
+class SignChanges {
+ public:
+  void add(double time, double value) {
+    if (has_previous_ && ((previous_value_ < 0.0 && value >= 0.0) || (previous_value_ > 0.0 && value <= 0.0))) {
+      const double fraction = previous_value_ / (previous_value_ - value);
+      times_.push_back(previous_time_ + fraction * (time - previous_time_));
+    }
+    // A sample exactly 0 is a crossing already counted (or the start): the next sign decides.
+    if (value != 0.0 || !has_previous_) {
+      previous_time_ = time;
+      previous_value_ = value;
+      has_previous_ = true;
+    }
+  }
+  /// Twice the mean time between successive sign changes (a full period of an oscillation
+  /// that changes sign twice per period), or 0 with fewer than two.
+  double period() const {
+    if (times_.size() < 2) return 0.0;
+    return 2.0 * (times_.back() - times_.front()) / static_cast<double>(times_.size() - 1);
+  }
+
+ private:
+  std::vector<double> times_;
+  double previous_time_ = 0.0;
+  double previous_value_ = 0.0;
+  bool has_previous_ = false;
+};
+
+/// The relative error of a measured period, percent; 100 when nothing was measured.
+double period_error_percent(double measured, double exact) {
+  if (measured <= 0.0) return 100.0;
+  return 100.0 * std::fabs(measured - exact) / exact;
+}
+
+const LabJoint& metric_joint(const MetricSpec& spec, const LabSimulation& simulation) {
+  const std::vector<LabJoint>& joints = simulation.joints();
+  const int index = spec.joints.at(0);
+  if (index < 0 || static_cast<std::size_t>(index) >= joints.size()) {
+    throw std::runtime_error("the metric's joint " + std::to_string(index) +
+                             " is not among the run's joints");
+  }
+  return joints[static_cast<std::size_t>(index)];
+}
+
+double cross(vec2 a, vec2 b) { return static_cast<double>(a.x) * b.y - static_cast<double>(a.y) * b.x; }
+double dot(vec2 a, vec2 b) { return static_cast<double>(a.x) * b.x + static_cast<double>(a.y) * b.y; }
+
+/// The velocity of the body-frame point `local` of a body in `state`, m/s.
+vec2 point_velocity(const BodyState& state, vec2 local) {
+  const vec2 arm = world_point(state, local) - state.position;
+  return {state.velocity.x - state.angular_velocity * arm.y,
+          state.velocity.y + state.angular_velocity * arm.x};
+}
+
+class PendulumTracker : public TrackerBase {
+ public:
+  PendulumTracker(const MetricSpec& spec, const LabSimulation& simulation,
+                  const std::vector<BodyState>& start)
+      : body_(spec.bodies.at(0)), joint_(metric_joint(spec, simulation)) {
+    const vec2 gravity = simulation.gravity();
+    const double g = std::hypot(gravity.x, gravity.y);
+    down_ = gravity / static_cast<float>(g);
+    const BodyState& bob = start.at(static_cast<std::size_t>(body_));
+    const vec2 pivot = world_point(start.at(static_cast<std::size_t>(joint_.body_a)), joint_.local_anchor_a);
+    const vec2 arm = bob.position - pivot;
+    const double d = std::hypot(arm.x, arm.y);
+    const double theta0 = std::fabs(std::atan2(cross(down_, arm), dot(down_, arm)));
+    // A hinge turns the bob with the pendulum; a distance joint (anchored at the bob's centre)
+    // leaves its spin alone, so only m d^2 swings.
+    const double inertia = joint_.spec.type == JointType::Revolute ? bob.inertia : 0.0;
+    const double length = (inertia + bob.mass * d * d) / (bob.mass * d);
+    exact_period_ = 4.0 * std::sqrt(length / g) * elliptic_k(std::sin(theta0 / 2.0));
+  }
+  /// K(k) = pi / (2 AGM(1, sqrt(1 - k^2))), to double precision.
+  static double elliptic_k(double k) {
+    double a = 1.0, b = std::sqrt(1.0 - k * k);
+    for (int i = 0; i < 40 && std::fabs(a - b) > 1e-15 * a; ++i) {
+      const double next = 0.5 * (a + b);
+      b = std::sqrt(a * b);
+      a = next;
+    }
+    return 3.14159265358979323846 / (2.0 * a);
+  }
+  void observe_finite(double time, const std::vector<BodyState>& states) override {
+    const vec2 pivot = world_point(states[static_cast<std::size_t>(joint_.body_a)], joint_.local_anchor_a);
+    const vec2 arm = states[static_cast<std::size_t>(body_)].position - pivot;
+    crossings_.add(time, std::atan2(cross(down_, arm), dot(down_, arm)));
+  }
+  double finite_error() const override {
+    return period_error_percent(crossings_.period(), exact_period_);
+  }
+  double exact_period() const { return exact_period_; }
+
+ private:
+  int body_;
+  LabJoint joint_;
+  vec2 down_{0.0f, -1.0f};
+  double exact_period_ = 1.0;
+  SignChanges crossings_;
+};
+
+class SpringFrequencyTracker : public TrackerBase {
+ public:
+  SpringFrequencyTracker(const MetricSpec& spec, const LabSimulation& simulation)
+      : joint_(metric_joint(spec, simulation)) {
+    const double f = joint_.spec.distance.hertz;
+    const double z = std::min(static_cast<double>(joint_.spec.distance.damping_ratio), 0.999);
+    exact_frequency_ = f * std::sqrt(1.0 - z * z);
+  }
+  void observe_finite(double time, const std::vector<BodyState>& states) override {
+    const BodyState& a = states[static_cast<std::size_t>(joint_.body_a)];
+    const BodyState& b = states[static_cast<std::size_t>(joint_.body_b)];
+    const vec2 span = world_point(b, joint_.local_anchor_b) - world_point(a, joint_.local_anchor_a);
+    const vec2 relative = point_velocity(b, joint_.local_anchor_b) - point_velocity(a, joint_.local_anchor_a);
+    const double length = std::hypot(span.x, span.y);
+    turning_points_.add(time, length > 0.0 ? dot(span, relative) / length : 0.0);
+  }
+  double finite_error() const override {
+    const double period = turning_points_.period();
+    return period > 0.0 ? period_error_percent(1.0 / period, exact_frequency_) : 100.0;
+  }
+
+ private:
+  LabJoint joint_;
+  double exact_frequency_ = 1.0;
+  SignChanges turning_points_;
+};
+
+/// True for the joints whose anchors JointDrift measures.
+bool holds_anchors(const LabJoint& joint) {
+  return joint.spec.type == JointType::Revolute || joint.spec.type == JointType::Weld ||
+         (joint.spec.type == JointType::Distance && !joint.spec.distance.enable_spring);
+}
+
+class JointDriftTracker : public TrackerBase {
+ public:
+  JointDriftTracker(const MetricSpec& spec, const LabSimulation& simulation) : after_(spec.after) {
+    const std::vector<LabJoint>& all = simulation.joints();
+    if (spec.joints.empty()) {
+      for (const LabJoint& joint : all) {
+        if (holds_anchors(joint)) joints_.push_back(joint);
+      }
+    } else {
+      for (std::size_t i = 0; i < spec.joints.size(); ++i) {
+        MetricSpec one;
+        one.joints = {spec.joints[i]};
+        joints_.push_back(metric_joint(one, simulation));
+      }
+    }
+  }
+  void observe_finite(double time, const std::vector<BodyState>& states) override {
+    if (time < after_ - 1e-9) return;
+    for (const LabJoint& joint : joints_) {
+      const vec2 span = world_point(states[static_cast<std::size_t>(joint.body_b)], joint.local_anchor_b) -
+                        world_point(states[static_cast<std::size_t>(joint.body_a)], joint.local_anchor_a);
+      double separation = std::hypot(span.x, span.y);
+      if (joint.spec.type == JointType::Distance) separation = std::fabs(separation - joint.spec.distance.length);
+      worst_ = std::max(worst_, separation);
+    }
+  }
+  double finite_error() const override { return worst_; }
+
+ private:
+  std::vector<LabJoint> joints_;
+  double after_ = 0.0;
+  double worst_ = 0.0;
+};
+
+class RopeSlackTracker : public TrackerBase {
+ public:
+  RopeSlackTracker(const MetricSpec& spec, const LabSimulation& simulation,
+                   const std::vector<BodyState>& start)
+      : body_(spec.bodies.at(0)), joint_(metric_joint(spec, simulation)),
+        start_(start.at(static_cast<std::size_t>(body_))), gravity_(simulation.gravity()) {
+    const DistanceJointDef& rope = joint_.spec.distance;
+    anchor_ = world_point(start.at(static_cast<std::size_t>(joint_.body_a)), joint_.local_anchor_a);
+    max_length_ = rope.enable_limit ? rope.max_length : rope.length;
+    min_length_ = rope.enable_limit ? rope.min_length : 0.0;
+  }
+  void observe_finite(double time, const std::vector<BodyState>& states) override {
+    if (taut_) return;
+    BodyState exact = start_;
+    exact.position = {static_cast<float>(start_.position.x + start_.velocity.x * time + 0.5 * gravity_.x * time * time),
+                      static_cast<float>(start_.position.y + start_.velocity.y * time + 0.5 * gravity_.y * time * time)};
+    exact.angle = static_cast<float>(start_.angle + start_.angular_velocity * time);
+    const vec2 rope = world_point(exact, joint_.local_anchor_b) - anchor_;
+    const double length = std::hypot(rope.x, rope.y);
+    if (length > max_length_ - 0.01 || length < min_length_ + 0.01) {
+      taut_ = true;  // from here on the rope may act
+      return;
+    }
+    const vec2 at = states[static_cast<std::size_t>(body_)].position;
+    worst_ = std::max(worst_, static_cast<double>(std::hypot(at.x - exact.position.x, at.y - exact.position.y)));
+  }
+  double finite_error() const override { return worst_; }
+
+ private:
+  int body_;
+  LabJoint joint_;
+  BodyState start_;
+  vec2 gravity_;
+  vec2 anchor_{0.0f, 0.0f};
+  double max_length_ = 0.0;
+  double min_length_ = 0.0;
+  bool taut_ = false;
+  double worst_ = 0.0;
+};
+
 }  // namespace
+
+double exact_pendulum_period(double length, double gravity, double amplitude) {
+  return 4.0 * std::sqrt(length / gravity) * PendulumTracker::elliptic_k(std::sin(amplitude / 2.0));
+}
 
 std::unique_ptr<MetricTracker> make_metric_tracker(const MetricSpec& spec,
                                                    const LabSimulation& simulation) {
@@ -331,6 +546,14 @@ std::unique_ptr<MetricTracker> make_metric_tracker(const MetricSpec& spec,
       return std::make_unique<TunnelTracker>(spec, start);
     case MetricKind::PeakSpeed:
       return std::make_unique<PeakSpeedTracker>();
+    case MetricKind::PendulumPeriod:
+      return std::make_unique<PendulumTracker>(spec, simulation, start);
+    case MetricKind::SpringFrequency:
+      return std::make_unique<SpringFrequencyTracker>(spec, simulation);
+    case MetricKind::JointDrift:
+      return std::make_unique<JointDriftTracker>(spec, simulation);
+    case MetricKind::RopeSlack:
+      return std::make_unique<RopeSlackTracker>(spec, simulation, start);
   }
   return nullptr;
 }

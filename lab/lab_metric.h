@@ -43,6 +43,39 @@ enum class MetricKind {
   /// Overlapping bodies are separated without being thrown apart: error is the largest speed
   /// any dynamic body reaches during the run, m/s.
   PeakSpeed,
+  /// A pendulum: `body` swings on `joint` (a revolute hinge or a rigid distance joint whose
+  /// body A is static) from rest at angle theta0 from straight below the pivot P (the joint's
+  /// anchor on A). Energy conservation, (I_P / 2) (dtheta/dt)^2 = m g d (cos(theta) -
+  /// cos(theta0)), with d the distance from P to the centre of mass and I_P = I + m d^2 the
+  /// moment about P (I = 0 for a bob that cannot turn, which translates around the pivot),
+  /// integrated over a quarter swing gives the period T = 4 sqrt(L/g) K(sin(theta0/2)),
+  /// L = I_P / (m d) the equivalent length and K the complete elliptic integral of the first
+  /// kind (computed by the arithmetic-geometric mean: K(k) = pi / (2 AGM(1, sqrt(1 - k^2)))).
+  /// For small theta0 it is 2 pi sqrt(L/g) (1 + theta0^2/16 + ...). Measured: the times the
+  /// bob crosses straight below the pivot (interpolated between steps); the period is twice
+  /// the mean time between crossings. Error: |T_measured - T| / T, percent (100 when fewer
+  /// than two crossings).
+  PendulumPeriod,
+  /// A mass on a spring: `joint` is a distance joint with a spring of f Hz and damping ratio z
+  /// from a static body A to body B. The joint's spring is defined on the joint's reduced
+  /// mass (B's mass when A is static), so the motion along the spring is x'' = -w^2 x - 2 z w x'
+  /// with w = 2 pi f: it oscillates at f_d = f sqrt(1 - z^2) about its equilibrium (shifted by
+  /// gravity along the spring, which does not change the frequency). Measured: the turning
+  /// points (the spring's rate of lengthening changes sign, interpolated); the period is twice
+  /// the mean time between them. Error: |f_measured - f_d| / f_d, percent (100 when fewer than
+  /// two turning points).
+  SpringFrequency,
+  /// Joints must hold: a revolute or weld joint's two anchors coincide, a rigid distance
+  /// joint's anchors stay `length` apart. Error: the largest anchor separation (|p_B - p_A|,
+  /// or ||p_B - p_A| - length|) of the metric's `joints` (default: every revolute, weld and
+  /// rigid distance joint) over the run (from `after` seconds on: "at rest" once the start's
+  /// sag has settled), m.
+  JointDrift,
+  /// A slack rope: `body` hangs on `joint`, a distance joint with only a maximum length L
+  /// (spring of 0 Hz, limit [min, L]); while the exact free-fall trajectory p(t) = p0 + v0 t +
+  /// g t^2 / 2 stays within L - 1 cm of A's anchor (and beyond min + 1 cm) the rope must not
+  /// act. Error: the largest distance from p(t) over that time, m.
+  RopeSlack,
 };
 
 /// A scenario's metric as declared in its file.
@@ -53,6 +86,8 @@ struct MetricSpec {
   bool rolls = false;        ///< SlopeMotion: the body is a disc rolling on the surface
   int apex_count = 3;        ///< BounceApexes: apexes compared
   float rest_height = 0.0f;  ///< BounceApexes: y of the ball's centre resting on the ground, m
+  std::vector<int> joints;   ///< indices in the scene's `joints`: the joint(s) measured
+  double after = 0.0;        ///< JointDrift: seconds from the start before separations count
   std::string unit;          ///< unit of the error ("m", "%", "1" for fractions)
   double threshold = 0.0;    ///< a run passes iff its error <= threshold (same unit)
   std::string meaning;       ///< one line: what the error measures
@@ -68,6 +103,10 @@ class MetricTracker {
   /// The error so far, in the metric's unit (infinity for a run that went non-finite).
   virtual double error() const = 0;
 };
+
+/// The period (s) of a pendulum of equivalent length `length` (m) in gravity `gravity` (m/s^2)
+/// swinging from rest at `amplitude` radians: 4 sqrt(L/g) K(sin(amplitude/2)).
+double exact_pendulum_period(double length, double gravity, double amplitude);
 
 /// A tracker for `spec` on `simulation`, taking the exact answer's initial conditions and the
 /// contact coefficients of the simulation's own model from its state before the first step.

@@ -2,6 +2,7 @@
 #include "lab/lab_peers.h"
 
 #include <cstring>
+#include <string>
 #include <stdexcept>
 
 #include "lab/engine_simulation.h"
@@ -43,17 +44,27 @@ std::string engine_note(Engine engine) {
 
 std::unique_ptr<LabSimulation> make_simulation(const demos::Scene& scene, const LabMethod& method) {
   auto engine = std::make_unique<EngineSimulation>(scene, method);
+  if (method.engine == Engine::Impulse2d) return engine;
+  if (engine_available(method.engine) &&
+      static_cast<std::size_t>(engine->world().joint_count()) != engine->joints().size()) {
+    // A built-in scene's code made joints the peer cannot see: refuse rather than drop them.
+    throw std::runtime_error(std::string(scene.name) + ": " +
+                             std::to_string(engine->world().joint_count() -
+                                            static_cast<int>(engine->joints().size())) +
+                             " joints made by the scene's code (not its \"joints\"): not supported by " +
+                             (method.engine == Engine::Box2d ? "Box2D 2.4.1" : "Chipmunk 7.0.3"));
+  }
   switch (method.engine) {
     case Engine::Impulse2d: return engine;
     case Engine::Box2d:
 #ifdef IMPULSE2D_HAVE_BOX2D
-      return make_box2d_simulation(engine->world(), method);
+      return make_box2d_simulation(engine->world(), engine->joints(), method);
 #else
       break;
 #endif
     case Engine::Chipmunk:
 #ifdef IMPULSE2D_HAVE_CHIPMUNK
-      return make_chipmunk_simulation(engine->world(), method);
+      return make_chipmunk_simulation(engine->world(), engine->joints(), method);
 #else
       break;
 #endif

@@ -26,9 +26,30 @@ int body_index(const demos::JsonCursor& reference, const nlohmann::json& scene_b
   reference.fail("no body named \"" + name + "\" in scene.bodies");
 }
 
-MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scene_bodies) {
+/// Index in the scene's `joints` of the joint called `name`, which must be of one of `types`
+/// (scene file spelling; empty: any).
+int joint_index(const demos::JsonCursor& reference, const nlohmann::json& scene_joints,
+                const std::vector<std::string>& types) {
+  const std::string name = reference.string();
+  for (std::size_t i = 0; i < scene_joints.size(); ++i) {
+    const nlohmann::json& joint = scene_joints[i];
+    if (!joint.is_object() || !joint.contains("name") || joint["name"] != name) continue;
+    const std::string type = joint.value("type", std::string());
+    if (!types.empty() && std::find(types.begin(), types.end(), type) == types.end()) {
+      std::string allowed;
+      for (const std::string& t : types) allowed += (allowed.empty() ? "" : " or ") + t;
+      reference.fail("joint \"" + name + "\" is a " + type + " joint; the metric needs a " + allowed +
+                     " joint");
+    }
+    return static_cast<int>(i);
+  }
+  reference.fail("no joint named \"" + name + "\" in scene.joints");
+}
+
+MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scene_bodies,
+                       const nlohmann::json& scene_joints) {
   node.allow_only({"kind", "body", "bodies", "surface", "rolls", "ground", "apexes",
-                   "rest_height", "unit", "threshold", "meaning"});
+                   "rest_height", "joint", "joints", "after", "unit", "threshold", "meaning"});
   MetricSpec spec;
   spec.kind = node.field("kind").choice<MetricKind>({{"free_flight", MetricKind::FreeFlight},
                                                      {"slope_motion", MetricKind::SlopeMotion},
@@ -38,7 +59,11 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
                                                      {"energy", MetricKind::Energy},
                                                      {"rest", MetricKind::Rest},
                                                      {"tunnel", MetricKind::Tunnel},
-                                                     {"peak_speed", MetricKind::PeakSpeed}});
+                                                     {"peak_speed", MetricKind::PeakSpeed},
+                                                     {"pendulum_period", MetricKind::PendulumPeriod},
+                                                     {"spring_frequency", MetricKind::SpringFrequency},
+                                                     {"joint_drift", MetricKind::JointDrift},
+                                                     {"rope_slack", MetricKind::RopeSlack}});
   if (auto field = node.optional_field("body")) spec.bodies.push_back(body_index(*field, scene_bodies));
   if (auto field = node.optional_field("bodies")) {
     for (std::size_t i = 0; i < field->size(); ++i)
@@ -50,6 +75,19 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
   if (auto field = node.optional_field("apexes"))
     spec.apex_count = static_cast<int>(field->integer(1, 100));
   if (auto field = node.optional_field("rest_height")) spec.rest_height = field->real();
+  if (auto field = node.optional_field("after")) {
+    if (spec.kind != MetricKind::JointDrift) field->fail("only a joint_drift metric takes \"after\"");
+    spec.after = field->real();
+  }
+  std::vector<std::string> joint_types;
+  if (spec.kind == MetricKind::PendulumPeriod) joint_types = {"revolute", "distance"};
+  if (spec.kind == MetricKind::SpringFrequency || spec.kind == MetricKind::RopeSlack) joint_types = {"distance"};
+  if (spec.kind == MetricKind::JointDrift) joint_types = {"revolute", "weld", "distance"};
+  if (auto field = node.optional_field("joint")) spec.joints.push_back(joint_index(*field, scene_joints, joint_types));
+  if (auto field = node.optional_field("joints")) {
+    for (std::size_t i = 0; i < field->size(); ++i)
+      spec.joints.push_back(joint_index(field->element(i), scene_joints, joint_types));
+  }
   spec.unit = node.field("unit").string();
   spec.threshold = node.field("threshold").positive();
   spec.meaning = node.field("meaning").string();
@@ -72,6 +110,16 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
       need(1, "\"body\"");
       if (spec.surface < 0) node.fail("metric needs \"surface\" (the wall)");
       break;
+    case MetricKind::PendulumPeriod:
+    case MetricKind::RopeSlack:
+      need(1, "\"body\"");
+      if (spec.joints.size() != 1) node.fail("metric needs \"joint\"");
+      break;
+    case MetricKind::SpringFrequency:
+      need(0, "no \"body\" (the joint's body B is measured)");
+      if (spec.joints.size() != 1) node.fail("metric needs \"joint\"");
+      break;
+    case MetricKind::JointDrift:
     case MetricKind::Energy:
     case MetricKind::Rest:
     case MetricKind::PeakSpeed: break;
@@ -103,7 +151,8 @@ LabScenario parse_lab_scenario(const std::string& text, const std::string& path)
   const demos::JsonCursor scene = root.field("scene");
   scene.expect_object();
   const nlohmann::json bodies = scene.value().value("bodies", nlohmann::json::array());
-  scenario.metric = read_metric(root.field("metric"), bodies);
+  const nlohmann::json joints = scene.value().value("joints", nlohmann::json::array());
+  scenario.metric = read_metric(root.field("metric"), bodies, joints);
   // The scene loader names the file in its messages; the embedded scene is reported as
   // "<file> (scene)" so paths read "<file> (scene): bodies[2].shape...".
   scenario.scene = demos::parse_scene(scene.value().dump(), path + " (scene)");

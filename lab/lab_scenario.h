@@ -11,7 +11,9 @@
 /// Metric fields by kind: `body` (free_flight, slope_motion, bounce_apexes, tunnel), `surface`
 /// (slope_motion, tunnel: the wall), `rolls` (slope_motion), `ground`, `apexes`, `rest_height` (bounce_apexes),
 /// `bodies` (collision_1d: two; cradle: the row in order; rest: optional, default every dynamic
-/// body). Bodies are named by their `name` in the scene.
+/// body); `joint` (pendulum_period, spring_frequency, rope_slack), `joints` (joint_drift:
+/// optional, default every revolute, weld and rigid distance joint). Bodies and joints are
+/// named by their `name` in the scene.
 
 #include <string>
 #include <vector>

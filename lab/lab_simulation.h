@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "scene/scene_joint.h"
 
 namespace impulse2d::lab {
 
@@ -31,6 +32,20 @@ struct ContactCoefficients {
   float restitution = 0.0f;       ///< e
 };
 
+/// A joint of the scene as every engine builds it: the scene's joint (`spec`) with its core
+/// definition completed from the bodies' poses at creation (local anchors and axis, reference
+/// angle, length), exactly as `demos::create_scene_joint` completes it for impulse2d.
+struct LabJoint {
+  demos::JointSpec spec;           ///< the scene's joint; the definition of `spec.type` completed
+  int body_a = -1;                 ///< creation index of body A
+  int body_b = -1;                 ///< creation index of body B
+  vec2 local_anchor_a{0.0f, 0.0f}; ///< metres, in A's frame from its centre of mass
+  vec2 local_anchor_b{0.0f, 0.0f}; ///< metres, in B's frame from its centre of mass
+};
+
+/// Where the body-frame point `local` (metres from the centre of mass) of a body in `state` is.
+vec2 world_point(const BodyState& state, vec2 local);
+
 /// One run of a scene in some engine.
 class LabSimulation {
  public:
@@ -49,6 +64,11 @@ class LabSimulation {
   virtual ContactCoefficients coefficients(int a, int b) const = 0;
   /// A 64-bit hash of the state (equal runs give equal hashes).
   virtual unsigned long long state_hash() const = 0;
+  /// The scene's joints, as this run built them (empty for a scene without joints).
+  virtual const std::vector<LabJoint>& joints() const {
+    static const std::vector<LabJoint> none;
+    return none;
+  }
   /// True once the engine reported a body that went non-finite (and restored it).
   virtual bool diverged() const { return false; }
   /// Moves body `index` (creation index) to `position` (metres), unrotated, moving at

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "lab/lab_peers.h"
 #include "core/world.h"
@@ -11,9 +13,160 @@
 namespace impulse2d::lab {
 namespace {
 
+b2Vec2 to_b2(vec2 v) { return b2Vec2(v.x, v.y); }
+
+[[noreturn]] void unsupported(const LabJoint& joint, const std::string& what) {
+  throw std::runtime_error(std::string(demos::joint_type_name(joint.spec.type)) + " joint " +
+                           (joint.spec.origin.empty() ? "" : joint.spec.origin + " ") + "with " +
+                           what + ": not supported by Box2D 2.4.1");
+}
+
+/// Builds `joint` between `a` and `b` in `world`. Box2D 2.4.1's anchors are from the body's
+/// origin, which the adapter puts at the centre of mass, so the local anchors carry over.
+void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body* b) {
+  const demos::JointSpec& spec = joint.spec;
+  switch (spec.type) {
+    case JointType::Revolute: {
+      const RevoluteJointDef& source = spec.revolute;
+      if (source.enable_spring && source.hertz > 0.0f) unsupported(joint, "a spring");
+      b2RevoluteJointDef def;
+      def.bodyA = a;
+      def.bodyB = b;
+      def.localAnchorA = to_b2(source.local_anchor_a);
+      def.localAnchorB = to_b2(source.local_anchor_b);
+      def.referenceAngle = source.reference_angle;
+      def.enableLimit = source.enable_limit;
+      def.lowerAngle = source.lower_angle;
+      def.upperAngle = source.upper_angle;
+      def.enableMotor = source.enable_motor;
+      def.motorSpeed = source.motor_speed;
+      def.maxMotorTorque = source.max_motor_torque;
+      def.collideConnected = source.collide_connected;
+      world.CreateJoint(&def);
+      return;
+    }
+    case JointType::Prismatic: {
+      const PrismaticJointDef& source = spec.prismatic;
+      if (source.enable_spring && source.hertz > 0.0f) unsupported(joint, "a spring");
+      b2PrismaticJointDef def;
+      def.bodyA = a;
+      def.bodyB = b;
+      def.localAnchorA = to_b2(source.local_anchor_a);
+      def.localAnchorB = to_b2(source.local_anchor_b);
+      def.localAxisA = to_b2(source.local_axis_a);
+      def.localAxisA.Normalize();
+      def.referenceAngle = source.reference_angle;
+      def.enableLimit = source.enable_limit;
+      def.lowerTranslation = source.lower_translation;
+      def.upperTranslation = source.upper_translation;
+      def.enableMotor = source.enable_motor;
+      def.motorSpeed = source.motor_speed;
+      def.maxMotorForce = source.max_motor_force;
+      def.collideConnected = source.collide_connected;
+      world.CreateJoint(&def);
+      return;
+    }
+    case JointType::Distance: {
+      // Box2D 2.4.1 holds the length rigidly only when minLength == maxLength (or without
+      // stiffness); a spring acts only when minLength < maxLength, between them.
+      const DistanceJointDef& source = spec.distance;
+      if (source.enable_motor) unsupported(joint, "a motor");
+      b2DistanceJointDef def;
+      def.bodyA = a;
+      def.bodyB = b;
+      def.localAnchorA = to_b2(source.local_anchor_a);
+      def.localAnchorB = to_b2(source.local_anchor_b);
+      def.length = source.length;
+      if (!source.enable_spring) {
+        def.minLength = def.maxLength = source.length;
+      } else {
+        def.minLength = source.enable_limit ? source.min_length : 0.0f;
+        def.maxLength = source.enable_limit ? source.max_length : FLT_MAX;
+        if (source.hertz > 0.0f) {
+          b2LinearStiffness(def.stiffness, def.damping, source.hertz, source.damping_ratio, a, b);
+        }
+      }
+      def.collideConnected = source.collide_connected;
+      world.CreateJoint(&def);
+      return;
+    }
+    case JointType::Weld: {
+      // 2.4.1's weld has an angular spring only.
+      const WeldJointDef& source = spec.weld;
+      if (source.linear_hertz > 0.0f) unsupported(joint, "a linear spring");
+      b2WeldJointDef def;
+      def.bodyA = a;
+      def.bodyB = b;
+      def.localAnchorA = to_b2(source.local_anchor_a);
+      def.localAnchorB = to_b2(source.local_anchor_b);
+      def.referenceAngle = source.reference_angle;
+      if (source.angular_hertz > 0.0f) {
+        b2AngularStiffness(def.stiffness, def.damping, source.angular_hertz,
+                           source.angular_damping_ratio, a, b);
+      }
+      def.collideConnected = source.collide_connected;
+      world.CreateJoint(&def);
+      return;
+    }
+    case JointType::Wheel: {
+      const WheelJointDef& source = spec.wheel;
+      b2WheelJointDef def;
+      def.bodyA = a;
+      def.bodyB = b;
+      def.localAnchorA = to_b2(source.local_anchor_a);
+      def.localAnchorB = to_b2(source.local_anchor_b);
+      def.localAxisA = to_b2(source.local_axis_a);
+      def.localAxisA.Normalize();
+      def.enableLimit = source.enable_limit;
+      def.lowerTranslation = source.lower_translation;
+      def.upperTranslation = source.upper_translation;
+      def.enableMotor = source.enable_motor;
+      def.motorSpeed = source.motor_speed;
+      def.maxMotorTorque = source.max_motor_torque;
+      def.stiffness = 0.0f;
+      def.damping = 0.0f;
+      if (source.enable_spring && source.hertz > 0.0f) {
+        b2LinearStiffness(def.stiffness, def.damping, source.hertz, source.damping_ratio, a, b);
+      }
+      def.collideConnected = source.collide_connected;
+      world.CreateJoint(&def);
+      return;
+    }
+    case JointType::Motor: {
+      const MotorJointDef& source = spec.motor;
+      b2MotorJointDef def;
+      def.bodyA = a;
+      def.bodyB = b;
+      def.linearOffset = to_b2(source.linear_offset);
+      def.angularOffset = source.angular_offset;
+      def.maxForce = source.max_force;
+      def.maxTorque = source.max_torque;
+      def.correctionFactor = source.correction_factor;
+      def.collideConnected = source.collide_connected;
+      world.CreateJoint(&def);
+      return;
+    }
+    case JointType::Mouse: {
+      // 2.4.1's mouse joint grabs B where its target is at creation: create it at the anchor,
+      // then move the target.
+      const MouseJointDef& source = spec.mouse;
+      b2MouseJointDef def;
+      def.bodyA = a;
+      def.bodyB = b;
+      def.target = b->GetWorldPoint(to_b2(source.local_anchor_b));
+      def.maxForce = source.max_force;
+      b2LinearStiffness(def.stiffness, def.damping, source.hertz, source.damping_ratio, a, b);
+      def.collideConnected = source.collide_connected;
+      static_cast<b2MouseJoint*>(world.CreateJoint(&def))->SetTarget(to_b2(source.target));
+      return;
+    }
+  }
+}
+
 class Box2dSimulation : public LabSimulation {
  public:
-  Box2dSimulation(const World& initial, const LabMethod& method)
+  Box2dSimulation(const World& initial, const std::vector<LabJoint>& joints,
+                  const LabMethod& method)
       : world_(b2Vec2(initial.settings().gravity.x, initial.settings().gravity.y)),
         method_(method),
         gravity_(initial.settings().gravity) {
@@ -84,7 +237,13 @@ class Box2dSimulation : public LabSimulation {
     }
     friction_on_ = settings.enable_friction;
     restitution_on_ = settings.enable_restitution;
+    for (const LabJoint& joint : joints) {
+      create_box2d_joint(world_, joint, bodies_.at(static_cast<std::size_t>(joint.body_a)),
+                         bodies_.at(static_cast<std::size_t>(joint.body_b)));
+    }
+    joints_ = joints;
   }
+  const std::vector<LabJoint>& joints() const override { return joints_; }
 
   void step() override {
     world_.Step(method_.time_step, method_.velocity_iterations, method_.position_iterations);
@@ -137,12 +296,15 @@ class Box2dSimulation : public LabSimulation {
   std::vector<Material> materials_;
   bool friction_on_ = true;
   bool restitution_on_ = true;
+  std::vector<LabJoint> joints_;
 };
 
 }  // namespace
 
-std::unique_ptr<LabSimulation> make_box2d_simulation(const World& initial, const LabMethod& method) {
-  return std::make_unique<Box2dSimulation>(initial, method);
+std::unique_ptr<LabSimulation> make_box2d_simulation(const World& initial,
+                                                     const std::vector<LabJoint>& joints,
+                                                     const LabMethod& method) {
+  return std::make_unique<Box2dSimulation>(initial, joints, method);
 }
 
 }  // namespace impulse2d::lab

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fcntl.h>
+#include <stdexcept>
+#include <string>
 
 #include "lab/lab_peers.h"
 #include "core/world.h"
@@ -29,9 +31,131 @@ cpSpace* new_quiet_space() {
   return space;
 }
 
+cpVect to_cp(vec2 v) { return cpv(v.x, v.y); }
+
+[[noreturn]] void unsupported(const LabJoint& joint, const std::string& what) {
+  throw std::runtime_error(std::string(demos::joint_type_name(joint.spec.type)) + " joint " +
+                           (joint.spec.origin.empty() ? "" : joint.spec.origin + " ") +
+                           (what.empty() ? "" : "with " + what + ": ") +
+                           "not supported by Chipmunk 7.0.3");
+}
+
+/// The reduced mass of the pair (a static or infinite body counts as infinitely heavy), as
+/// Box2D's b2LinearStiffness takes it.
+double reduced_mass(cpBody* a, cpBody* b) {
+  const double mass_a = cpBodyGetType(a) == CP_BODY_TYPE_DYNAMIC ? cpBodyGetMass(a) : 0.0;
+  const double mass_b = cpBodyGetType(b) == CP_BODY_TYPE_DYNAMIC ? cpBodyGetMass(b) : 0.0;
+  if (mass_a > 0.0 && mass_b > 0.0) return mass_a * mass_b / (mass_a + mass_b);
+  return mass_a > 0.0 ? mass_a : mass_b;
+}
+
+/// As `reduced_mass` for moments of inertia (an infinite moment counts as infinitely heavy).
+double reduced_moment(cpBody* a, cpBody* b) {
+  const auto moment = [](cpBody* body) {
+    const double value = cpBodyGetType(body) == CP_BODY_TYPE_DYNAMIC ? cpBodyGetMoment(body) : 0.0;
+    return std::isfinite(value) ? value : 0.0;
+  };
+  const double moment_a = moment(a), moment_b = moment(b);
+  if (moment_a > 0.0 && moment_b > 0.0) return moment_a * moment_b / (moment_a + moment_b);
+  return moment_a > 0.0 ? moment_a : moment_b;
+}
+
+/// The constraints that make `joint` in Chipmunk, added to `space` (and to `made`, which frees
+/// them). Chipmunk's anchors are from the body's centre of gravity, where the adapter puts its
+/// origin, so the local anchors carry over; a spring of f Hz and damping ratio z is the
+/// stiffness m w^2 and damping 2 m z w (w = 2 pi f) of the pair's reduced mass m.
+void create_chipmunk_joint(cpSpace* space, const LabJoint& joint, cpBody* a, cpBody* b,
+                           std::vector<cpConstraint*>& made) {
+  const demos::JointSpec& spec = joint.spec;
+  std::vector<cpConstraint*> parts;
+  const double two_pi = 6.283185307179586;
+  // Angular constraints between two bodies that cannot turn have nothing to act on (and
+  // Chipmunk's would divide by a zero inverse moment: NaN, then its debug build aborts).
+  const bool turns = reduced_moment(a, b) > 0.0;
+  switch (spec.type) {
+    case JointType::Revolute: {
+      const RevoluteJointDef& source = spec.revolute;
+      parts.push_back(cpPivotJointNew2(a, b, to_cp(source.local_anchor_a), to_cp(source.local_anchor_b)));
+      // Chipmunk's angles are absolute: the joint angle is angle_b - angle_a - reference.
+      if (source.enable_limit && turns) {
+        parts.push_back(cpRotaryLimitJointNew(a, b, source.lower_angle + source.reference_angle,
+                                              source.upper_angle + source.reference_angle));
+      }
+      if (source.enable_motor && turns) {
+        // cpSimpleMotor drives b.w - a.w towards -rate.
+        cpConstraint* motor = cpSimpleMotorNew(a, b, -source.motor_speed);
+        cpConstraintSetMaxForce(motor, source.max_motor_torque);
+        parts.push_back(motor);
+      }
+      if (source.enable_spring && source.hertz > 0.0f && turns) {
+        const double omega = two_pi * source.hertz;
+        const double moment = reduced_moment(a, b);
+        parts.push_back(cpDampedRotarySpringNew(a, b, source.reference_angle, moment * omega * omega,
+                                                2.0 * moment * source.damping_ratio * omega));
+      }
+      break;
+    }
+    case JointType::Prismatic: {
+      // A groove along the axis through A's anchor (its limits, else +-1 km) and a gear of
+      // ratio 1 keeping the relative angle.
+      const PrismaticJointDef& source = spec.prismatic;
+      if (source.enable_motor) unsupported(joint, "a motor");
+      if (source.enable_spring && source.hertz > 0.0f) unsupported(joint, "a spring");
+      const float length = glm::length(source.local_axis_a);
+      const vec2 axis = length > 0.0f ? source.local_axis_a / length : vec2(1.0f, 0.0f);
+      const float lower = source.enable_limit ? source.lower_translation : -1000.0f;
+      const float upper = source.enable_limit ? source.upper_translation : 1000.0f;
+      parts.push_back(cpGrooveJointNew(a, b, to_cp(source.local_anchor_a + lower * axis),
+                                       to_cp(source.local_anchor_a + upper * axis),
+                                       to_cp(source.local_anchor_b)));
+      if (turns) parts.push_back(cpGearJointNew(a, b, source.reference_angle, 1.0));
+      break;
+    }
+    case JointType::Distance: {
+      const DistanceJointDef& source = spec.distance;
+      if (source.enable_motor) unsupported(joint, "a motor");
+      const cpVect anchor_a = to_cp(source.local_anchor_a), anchor_b = to_cp(source.local_anchor_b);
+      if (!source.enable_spring) {
+        cpConstraint* pin = cpPinJointNew(a, b, anchor_a, anchor_b);
+        cpPinJointSetDist(pin, source.length);
+        parts.push_back(pin);
+      } else {
+        if (source.hertz > 0.0f) {
+          const double omega = two_pi * source.hertz;
+          const double mass = reduced_mass(a, b);
+          parts.push_back(cpDampedSpringNew(a, b, anchor_a, anchor_b, source.length,
+                                            mass * omega * omega,
+                                            2.0 * mass * source.damping_ratio * omega));
+        }
+        if (source.enable_limit) {
+          parts.push_back(cpSlideJointNew(a, b, anchor_a, anchor_b, source.min_length,
+                                          source.max_length));
+        }
+      }
+      break;
+    }
+    case JointType::Weld: {
+      const WeldJointDef& source = spec.weld;
+      if (source.linear_hertz > 0.0f || source.angular_hertz > 0.0f) unsupported(joint, "a spring");
+      parts.push_back(cpPivotJointNew2(a, b, to_cp(source.local_anchor_a), to_cp(source.local_anchor_b)));
+      if (turns) parts.push_back(cpGearJointNew(a, b, source.reference_angle, 1.0));
+      break;
+    }
+    case JointType::Wheel:
+    case JointType::Motor:
+    case JointType::Mouse: unsupported(joint, "");
+  }
+  for (cpConstraint* part : parts) {
+    cpConstraintSetCollideBodies(part, spec.collide_connected ? cpTrue : cpFalse);
+    cpSpaceAddConstraint(space, part);
+    made.push_back(part);
+  }
+}
+
 class ChipmunkSimulation : public LabSimulation {
  public:
-  ChipmunkSimulation(const World& initial, const LabMethod& method)
+  ChipmunkSimulation(const World& initial, const std::vector<LabJoint>& joints,
+                     const LabMethod& method)
       : space_(new_quiet_space()), method_(method), gravity_(initial.settings().gravity) {
     const WorldSettings& settings = initial.settings();
     cpSpaceSetGravity(space_, cpv(gravity_.x, gravity_.y));
@@ -83,18 +207,34 @@ class ChipmunkSimulation : public LabSimulation {
       dynamic_.push_back(source.type == BodyType::Dynamic);
       rotates_.push_back(source.inverse_inertia > 0.0f);
     }
+    try {
+      for (const LabJoint& joint : joints) {
+        create_chipmunk_joint(space_, joint, bodies_.at(static_cast<std::size_t>(joint.body_a)),
+                              bodies_.at(static_cast<std::size_t>(joint.body_b)), constraints_);
+      }
+    } catch (...) {
+      free_all();
+      throw;
+    }
+    joints_ = joints;
   }
-  ~ChipmunkSimulation() override {
-    // The space goes first (its teardown only wakes its bodies): removing shapes one at a time
-    // filters every cached arbiter for each, quadratic in the body count (5 s for 10,000 boxes).
-    cpSpaceFree(space_);
-    for (cpShape* shape : shapes_) cpShapeFree(shape);
-    for (cpBody* body : bodies_) cpBodyFree(body);
-  }
+  const std::vector<LabJoint>& joints() const override { return joints_; }
+  ~ChipmunkSimulation() override { free_all(); }
   ChipmunkSimulation(const ChipmunkSimulation&) = delete;
   ChipmunkSimulation& operator=(const ChipmunkSimulation&) = delete;
 
-  void step() override { cpSpaceStep(space_, method_.time_step); }
+  void step() override {
+    if (diverged_) return;
+    cpSpaceStep(space_, method_.time_step);
+    // Debian's debug build aborts the whole process when a body goes non-finite (a blown-up
+    // joint chain gets there within steps): a body beyond 1e6 m or 1e6 m/s counts as diverged
+    // and the run stops stepping, so the lab reports it instead of dying.
+    for (cpBody* body : bodies_) {
+      const cpVect p = cpBodyGetPosition(body), v = cpBodyGetVelocity(body);
+      if (!(cpvlength(p) < 1e6 && cpvlength(v) < 1e6)) diverged_ = true;
+    }
+  }
+  bool diverged() const override { return diverged_; }
   float time_step() const override { return method_.time_step; }
   vec2 gravity() const override { return gravity_; }
   int body_count() const override { return static_cast<int>(bodies_.size()); }
@@ -138,6 +278,15 @@ class ChipmunkSimulation : public LabSimulation {
   }
 
  private:
+  void free_all() {
+    // The space goes first (its teardown only wakes its bodies): removing shapes one at a time
+    // filters every cached arbiter for each, quadratic in the body count (5 s for 10,000 boxes).
+    cpSpaceFree(space_);
+    for (cpConstraint* constraint : constraints_) cpConstraintFree(constraint);
+    for (cpShape* shape : shapes_) cpShapeFree(shape);
+    for (cpBody* body : bodies_) cpBodyFree(body);
+  }
+
   cpSpace* space_;
   LabMethod method_;
   vec2 gravity_;
@@ -146,6 +295,9 @@ class ChipmunkSimulation : public LabSimulation {
   std::vector<Material> materials_;
   std::vector<bool> dynamic_;
   std::vector<bool> rotates_;
+  std::vector<cpConstraint*> constraints_;
+  bool diverged_ = false;  // a body left the finite range: stepping stopped
+  std::vector<LabJoint> joints_;
   bool friction_on_ = true;
   bool restitution_on_ = true;
 };
@@ -153,8 +305,9 @@ class ChipmunkSimulation : public LabSimulation {
 }  // namespace
 
 std::unique_ptr<LabSimulation> make_chipmunk_simulation(const World& initial,
+                                                        const std::vector<LabJoint>& joints,
                                                         const LabMethod& method) {
-  return std::make_unique<ChipmunkSimulation>(initial, method);
+  return std::make_unique<ChipmunkSimulation>(initial, joints, method);
 }
 
 }  // namespace impulse2d::lab

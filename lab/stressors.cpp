@@ -52,6 +52,32 @@ LabScenario stack(int height, double duration) {
                    {"bodies", bodies}});
 }
 
+/// A chain of 20 discs (radius 0.1 m, 0.25 m apart) hanging at rest from a static pivot on
+/// revolute joints, its last link `load` times as dense as the others; the joints' largest
+/// anchor separation over the run's last second (at rest) must stay within `threshold` metres.
+LabScenario hanging_chain(double load, double duration, double threshold) {
+  const json link = material(1.0, 0.0, 0.5, 0.3);
+  json bodies = json::array({{{"name", "pivot"}, {"type", "static"},
+                              {"shape", {{"type", "circle"}, {"radius", 0.05}}},
+                              {"position", {0.0, 0.0}}, {"material", material(0.0, 0.0, 0.5, 0.3)}}});
+  json joints = json::array();
+  for (int i = 0; i < 20; ++i) {
+    bodies.push_back({{"shape", {{"type", "circle"}, {"radius", 0.1}}},
+                      {"position", {0.0, -0.25 * (i + 1)}},
+                      {"material", i == 19 ? material(load, 0.0, 0.5, 0.3) : link}});
+    joints.push_back({{"type", "revolute"}, {"bodies", {i, i + 1}},
+                      {"anchor", {0.0, i == 0 ? 0.0 : -0.25 * i - 0.125}}});
+  }
+  return scenario("hanging_chain", duration,
+                  {{"kind", "joint_drift"}, {"unit", "m"}, {"threshold", threshold},
+                   {"after", duration - 1.0},
+                   {"meaning", "largest anchor separation of the chain's joints over the last second"}},
+                  {{"model", {{"shapes", {"circle"}}, {"rotation", true}, {"friction", false},
+                              {"restitution", false}}},
+                   {"bodies", bodies},
+                   {"joints", joints}});
+}
+
 }  // namespace
 
 std::vector<Stressor> stressors(bool quick) {
@@ -221,6 +247,34 @@ std::vector<Stressor> stressors(bool quick) {
     return pair;
   };
   list.push_back(angle);
+
+  // Joints: how heavy a load, and how coarse a step, a hanging chain's joints carry without
+  // coming apart by more than 1 cm (the drift of soft or iterated point constraints grows with
+  // the weight below a joint and with the time step).
+  Stressor load;
+  load.name = "chain_load";
+  load.question = "a hanging chain of 20 links whose last link is r times heavier keeps every "
+                  "joint within 1 cm (over the last of " + std::to_string(static_cast<int>(short_run)) + " s)";
+  load.unit = "x";
+  load.ladder = {1, 3, 10, 30, 100, 300, 1000, 3000, 10000};
+  load.scenarios = [short_run](double value) {
+    return std::vector<LabScenario>{hanging_chain(value, short_run, 0.01)};
+  };
+  list.push_back(load);
+
+  Stressor chain_step;
+  chain_step.name = "chain_time_step";
+  chain_step.question = "the hanging chain of 20 equal links keeps every joint within 1 cm (over "
+                        "the last of " + std::to_string(static_cast<int>(short_run)) +
+                        " s) at this time step";
+  chain_step.unit = "ms";
+  chain_step.ladder = {1000.0 / 240, 1000.0 / 120, 1000.0 / 60, 1000.0 / 30, 1000.0 / 20,
+                       1000.0 / 15, 1000.0 / 10};
+  chain_step.sets_time_step = true;
+  chain_step.scenarios = [short_run](double) {
+    return std::vector<LabScenario>{hanging_chain(1.0, short_run, 0.01)};
+  };
+  list.push_back(chain_step);
   return list;
 }
 

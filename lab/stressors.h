@@ -2,7 +2,7 @@
 /// @file stressors.h
 /// The stressors of the stability map: each is a family of lab scenarios indexed by one value
 /// (stack height, mass ratio, bullet speed, time step, initial overlap, elastic pile size,
-/// friction ramp angle), swept until a method breaks.
+/// friction ramp angle, a hanging chain's load and its time step), swept until a method breaks.
 
 #include <functional>
 #include <string>
