@@ -38,38 +38,14 @@ std::vector<LabJoint> scene_joints(const demos::Scene& scene, const World& world
       throw demos::UsageError(scene.name + ": " + spec.origin + ": a body of the joint is not in the world");
     }
     LabJoint joint;
-    joint.spec = spec;
     joint.body_a = spec.body_a;
     joint.body_b = spec.body_b;
     const BodyView a = world.body(bodies[static_cast<std::size_t>(spec.body_a)]);
     const BodyView b = world.body(bodies[static_cast<std::size_t>(spec.body_b)]);
-    // As demos::create_scene_joint: world anchors and axis into each body's frame, the relative
-    // angle now as joint angle 0, a distance joint's length from its anchors when not given.
-    joint.local_anchor_a = a.transform.apply_inverse(spec.anchor_a);
-    joint.local_anchor_b = b.transform.apply_inverse(spec.anchor_b);
-    const float axis_length = glm::length(spec.axis);
-    const vec2 axis = axis_length > 0.0f ? spec.axis / axis_length : vec2(0.0f, 0.0f);
-    const vec2 local_axis = a.transform.rotation.inverse_rotate(axis);
-    const float relative_angle = b.angle - a.angle;
-    demos::JointSpec& def = joint.spec;
-    def.revolute.local_anchor_a = def.prismatic.local_anchor_a = def.distance.local_anchor_a =
-        def.weld.local_anchor_a = def.wheel.local_anchor_a = joint.local_anchor_a;
-    def.revolute.local_anchor_b = def.prismatic.local_anchor_b = def.distance.local_anchor_b =
-        def.weld.local_anchor_b = def.wheel.local_anchor_b = def.mouse.local_anchor_b =
-            joint.local_anchor_b;
-    if (spec.type == JointType::Mouse && spec.anchor_b_is_center) {
-      def.mouse.local_anchor_b = joint.local_anchor_b = vec2(0.0f, 0.0f);
-    }
-    def.prismatic.local_axis_a = def.wheel.local_axis_a = local_axis;
-    def.revolute.reference_angle = def.prismatic.reference_angle = def.weld.reference_angle =
-        relative_angle;
-    if (!spec.has_length) {
-      def.distance.length = std::max(glm::length(spec.anchor_b - spec.anchor_a), 0.005f);
-    }
-    def.revolute.collide_connected = def.prismatic.collide_connected =
-        def.distance.collide_connected = def.weld.collide_connected =
-            def.wheel.collide_connected = def.motor.collide_connected =
-                def.mouse.collide_connected = spec.collide_connected;
+    joint.spec = demos::complete_joint_spec(spec, a, b);  // as the scene run created it
+    joint.local_anchor_a = joint.spec.revolute.local_anchor_a;  // every anchored type has the same
+    joint.local_anchor_b = spec.type == JointType::Mouse ? joint.spec.mouse.local_anchor_b
+                                                          : joint.spec.revolute.local_anchor_b;
     joints.push_back(joint);
   }
   return joints;

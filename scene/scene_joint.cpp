@@ -27,76 +27,55 @@ vec2 unit_or_zero(vec2 v) {
   return length > 0.0f ? v / length : vec2(0.0f, 0.0f);
 }
 
-// The scene's world anchors, axis and current relative angle in the bodies' frames.
-struct Placement {
-  vec2 local_a;          // A's anchor, A's frame
-  vec2 local_b;          // B's anchor, B's frame
-  vec2 local_axis;       // unit axis, A's frame
-  float relative_angle;  // B's angle minus A's, radians
-};
-
+// Creates `def` between `a` and `b`.
 template <class Def>
-void set_anchors(Def& def, const Placement& placement) {
-  def.local_anchor_a = placement.local_a;
-  def.local_anchor_b = placement.local_b;
-}
-
-// Creates `def` between `a` and `b` with the spec's collide_connected.
-template <class Def>
-JointId create(World& world, Def def, BodyId a, BodyId b, const JointSpec& spec) {
+JointId create(World& world, Def def, BodyId a, BodyId b) {
   def.body_a = a;
   def.body_b = b;
-  def.collide_connected = spec.collide_connected;
   return world.create_joint(def);
 }
 
 }  // namespace
 
+JointSpec complete_joint_spec(const JointSpec& spec, const BodyView& a, const BodyView& b) {
+  JointSpec done = spec;
+  const vec2 local_a = a.transform.apply_inverse(spec.anchor_a);
+  const vec2 local_b = b.transform.apply_inverse(spec.anchor_b);
+  const vec2 local_axis = a.transform.rotation.inverse_rotate(unit_or_zero(spec.axis));
+  const float relative_angle = b.angle - a.angle;
+  const auto anchors = [&](auto& def) {
+    def.local_anchor_a = local_a;
+    def.local_anchor_b = local_b;
+  };
+  anchors(done.revolute);
+  anchors(done.prismatic);
+  anchors(done.distance);
+  anchors(done.weld);
+  anchors(done.wheel);
+  done.mouse.local_anchor_b = spec.anchor_b_is_center ? vec2(0.0f, 0.0f) : local_b;
+  done.prismatic.local_axis_a = done.wheel.local_axis_a = local_axis;
+  done.revolute.reference_angle = done.prismatic.reference_angle = done.weld.reference_angle =
+      relative_angle;
+  if (!spec.has_length) {
+    done.distance.length = std::max(glm::length(spec.anchor_b - spec.anchor_a), 0.005f);
+  }
+  done.revolute.collide_connected = done.prismatic.collide_connected =
+      done.distance.collide_connected = done.weld.collide_connected =
+          done.wheel.collide_connected = done.motor.collide_connected =
+              done.mouse.collide_connected = spec.collide_connected;
+  return done;
+}
+
 JointId create_scene_joint(World& world, const JointSpec& spec, BodyId a, BodyId b) {
-  const BodyView body_a = world.body(a);
-  const BodyView body_b = world.body(b);
-  const Placement placement{body_a.transform.apply_inverse(spec.anchor_a),
-                            body_b.transform.apply_inverse(spec.anchor_b),
-                            body_a.transform.rotation.inverse_rotate(unit_or_zero(spec.axis)),
-                            body_b.angle - body_a.angle};
+  const JointSpec done = complete_joint_spec(spec, world.body(a), world.body(b));
   switch (spec.type) {
-    case JointType::Revolute: {
-      RevoluteJointDef def = spec.revolute;
-      set_anchors(def, placement);
-      def.reference_angle = placement.relative_angle;
-      return create(world, def, a, b, spec);
-    }
-    case JointType::Prismatic: {
-      PrismaticJointDef def = spec.prismatic;
-      set_anchors(def, placement);
-      def.local_axis_a = placement.local_axis;
-      def.reference_angle = placement.relative_angle;
-      return create(world, def, a, b, spec);
-    }
-    case JointType::Distance: {
-      DistanceJointDef def = spec.distance;
-      set_anchors(def, placement);
-      if (!spec.has_length) def.length = std::max(glm::length(spec.anchor_b - spec.anchor_a), 0.005f);
-      return create(world, def, a, b, spec);
-    }
-    case JointType::Weld: {
-      WeldJointDef def = spec.weld;
-      set_anchors(def, placement);
-      def.reference_angle = placement.relative_angle;
-      return create(world, def, a, b, spec);
-    }
-    case JointType::Wheel: {
-      WheelJointDef def = spec.wheel;
-      set_anchors(def, placement);
-      def.local_axis_a = placement.local_axis;
-      return create(world, def, a, b, spec);
-    }
-    case JointType::Motor: return create(world, spec.motor, a, b, spec);
-    case JointType::Mouse: {
-      MouseJointDef def = spec.mouse;
-      def.local_anchor_b = spec.anchor_b_is_center ? vec2(0.0f, 0.0f) : placement.local_b;
-      return create(world, def, a, b, spec);
-    }
+    case JointType::Revolute: return create(world, done.revolute, a, b);
+    case JointType::Prismatic: return create(world, done.prismatic, a, b);
+    case JointType::Distance: return create(world, done.distance, a, b);
+    case JointType::Weld: return create(world, done.weld, a, b);
+    case JointType::Wheel: return create(world, done.wheel, a, b);
+    case JointType::Motor: return create(world, done.motor, a, b);
+    case JointType::Mouse: return create(world, done.mouse, a, b);
   }
   return JointId{};
 }

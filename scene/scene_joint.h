@@ -42,10 +42,14 @@ struct JointSpec {
 /// "revolute", "prismatic", ... as scene files spell the type.
 const char* joint_type_name(JointType type);
 
-/// Creates `spec` between the living bodies `a` and `b` of `world`: local anchors and axes
-/// from the bodies' current poses, reference angles from their current angles (so the
-/// bodies keep their relative angle), a distance joint's length from the anchors when not
-/// given. Throws `Error` as `World::create_joint` does.
+/// `spec` with the definition of its type completed for bodies standing as `a` and `b`: local
+/// anchors and axes from the bodies' poses, reference angles from their angles (so the bodies
+/// keep their relative angle), a distance joint's length from the anchors when not given,
+/// `collide_connected`. The body handles are left to the caller.
+JointSpec complete_joint_spec(const JointSpec& spec, const BodyView& a, const BodyView& b);
+
+/// Creates `spec` between the living bodies `a` and `b` of `world`, completed by
+/// `complete_joint_spec` from their current poses. Throws `Error` as `World::create_joint` does.
 JointId create_scene_joint(World& world, const JointSpec& spec, BodyId a, BodyId b);
 
 }  // namespace impulse2d::demos

@@ -25,13 +25,16 @@ SolverContext resolve_solver_context(const WorldSettings& settings) {
   const float hertz = std::min(settings.contact_hertz, 0.25f / context.substep);
   context.dynamic_softness = make_soft(hertz, settings.contact_damping_ratio, context.substep);
   context.static_softness = make_soft(2.0f * hertz, settings.contact_damping_ratio, context.substep);
-  // Joints' rigid parts: four times the contact's stiffness, at most half the sub-step rate
-  // (120 Hz at the soft step's default 1/240 s sub-steps; 30 Hz for the one-step methods, whose
-  // contact hertz is capped at 15). A soft rigid part is a spring of m_eff (2 pi f)^2, so a
-  // load F stretches it F / (m_eff (2 pi f)^2): a 20-link chain's top joint 0.66 mm at rest at
-  // 120 Hz (2.6 mm at Box2D v3's 60 Hz). Stiffer than half the sub-step rate is unstable; at it,
-  // stable with the soft step's joint passes (soft_step_solver.cpp).
-  const float joint_hertz = std::min(4.0f * hertz, 0.5f / context.substep);
+  // Joints' rigid parts. A soft rigid part is a spring of m_eff (2 pi f)^2, so a load F
+  // stretches it F / (m_eff (2 pi f)^2). The soft step, whose joints get several passes
+  // (soft_step_solver.cpp), makes them four times as stiff as the contacts, at most half the
+  // sub-step rate (120 Hz at its 1/240 s sub-steps: a 20-link chain's top joint 0.66 mm at
+  // rest, 2.6 mm at Box2D v3's 60 Hz); stiffer than that is unstable. The other methods solve
+  // joints once a pass and keep Box2D v3's twice the contact hertz (30 Hz at one step a frame;
+  // at 120 Hz with four sub-steps of two passes a chain under a 15:1 load already opens 1 cm).
+  const float joint_hertz = settings.solver == SolverMethod::SoftStep
+                                ? std::min(4.0f * hertz, 0.5f / context.substep)
+                                : 2.0f * hertz;
   context.joint_softness = make_soft(joint_hertz, 2.0f, context.substep);
   context.push_max_speed = settings.contact_push_max_speed;
   context.solver_lanes = settings.solver_lanes;
