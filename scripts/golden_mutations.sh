@@ -47,7 +47,8 @@ mutations=(
   "rename|refactor|core/shape.cpp|s/twice_triangle_area/doubled_triangle_area/g|polygon mass: a local variable renamed"
   "commute|refactor|core/shape.cpp|s/mass_data.area = pi \* radius \* radius;/mass_data.area = radius * pi * radius;/|circle area: a product's operands commuted (exact in IEEE arithmetic)"
   "fan-order|reordering|core/shape.cpp|/Triangle fan from vertex 0/,/second_moment +=/s/for (int i = 0; i < count; ++i) {/for (int i = count - 1; i >= 0; --i) {/|polygon mass: the triangle fan summed in the opposite order"
-  "box-inertia|reordering|core/shape.cpp|s#mass_data.mass \* (width \* width + height \* height) / 12.0f;#mass_data.mass / 12.0f * (width * width + height * height);#|box inertia: m (w^2 + h^2) / 12 computed as m / 12 (w^2 + h^2)"
+  "circle-inertia|reordering|core/shape.cpp|s/= 0.5f \* mass_data.mass \* radius \* radius;/= 0.5f * mass_data.mass * (radius * radius);/|circle inertia: ((m / 2) r) r computed as (m / 2) (r r)"
+  "box-inertia|reordering|core/shape.cpp|s#mass_data.mass \* (width \* width + height \* height) / 12.0f;#mass_data.mass / 12.0f * (width * width + height * height);#|box inertia, which no step uses (axis-aligned boxes never rotate): m (w^2 + h^2) / 12 computed as m / 12 (w^2 + h^2)"
 )
 
 # The classes counted in their own column, in docs/golden.md's words; any other class (and a
