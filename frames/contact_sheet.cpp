@@ -158,22 +158,20 @@ std::pair<int, int> contact_sheet_size(int frame_count, const ContactSheetOption
   return {static_cast<int>(width64), static_cast<int>(height64)};
 }
 
-std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
-                                        const ContactSheetOptions& options,
-                                        const std::filesystem::path& output) {
-  const int count = static_cast<int>(plan.frames.size());
-  // Plain variables, not a structured binding: the sheet's drawing lambda captures them, which
-  // C++17 allows for variables only (Clang refuses a captured binding).
-  const std::pair<int, int> size = contact_sheet_size(count, options);
-  const int width = size.first;
-  const int height = size.second;
-  const int columns = std::max(1, std::min(options.columns, count));
+namespace {
 
+/// Renders `source`'s tiles (stepping its run forward once) into `frames`, with their labels
+/// (the scene's name first when `name_in_label`).
+void render_tiles(const SheetSource& source, const ContactSheetOptions& options,
+                  bool name_in_label, std::vector<render::Frame>& frames,
+                  std::vector<std::string>& labels) {
+  SceneRun& run = *source.run;
+  ContactSheetOptions own = options;
+  own.draw = source.draw;
   render::FrameRenderer tiles(options.tile_width, options.tile_height);
-  const render::Camera camera = centred_camera(run, plan, options);
-  render::FrameOptions frame_options = view_frame_options(run, options.draw, options.theme);
+  const render::Camera camera = centred_camera(run, source.plan, own);
+  render::FrameOptions frame_options = view_frame_options(run, source.draw, options.theme);
   frame_options.show_hud = false;  // the label strip says it
-  const render::ThemePalette palette = render::theme_palette(options.theme);
   constexpr std::size_t trail_points = 240;  // 4 s of path at 60 steps per second
   render::MotionTrails trails(trail_points);
   if (!options.trails.empty()) {
@@ -182,26 +180,57 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
   }
   // A tile shows the events of the steps since the tile before it.
   render::EventMarks events;
-  const bool record_events = (options.draw.flags & draw_events) != 0;
+  const bool record_events = (source.draw.flags & draw_events) != 0;
   if (record_events) frame_options.events = &events;
-
-  // Render every tile first (the simulation runs forward once), remembering its label.
-  std::vector<render::Frame> frames;
-  std::vector<std::string> labels;
-  for (const std::int64_t step : plan.frames) {
+  bool first = true;
+  for (const std::int64_t step : source.plan.frames) {
     while (run.step_count() < step) {
       run.step();
       if (!options.trails.empty()) record_trails(options.trails, run.world(), trails);
       if (record_events) events.record(run.world(), run.step_count());
     }
-    frame_options.show_legend = frames.empty() && run.scene().view.show_legend;  // on the first tile
+    frame_options.show_legend = first && run.scene().view.show_legend;  // on its first tile
+    first = false;
     render::HudInfo hud;
     hud.step = step;
     update_view_frame(run, frame_options, hud);
     frames.push_back(tiles.render(run.world(), frame_camera(camera, run), frame_options, hud));
     events.clear();
-    labels.push_back(step_label(step, run.world().time()));
+    labels.push_back(name_in_label ? run.scene().name + "  step " + std::to_string(step)
+                                   : step_label(step, run.world().time()));
   }
+}
+
+}  // namespace
+
+std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
+                                        const ContactSheetOptions& options,
+                                        const std::filesystem::path& output) {
+  return write_contact_sheet({SheetSource{&run, plan, options.draw}}, options, output);
+}
+
+std::pair<int, int> write_contact_sheet(const std::vector<SheetSource>& sources,
+                                        const ContactSheetOptions& options,
+                                        const std::filesystem::path& output) {
+  int count = 0;
+  for (const SheetSource& source : sources) count += static_cast<int>(source.plan.frames.size());
+  // Plain variables, not a structured binding: the sheet's drawing lambda captures them, which
+  // C++17 allows for variables only (Clang refuses a captured binding).
+  const std::pair<int, int> size = contact_sheet_size(count, options);
+  const int width = size.first;
+  const int height = size.second;
+  const int columns = std::max(1, std::min(options.columns, count));
+  const render::ThemePalette palette = render::theme_palette(options.theme);
+
+  // Render every tile first (each simulation runs forward once), remembering its label.
+  std::vector<render::Frame> frames;
+  std::vector<std::string> labels;
+  for (const SheetSource& source : sources) {
+    render_tiles(source, options, sources.size() > 1, frames, labels);
+  }
+  const std::string title = sources.size() == 1
+                                ? scene_title(sources.front().run->scene())
+                                : std::to_string(sources.size()) + " scenes";
 
   // Background, title, borders and labels in one pass over the whole sheet, then the tiles
   // inside their borders.
@@ -214,7 +243,7 @@ std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
         draw.draw_screen_rect({0.0f, 0.0f},
                               {static_cast<float>(width), static_cast<float>(title_height)},
                               palette.hud_panel);
-        draw.draw_screen_text({8.0f, 6.0f}, scene_title(run.scene()), palette.hud_text, text_scale);
+        draw.draw_screen_text({8.0f, 6.0f}, title, palette.hud_text, text_scale);
         draw.draw_screen_text({8.0f, 30.0f}, options.caption, palette.hud_text, 1);
         for (int i = 0; i < count; ++i) {
           const auto [x, y] = tile_origin(i, columns, options);

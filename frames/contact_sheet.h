@@ -35,12 +35,27 @@ struct ContactSheetOptions {
 /// run_limits.h (naming the sizes and what to change) — before anything is rendered.
 std::pair<int, int> contact_sheet_size(int frame_count, const ContactSheetOptions& options);
 
+/// One scene's part of a contact sheet: its run (built, not yet stepped), the steps shown and
+/// the overlays they are drawn with.
+struct SheetSource {
+  SceneRun* run = nullptr;  ///< stepped forward through `plan` while the tiles are drawn
+  FramePlan plan;           ///< the steps shown, one tile each
+  DebugDrawOptions draw;    ///< overlay flags and arrow scales of its tiles
+};
+
 /// Steps `run` through `plan`, renders each planned step as a tile and writes the sheet to
 /// `output` (atomically; a directory it had to create is removed again on failure). The
 /// tiles share one camera: the scene's, moved vertically so that what it shows of the bodies
 /// over the planned frames is centred (found on a second run of the same scene, stepped
 /// first). Returns the sheet's size in pixels as {width, height}.
 std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
+                                        const ContactSheetOptions& options,
+                                        const std::filesystem::path& output);
+
+/// As above for several scenes on one sheet, their tiles in order (each scene's with its own
+/// camera, centred as above, and overlays; `options.draw` is not used): each label names its
+/// scene, the title counts them.
+std::pair<int, int> write_contact_sheet(const std::vector<SheetSource>& sources,
                                         const ContactSheetOptions& options,
                                         const std::filesystem::path& output);
 

@@ -36,6 +36,8 @@ run "$cli" sheet bullet --count 4 --tile 400x260 -o docs/contact_sheet_bullet.pn
 run "$cli" sheet shape_pairs --frames 24:24,60:60 --columns 2 --tile 640x480 \
   --overlays points,normals,normal_impulses,penetration,ids --arrow-scale 4 --highlight 4 \
   -o docs/overlays_readable.png --quiet
+run "$cli" sheet --scenes pendulum,double_pendulum,rope_bridge,car,ragdolls,catapult,heavy_chain,mouse_drag \
+  --frames 120 --tile 320x240 --overlays joints -o docs/images/joint_scenes.png --quiet
 run "$cli" sheet platformer -f 40,150,190,214,350,455,486,556,760,1000,1040,1100 --columns 3 \
   --tile 480x300 -o docs/images/platformer_contact_sheet.png --quiet
 run "$build_dir/bench/render_example" docs/overlays.png

@@ -41,6 +41,28 @@ TEST_F(CliTest, SheetTilesHaveBordersAndGutters) {
   EXPECT_NE(pixel(sheet, 30, top - 1), background);            // its top border
 }
 
+// --scenes: several scenes' tiles on one sheet, in the order given, each scene's own tiles the
+// same as on its own sheet.
+TEST_F(CliTest, SheetOfSeveralScenesTilesThemInOrder) {
+  const Result both = run("sheet --scenes stack,pendulum --frames 30 --tile 64x48 -o both.png");
+  ASSERT_EQ(both.status, 0) << both.err;
+  EXPECT_NE(both.out.find("of 2 frames of 2 scenes"), std::string::npos) << both.out;
+  const impulse2d::image::Image sheet = impulse2d::image::load_png(dir_ / "both.png");
+  ASSERT_EQ(sheet.width, 2 * (64 + 10) + 10);
+  ASSERT_EQ(sheet.height, 50 + 48 + 22 + 10 + 10);
+  ASSERT_EQ(run("sheet stack --frames 30 --tile 64x48 -o stack.png").status, 0);
+  ASSERT_EQ(run("sheet pendulum --frames 30 --tile 64x48 -o pendulum.png").status, 0);
+  const impulse2d::image::Image stack = impulse2d::image::load_png(dir_ / "stack.png");
+  const impulse2d::image::Image pendulum = impulse2d::image::load_png(dir_ / "pendulum.png");
+  const int top = 50 + 10;
+  for (int y = 0; y < 48; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      ASSERT_EQ(pixel(sheet, 10 + x, top + y), pixel(stack, 10 + x, top + y)) << x << "," << y;
+      ASSERT_EQ(pixel(sheet, 10 + 74 + x, top + y), pixel(pendulum, 10 + x, top + y)) << x << "," << y;
+    }
+  }
+}
+
 TEST_F(CliTest, SheetTrailsAddTheBodiesPaths) {
   ASSERT_EQ(run("sheet tutorial --frames 120 --tile 160x120 -o plain.png").status, 0);
   const Result trails = run("sheet tutorial --frames 120 --tile 160x120 --trails dynamic -o t.png");
