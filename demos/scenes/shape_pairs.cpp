@@ -21,7 +21,7 @@ Shape shape_of_kind(ShapeType kind) {
     case ShapeType::Box:
       return make_box({0.6f, 0.45f});
     case ShapeType::Polygon:
-    case ShapeType::Capsule:  // not in this 3x3 grid of the tutorial's kinds
+    case ShapeType::Capsule:  // not in this 3x3 grid of the tutorial's kinds (see `capsules`)
     case ShapeType::Segment:
       break;
   }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace impulse2d {
@@ -190,6 +191,38 @@ TEST(NewShapesSnapshot, RestoredWorldContinuesBitForBit) {
     restored.step();
   }
   EXPECT_EQ(restored.state_hash(), world.state_hash());
+}
+
+// World queries over the new shapes: a ray stops on a capsule's cap and on a segment; a
+// capsule overlaps a segment floor; a rounded box cast down meets the floor at its rounding.
+TEST(NewShapesQueries, RaysOverlapsAndCasts) {
+  World world;
+  BodyDef def;
+  def.type = BodyType::Static;
+  const BodyId floor = world.create_body(def, make_segment({-10.0f, 0.0f}, {10.0f, 0.0f}));
+  def.position = {3.0f, 2.0f};
+  const BodyId capsule = world.create_body(def, make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f));
+  const std::optional<RayHit> cap = world.raycast_closest({6.0f, 2.0f}, {-6.0f, 0.0f}, QueryFilter{});
+  ASSERT_TRUE(cap.has_value());
+  EXPECT_EQ(cap->body, capsule);
+  EXPECT_NEAR(cap->point.x, 4.5f, 1e-5f);
+  const std::optional<RayHit> down = world.raycast_closest({-2.0f, 3.0f}, {0.0f, -6.0f}, QueryFilter{});
+  ASSERT_TRUE(down.has_value());
+  EXPECT_EQ(down->body, floor);
+  EXPECT_NEAR(down->fraction, 0.5f, 1e-6f);
+  EXPECT_NEAR(down->normal.y, 1.0f, 1e-6f);
+  BodyId found[4];
+  const Shape probe = make_capsule({-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f);
+  ASSERT_EQ(world.overlap_shape(probe, Transform{{-3.0f, 0.2f}, Rotation{}}, found, 4), 1);
+  EXPECT_EQ(found[0], floor);
+  EXPECT_EQ(world.overlap_shape(probe, Transform{{-3.0f, 0.3f}, Rotation{}}, found, 4), 0);
+  const vec2 box[4] = {{-0.5f, -0.25f}, {0.5f, -0.25f}, {0.5f, 0.25f}, {-0.5f, 0.25f}};
+  const std::optional<ShapeCastHit> cast =
+      world.cast_shape(make_rounded_polygon(box, 4, 0.1f), Transform{{-4.0f, 2.0f}, Rotation{}}, {0.0f, -3.0f});
+  ASSERT_TRUE(cast.has_value());
+  EXPECT_EQ(cast->body, floor);
+  // The rounded bottom (0.25 + 0.1 below the centre) meets y = 0 after 2 - 0.35 = 1.65 m.
+  EXPECT_NEAR(cast->fraction, 1.65f / 3.0f, 1e-5f);
 }
 
 }  // namespace
