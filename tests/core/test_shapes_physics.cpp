@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -67,6 +68,37 @@ TEST(CapsulePhysics, LyingCapsuleRestsAtHeightR) {
   EXPECT_LT(std::fabs(body.transform.position.y - radius), world.settings().slop);
   EXPECT_NEAR(body.angle, 0.0f, 1e-4f);  // still lying flat
   EXPECT_LT(std::fabs(body.linear_velocity.y), 1e-4f);
+}
+
+// A capsule stood on end, tipped by 0.05 rad, topples and comes to rest lying at height r; its
+// energy (kinetic plus potential, above the lying rest) never grows beyond the start's.
+TEST(CapsulePhysics, StoodOnEndTopplesAndComesToRestLying) {
+  const float radius = 0.2f, half_length = 0.6f;
+  World world;
+  add_ground(world, surface(0.6f, 0.5f));
+  BodyDef def;
+  def.material = surface(0.6f, 0.5f);
+  def.angle = 0.05f;
+  def.position = {-std::sin(0.05f) * (half_length + radius), std::cos(0.05f) * (half_length + radius)};
+  const BodyId id = world.create_body(def, make_capsule({0.0f, -half_length}, {0.0f, half_length}, radius));
+  auto energy = [&] {
+    const BodyView body = world.body(id);
+    return 0.5f * body.mass * length_squared(body.linear_velocity) +
+           0.5f * body.inertia * body.angular_velocity * body.angular_velocity +
+           body.mass * g * (body.transform.position.y - radius);
+  };
+  const float start = energy();
+  float highest = start;
+  for (int i = 0; i < 300; ++i) {
+    world.step();
+    highest = std::max(highest, energy());
+  }
+  EXPECT_LE(highest, start * 1.001f);
+  const BodyView body = world.body(id);
+  EXPECT_NEAR(std::fabs(std::remainder(body.angle, pi)), 0.5f * pi, 1e-3f);  // lying
+  EXPECT_NEAR(body.transform.position.y, radius, world.settings().slop);
+  EXPECT_LT(std::sqrt(length_squared(body.linear_velocity)), 1e-3f);
+  EXPECT_LT(std::fabs(body.angular_velocity), 1e-3f);
 }
 
 // A static slab tilted by theta whose top face passes through the origin, and a capsule lying
