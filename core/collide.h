@@ -41,6 +41,21 @@ Manifold collide_polygons(const Polygon& a, const Transform& xa, const Polygon& 
 Manifold collide_box_polygon(const Box& a, const Transform& xa, const Polygon& b, const Transform& xb,
                   float margin = 0.0f);
 
+/// Any two of box, polygon (rounded or not), capsule and segment: each is a convex outline grown
+/// by a radius (a box's and a sharp polygon's 0, a capsule a 2-vertex outline with its radius,
+/// a segment one with radius 0). Separating axis test on the outlines, reference/incident face
+/// clipping with both radii in the depths, and, when the outlines are apart and nearest at a
+/// corner, one point along the line between the nearest points (a circle's normal). Neither
+/// shape may be a circle. The jump table keeps the older functions above for sharp polygons
+/// and boxes, so this serves only pairs with a rounded polygon, capsule or segment in them.
+Manifold collide_rounded(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                         float margin = 0.0f);
+
+/// A box, polygon (rounded or not), capsule or segment A vs circle B: the circle's centre
+/// against A's bare outline, with both radii in the depth.
+Manifold collide_rounded_circle(const Shape& a, const Transform& xa, const Circle& b,
+                                const Transform& xb, float margin = 0.0f);
+
 /// Signature of one entry of the collision jump table.
 using CollideFunction = Manifold (*)(const Shape& a, const Transform& xa, const Shape& b,
                                      const Transform& xb, float margin);

@@ -150,6 +150,127 @@ void validate_density(const char* function, float density) {
   }
 }
 
+void validate_rounding(const char* function, float rounding) {
+  if (!std::isfinite(rounding) || rounding < 0.0f) {
+    fail(function, "radius must be finite and >= 0, got " + format_number(rounding));
+  }
+}
+
+/// Checks two end points of a capsule or segment: finite, and apart by more than the polygon
+/// tolerance times their size (so the direction between them is well defined).
+void validate_ends(const char* function, const char* first, vec2 p1, const char* second, vec2 p2,
+                   const char* too_close) {
+  if (!is_finite(p1)) fail(function, std::string(first) + " " + format_vertex(p1) + " is not finite");
+  if (!is_finite(p2)) fail(function, std::string(second) + " " + format_vertex(p2) + " is not finite");
+  const float size = std::max(std::max(std::fabs(p1.x), std::fabs(p1.y)),
+                              std::max(std::fabs(p2.x), std::fabs(p2.y)));
+  if (!(glm::length(p2 - p1) > polygon_tolerance * std::max(size, 1.0f))) {
+    fail(function, std::string(first) + " and " + second + " " + format_vertex(p1) + " are " +
+                       too_close);
+  }
+}
+
+/// Capsule mass properties (centroid: the midpoint of the centres). The solid is a rectangle
+/// L x 2r (L = |center2 - center1|) and two half discs, which together have a disc's area
+/// pi r^2. Rectangle: I = m_rect (L^2 + 4 r^2) / 12. Each half disc (mass m_disc / 2) has its
+/// centroid lc = 4 r / (3 pi) from its flat side, so about its own centroid
+/// I = (m_disc / 2) (r^2 / 2 - lc^2); moved out to h + lc from the capsule's centroid
+/// (h = L / 2) it adds (m_disc / 2) (h + lc)^2. Both: m_disc (r^2 / 2 + h^2 + 2 h lc).
+MassData capsule_mass(const Capsule& capsule, float density) {
+  const float radius = capsule.radius;
+  const float length = glm::length(capsule.center2 - capsule.center1);
+  const float disc_area = pi * radius * radius;
+  const float rectangle_area = 2.0f * radius * length;
+  const float half_length = 0.5f * length;
+  const float cap_centroid = 4.0f * radius / (3.0f * pi);
+  MassData mass_data;
+  mass_data.area = disc_area + rectangle_area;
+  mass_data.mass = density * mass_data.area;
+  mass_data.centroid = 0.5f * (capsule.center1 + capsule.center2);
+  const float disc_inertia =
+      density * disc_area *
+      (0.5f * radius * radius + half_length * half_length + 2.0f * half_length * cap_centroid);
+  const float rectangle_inertia =
+      density * rectangle_area * (length * length + 4.0f * radius * radius) / 12.0f;
+  mass_data.inertia = disc_inertia + rectangle_inertia;
+  return mass_data;
+}
+
+/// Mass properties of a convex polygon (CCW, 3.. vertices, in any coordinates) swollen by
+/// `rounding` > 0. The solid splits into three kinds of piece, each summed as an area, a first
+/// moment and a second (polar) moment about the coordinate origin:
+///  - the core polygon: the triangle fan of `compute_polygon_mass`;
+///  - one strip per edge, the rectangle between the edge and the edge pushed out by r along its
+///    outward normal n: the fan formula on the quad (p1, p1 + r n, p2 + r n, p2);
+///  - one circular sector per vertex v, of radius r and angle theta from the previous edge's
+///    normal to the next one's (the angles add up to 2 pi: the sectors make one disc). About
+///    its apex a sector has area theta r^2 / 2, first moment (2/3) r^3 sin(theta / 2) along
+///    its bisector b, and polar moment theta r^4 / 4; moved to the origin
+///    (J_o = J_v + A |v|^2 + 2 v . (first moment about v)).
+/// Then the centroid is the first moment over the area and the inertia the polar moment moved
+/// to the centroid (parallel axis). Sums are taken relative to vertex 0 for precision.
+MassData rounded_polygon_mass(const vec2* vertices, int count, float rounding, float density) {
+  const vec2 origin = vertices[0];
+  const float r = rounding;
+  double area = 0.0;
+  double moment_x = 0.0;
+  double moment_y = 0.0;
+  double second = 0.0;
+  // One triangle (0, p1, p2) of a fan about `origin`: adds its area and moments.
+  auto add_triangle = [&](vec2 p1, vec2 p2) {
+    const double twice_triangle_area = static_cast<double>(cross(p1, p2));
+    area += 0.5 * twice_triangle_area;
+    moment_x += twice_triangle_area / 6.0 * (static_cast<double>(p1.x) + p2.x);
+    moment_y += twice_triangle_area / 6.0 * (static_cast<double>(p1.y) + p2.y);
+    second += twice_triangle_area / 12.0 *
+              (static_cast<double>(p1.x) * p1.x + static_cast<double>(p1.x) * p2.x +
+               static_cast<double>(p2.x) * p2.x + static_cast<double>(p1.y) * p1.y +
+               static_cast<double>(p1.y) * p2.y + static_cast<double>(p2.y) * p2.y);
+  };
+  vec2 normals[max_polygon_vertices];
+  for (int i = 0; i < count; ++i) {
+    const vec2 edge = vertices[next_index(i, count)] - vertices[i];
+    normals[i] = glm::normalize(right_perpendicular(edge));
+  }
+  for (int i = 0; i < count; ++i) {
+    const vec2 p1 = vertices[i] - origin;
+    const vec2 p2 = vertices[next_index(i, count)] - origin;
+    add_triangle(p1, p2);  // core
+    // The strip (p1, p1 + r n, p2 + r n, p2) as a fan about the origin.
+    const vec2 q1 = p1 + r * normals[i];
+    const vec2 q2 = p2 + r * normals[i];
+    add_triangle(p1, q1);
+    add_triangle(q1, q2);
+    add_triangle(q2, p2);
+    add_triangle(p2, p1);
+  }
+  for (int i = 0; i < count; ++i) {
+    const vec2 before = normals[i == 0 ? count - 1 : i - 1];
+    const vec2 after = normals[i];
+    const double theta = std::atan2(static_cast<double>(cross(before, after)),
+                                    static_cast<double>(glm::dot(before, after)));
+    const vec2 bisector = glm::normalize(before + after);
+    const vec2 v = vertices[i] - origin;
+    const double rr = static_cast<double>(r) * r;
+    const double sector_area = 0.5 * theta * rr;
+    const double apex_moment = 2.0 / 3.0 * rr * r * std::sin(0.5 * theta);  // along the bisector
+    area += sector_area;
+    moment_x += sector_area * v.x + apex_moment * bisector.x;
+    moment_y += sector_area * v.y + apex_moment * bisector.y;
+    second += 0.25 * theta * rr * rr + sector_area * length_squared(v) +
+              2.0 * apex_moment * glm::dot(v, bisector);
+  }
+  const double centroid_x = moment_x / area;
+  const double centroid_y = moment_y / area;
+  MassData mass_data;
+  mass_data.area = static_cast<float>(area);
+  mass_data.mass = density * mass_data.area;
+  mass_data.centroid = origin + vec2(static_cast<float>(centroid_x), static_cast<float>(centroid_y));
+  mass_data.inertia = static_cast<float>(
+      density * (second - area * (centroid_x * centroid_x + centroid_y * centroid_y)));
+  return mass_data;
+}
+
 /// The box's bounds: a box ignores the rotation of its transform.
 Aabb box_bounds(const Box& box, const Transform& transform) {
   return {transform.position - box.half_extents, transform.position + box.half_extents};
@@ -248,6 +369,118 @@ bool raycast_polygon(const Polygon& polygon, const Transform& transform, vec2 or
   return true;
 }
 
+/// Squared distance (m^2) from `point` to the segment from `start` to `end`.
+float distance_squared_to_segment(vec2 point, vec2 start, vec2 end) {
+  const vec2 edge = end - start;
+  const float edge_squared = length_squared(edge);
+  float t = edge_squared > 0.0f ? glm::dot(point - start, edge) / edge_squared : 0.0f;
+  t = std::min(std::max(t, 0.0f), 1.0f);
+  return length_squared(point - (start + t * edge));
+}
+
+/// True when the body-local `point` lies within `rounding` of the polygon's core (inside it or
+/// within that distance of an edge).
+bool rounded_polygon_contains(const Polygon& polygon, vec2 point) {
+  bool inside = true;
+  for (int i = 0; i < polygon.count; ++i) {
+    if (glm::dot(polygon.normals[i], point - polygon.vertices[i]) > 0.0f) inside = false;
+  }
+  if (inside) return true;
+  const float reach_squared = polygon.rounding * polygon.rounding;
+  for (int i = 0; i < polygon.count; ++i) {
+    const vec2 start = polygon.vertices[i];
+    const vec2 end = polygon.vertices[next_index(i, polygon.count)];
+    if (distance_squared_to_segment(point, start, end) <= reach_squared) return true;
+  }
+  return false;
+}
+
+/// The rectangle swept by pushing edge start -> end (of a CCW outline, outward normal
+/// `normal`) out by `depth` to both sides when `both_sides`, else outward only: a 4-vertex
+/// polygon in the same coordinates.
+Polygon edge_strip(vec2 start, vec2 end, vec2 normal, float depth, bool both_sides) {
+  const vec2 inner_offset = both_sides ? -depth * normal : vec2(0.0f);
+  Polygon strip;
+  strip.count = 4;
+  strip.vertices[0] = start + inner_offset;
+  strip.vertices[1] = end + inner_offset;
+  strip.vertices[2] = end + depth * normal;
+  strip.vertices[3] = start + depth * normal;
+  // Counter-clockwise when the normal is the right perpendicular of start -> end, reversed
+  // otherwise: take the normals from the vertex order.
+  const float turn = cross(strip.vertices[1] - strip.vertices[0], strip.vertices[2] - strip.vertices[1]);
+  if (turn < 0.0f) {
+    std::swap(strip.vertices[1], strip.vertices[3]);
+  }
+  for (int i = 0; i < 4; ++i) {
+    const vec2 edge = strip.vertices[next_index(i, 4)] - strip.vertices[i];
+    strip.normals[i] = glm::normalize(right_perpendicular(edge));
+  }
+  return strip;
+}
+
+/// Keeps the nearer of two ray hits.
+void keep_nearer(bool found, const ShapeRayHit& candidate, bool* any, ShapeRayHit* best) {
+  if (found && (!*any || candidate.fraction < best->fraction)) {
+    *best = candidate;
+    *any = true;
+  }
+}
+
+/// A ray against the union of convex pieces (the ray starts outside all of them): the first
+/// entry into the union is the earliest entry into any piece.
+bool raycast_rounded_outline(const vec2* vertices, const vec2* normals, int count, float rounding,
+                             const Transform& transform, vec2 origin, vec2 translation,
+                             ShapeRayHit* hit) {
+  bool any = false;
+  ShapeRayHit best;
+  ShapeRayHit candidate;
+  const Circle corner{rounding};
+  if (count >= 3) {
+    Polygon core;
+    core.count = count;
+    for (int i = 0; i < count; ++i) {
+      core.vertices[i] = vertices[i];
+      core.normals[i] = normals[i];
+    }
+    keep_nearer(raycast_polygon(core, transform, origin, translation, &candidate), candidate,
+                &any, &best);
+  }
+  const int edge_count = count == 2 ? 1 : count;
+  for (int i = 0; i < count; ++i) {
+    keep_nearer(raycast_circle(corner, transform.apply(vertices[i]), origin, translation, &candidate),
+                candidate, &any, &best);
+  }
+  for (int i = 0; i < edge_count; ++i) {
+    const Polygon strip = edge_strip(vertices[i], vertices[next_index(i, count)], normals[i],
+                                     rounding, count == 2);
+    keep_nearer(raycast_polygon(strip, transform, origin, translation, &candidate), candidate,
+                &any, &best);
+  }
+  if (any && hit != nullptr) *hit = best;
+  return any;
+}
+
+/// The segment's ray hit: the crossing of the two lines within both, normal facing the ray.
+bool raycast_segment(const Segment& segment, const Transform& transform, vec2 origin,
+                     vec2 translation, ShapeRayHit* hit) {
+  const vec2 start = transform.apply(segment.point1);
+  const vec2 edge = transform.apply(segment.point2) - start;
+  const float denominator = cross(translation, edge);
+  if (denominator == 0.0f) return false;  // parallel (or a zero-length ray)
+  const vec2 offset = start - origin;
+  const float fraction = cross(offset, edge) / denominator;
+  const float along = cross(offset, translation) / denominator;
+  if (!(fraction > 0.0f && fraction <= 1.0f && along >= 0.0f && along <= 1.0f)) return false;
+  if (hit != nullptr) {
+    vec2 normal = glm::normalize(right_perpendicular(edge));
+    if (glm::dot(normal, translation) > 0.0f) normal = -normal;
+    hit->fraction = fraction;
+    hit->normal = normal;
+  }
+  return true;
+}
+
 }  // namespace
 
 Shape make_circle(float radius) {
@@ -275,6 +508,47 @@ Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out) {
   polygon.radius = farthest_vertex_distance(polygon);
   if (centroid_out != nullptr) *centroid_out = centroid;
   return polygon;
+}
+
+Shape make_rounded_polygon(const vec2* vertices, int count, float rounding, vec2* centroid_out) {
+  validate_rounding("make_rounded_polygon", rounding);
+  if (rounding == 0.0f) return make_polygon(vertices, count, centroid_out);
+  validate_polygon(vertices, count);
+  // The rounded solid's centroid (edge strips and corner sectors shift it from the core's).
+  const vec2 centroid = rounded_polygon_mass(vertices, count, rounding, 1.0f).centroid;
+  vec2 shifted[max_polygon_vertices];
+  for (int i = 0; i < count; ++i) shifted[i] = vertices[i] - centroid;
+  Polygon polygon;
+  polygon.count = count;
+  for (int i = 0; i < count; ++i) polygon.vertices[i] = shifted[i];
+  for (int i = 0; i < count; ++i) {
+    const vec2 edge = polygon.vertices[next_index(i, count)] - polygon.vertices[i];
+    polygon.normals[i] = glm::normalize(right_perpendicular(edge));
+  }
+  polygon.radius = farthest_vertex_distance(polygon);
+  polygon.rounding = rounding;
+  if (centroid_out != nullptr) *centroid_out = centroid;
+  return polygon;
+}
+
+Shape make_capsule(vec2 center1, vec2 center2, float radius, vec2* centroid_out) {
+  const char* function = "make_capsule";
+  validate_ends(function, "center1", center1, "center2", center2,
+                "equal (use a circle for a capsule of zero length)");
+  if (!std::isfinite(radius) || !(radius > 0.0f)) {
+    fail(function, "radius must be finite and > 0, got " + format_number(radius));
+  }
+  const vec2 centroid = 0.5f * (center1 + center2);
+  if (centroid_out != nullptr) *centroid_out = centroid;
+  return Capsule{center1 - centroid, center2 - centroid, radius};
+}
+
+Shape make_segment(vec2 point1, vec2 point2, vec2* centroid_out) {
+  validate_ends("make_segment", "point1", point1, "point2", point2,
+                "equal (a segment needs a length > 0)");
+  const vec2 centroid = 0.5f * (point1 + point2);
+  if (centroid_out != nullptr) *centroid_out = centroid;
+  return Segment{point1 - centroid, point2 - centroid};
 }
 
 float farthest_vertex_distance(const Polygon& polygon) {
@@ -345,8 +619,19 @@ MassData compute_mass(const Shape& shape, float density) {
       mass_data.inertia = mass_data.mass * (width * width + height * height) / 12.0f;
       return mass_data;
     }
-    case ShapeType::Polygon:
-      return compute_polygon_mass(shape.polygon().vertices.data(), shape.polygon().count, density);
+    case ShapeType::Polygon: {
+      const Polygon& polygon = shape.polygon();
+      if (polygon.rounding > 0.0f) {
+        return rounded_polygon_mass(polygon.vertices.data(), polygon.count, polygon.rounding,
+                                    density);
+      }
+      return compute_polygon_mass(polygon.vertices.data(), polygon.count, density);
+    }
+    case ShapeType::Capsule:
+      return capsule_mass(shape.capsule(), density);
+    case ShapeType::Segment:
+      mass_data.centroid = 0.5f * (shape.segment().point1 + shape.segment().point2);
+      return mass_data;
   }
   fail("compute_mass", "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
 }
@@ -368,7 +653,22 @@ Aabb compute_aabb(const Shape& shape, const Transform& transform) {
         bounds.lower = glm::min(bounds.lower, corner);
         bounds.upper = glm::max(bounds.upper, corner);
       }
+      if (polygon.rounding > 0.0f) {
+        bounds.lower -= vec2(polygon.rounding);
+        bounds.upper += vec2(polygon.rounding);
+      }
       return bounds;
+    }
+    case ShapeType::Capsule: {
+      const vec2 c1 = transform.apply(shape.capsule().center1);
+      const vec2 c2 = transform.apply(shape.capsule().center2);
+      const vec2 reach(shape.capsule().radius);
+      return {glm::min(c1, c2) - reach, glm::max(c1, c2) + reach};
+    }
+    case ShapeType::Segment: {
+      const vec2 p1 = transform.apply(shape.segment().point1);
+      const vec2 p2 = transform.apply(shape.segment().point2);
+      return {glm::min(p1, p2), glm::max(p1, p2)};
     }
   }
   fail("compute_aabb", "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
@@ -384,11 +684,19 @@ bool shape_contains_point(const Shape& shape, const Transform& transform, vec2 p
     case ShapeType::Polygon: {
       const Polygon& polygon = shape.polygon();
       const vec2 local_point = transform.apply_inverse(point);
+      if (polygon.rounding > 0.0f) return rounded_polygon_contains(polygon, local_point);
       for (int i = 0; i < polygon.count; ++i) {
         if (glm::dot(polygon.normals[i], local_point - polygon.vertices[i]) > 0.0f) return false;
       }
       return true;
     }
+    case ShapeType::Capsule: {
+      const Capsule& capsule = shape.capsule();
+      return distance_squared_to_segment(transform.apply_inverse(point), capsule.center1,
+                                         capsule.center2) <= capsule.radius * capsule.radius;
+    }
+    case ShapeType::Segment:
+      return false;  // no area: nothing lies inside
   }
   fail("shape_contains_point",
        "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
@@ -401,8 +709,24 @@ bool raycast_shape(const Shape& shape, const Transform& transform, vec2 origin, 
       return raycast_circle(shape.circle(), transform.position, origin, translation, hit);
     case ShapeType::Box:
       return raycast_box(shape.box(), transform, origin, translation, hit);
-    case ShapeType::Polygon:
-      return raycast_polygon(shape.polygon(), transform, origin, translation, hit);
+    case ShapeType::Polygon: {
+      const Polygon& polygon = shape.polygon();
+      if (!(polygon.rounding > 0.0f)) return raycast_polygon(polygon, transform, origin, translation, hit);
+      if (shape_contains_point(shape, transform, origin)) return false;  // starts inside
+      return raycast_rounded_outline(polygon.vertices.data(), polygon.normals.data(), polygon.count,
+                                     polygon.rounding, transform, origin, translation, hit);
+    }
+    case ShapeType::Capsule: {
+      const Capsule& capsule = shape.capsule();
+      if (shape_contains_point(shape, transform, origin)) return false;  // starts inside
+      const vec2 vertices[2] = {capsule.center1, capsule.center2};
+      const vec2 normal = glm::normalize(right_perpendicular(capsule.center2 - capsule.center1));
+      const vec2 normals[2] = {normal, -normal};
+      return raycast_rounded_outline(vertices, normals, 2, capsule.radius, transform, origin,
+                                     translation, hit);
+    }
+    case ShapeType::Segment:
+      return raycast_segment(shape.segment(), transform, origin, translation, hit);
   }
   fail("raycast_shape", "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
 }

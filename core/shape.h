@@ -1,10 +1,12 @@
 #pragma once
 /// @file shape.h
-/// Collision shapes: circle, axis-aligned box and convex polygon, validated on creation.
-/// Every shape is stored in body-local coordinates with the body origin at its centroid.
+/// Collision shapes: circle, axis-aligned box, convex polygon (optionally rounded), capsule and
+/// segment, validated on creation. Every shape is stored in body-local coordinates with the
+/// body origin at its centroid (a segment's: its midpoint).
 
 #include "core/math.h"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -13,10 +15,10 @@
 namespace impulse2d {
 
 /// The kinds of shape; the narrow phase's jump table is indexed by these.
-enum class ShapeType : std::uint8_t { Circle = 0, Box = 1, Polygon = 2 };
+enum class ShapeType : std::uint8_t { Circle = 0, Box = 1, Polygon = 2, Capsule = 3, Segment = 4 };
 
 /// Number of shape kinds (size of each dimension of the collision jump table).
-constexpr int shape_type_count = 3;
+constexpr int shape_type_count = 5;
 
 /// Largest number of vertices a convex polygon may have.
 constexpr int max_polygon_vertices = 8;
@@ -32,7 +34,9 @@ struct Box {
   vec2 half_extents{0.5f, 0.5f};  ///< half width and half height, metres, > 0
 };
 
-/// A convex polygon, counter-clockwise, with its centroid at the body origin.
+/// A convex polygon, counter-clockwise, with its centroid at the body origin. With a rounding
+/// radius r > 0 the solid is the polygon swollen by r (every point within r of it): flat edges
+/// pushed out by r, corners turned into arcs of radius r about the vertices.
 struct Polygon {
   int count = 0;                                     ///< number of vertices, 3..8
   std::array<vec2, max_polygon_vertices> vertices{};  ///< local vertices, metres, CCW
@@ -42,11 +46,29 @@ struct Polygon {
   /// filled in by hand, whose radius `polygon_radius` then computes from the vertices. Edit
   /// the vertices of a made polygon only through `make_polygon` (or set this back to -1).
   float radius = -1.0f;
+  /// Rounding radius (m, >= 0) added all round the outline above; 0 is a sharp polygon.
+  float rounding = 0.0f;
 };
 
-/// A shape of one kind: a tagged union (the kind, then the one kind's data), 140 bytes. Build
-/// it with `make_circle`, `make_box`, `make_polygon` or `make_oriented_box`, which validate
-/// their input (a kind's struct converts too, unvalidated until `World::create_body`).
+/// A capsule: every point within `radius` of the segment from `center1` to `center2` (a
+/// rectangle with a half disc on each end), its centroid (the midpoint) at the body origin.
+struct Capsule {
+  vec2 center1{0.0f, -0.5f};  ///< centre of the first end cap, metres, body-local
+  vec2 center2{0.0f, 0.5f};   ///< centre of the second end cap, metres, body-local, != center1
+  float radius = 0.25f;       ///< metres, > 0
+};
+
+/// A line segment with no thickness and no area (so no mass): for static and kinematic bodies
+/// (level geometry, moving platforms). Stored with its midpoint at the body origin.
+struct Segment {
+  vec2 point1{-0.5f, 0.0f};  ///< one end, metres, body-local
+  vec2 point2{0.5f, 0.0f};   ///< the other end, metres, body-local, != point1
+};
+
+/// A shape of one kind: a tagged union (the kind, then the one kind's data), 144 bytes. Build
+/// it with `make_circle`, `make_box`, `make_polygon`, `make_oriented_box`, `make_capsule` or
+/// `make_segment`, which validate their input (a kind's struct converts too, unvalidated until
+/// `World::create_body`).
 ///
 /// Adding a kind: its struct above and its `ShapeType` (before `shape_type_count`); here a
 /// member of the union, a constructor and an accessor; its case in each `switch (type())`
@@ -63,6 +85,10 @@ class Shape {
   Shape(const Box& box) : type_(ShapeType::Box), box_(box) {}
   /// A convex polygon shape.
   Shape(const Polygon& polygon) : type_(ShapeType::Polygon), polygon_(polygon) {}
+  /// A capsule shape.
+  Shape(const Capsule& capsule) : type_(ShapeType::Capsule), capsule_(capsule) {}
+  /// A segment shape.
+  Shape(const Segment& segment) : type_(ShapeType::Segment), segment_(segment) {}
 
   /// Which kind this shape is: the accessor of that kind alone may be called.
   ShapeType type() const { return type_; }
@@ -81,6 +107,16 @@ class Shape {
     assert(type_ == ShapeType::Polygon);
     return polygon_;
   }
+  /// The capsule; only when `type() == ShapeType::Capsule`.
+  const Capsule& capsule() const {
+    assert(type_ == ShapeType::Capsule);
+    return capsule_;
+  }
+  /// The segment; only when `type() == ShapeType::Segment`.
+  const Segment& segment() const {
+    assert(type_ == ShapeType::Segment);
+    return segment_;
+  }
 
  private:
   ShapeType type_;
@@ -88,6 +124,8 @@ class Shape {
     Circle circle_;
     Box box_;
     Polygon polygon_;
+    Capsule capsule_;
+    Segment segment_;
   };
 };
 
@@ -105,6 +143,24 @@ Shape make_box(vec2 half_extents);
 /// self-overlapping outline, repeated points, or a degenerate (near zero) area.
 Shape make_polygon(const vec2* vertices, int count, vec2* centroid_out = nullptr);
 
+/// A rounded convex polygon: `make_polygon`'s outline (same checks, same re-centring) swollen
+/// by `rounding` metres all round. Throws `Error` as `make_polygon` does, or unless
+/// 0 <= rounding < inf. Rounding 0 gives exactly `make_polygon`'s shape.
+Shape make_rounded_polygon(const vec2* vertices, int count, float rounding,
+                           vec2* centroid_out = nullptr);
+
+/// A capsule of the given end-cap centres and radius (metres), shifted so that its centroid
+/// (the midpoint of the centres) is at the body origin; `centroid_out`, when given, receives
+/// that midpoint in the input coordinates. Throws `Error` for non-finite input, radius <= 0, or
+/// centres closer than 64 float epsilons of their size (a circle is the shape for that).
+Shape make_capsule(vec2 center1, vec2 center2, float radius, vec2* centroid_out = nullptr);
+
+/// A segment between two points (metres), shifted so that its midpoint is at the body origin;
+/// `centroid_out`, when given, receives the midpoint in the input coordinates. Throws `Error`
+/// for non-finite points or a (near) zero length. A segment has no mass: only a static or
+/// kinematic body may have one.
+Shape make_segment(vec2 point1, vec2 point2, vec2* centroid_out = nullptr);
+
 /// Distance (m) of the polygon's farthest vertex from its centre, computed from the vertices
 /// (what `Polygon::radius` caches).
 float farthest_vertex_distance(const Polygon& polygon);
@@ -120,7 +176,14 @@ inline float shape_extent(const Shape& shape) {
   switch (shape.type()) {
     case ShapeType::Circle: return shape.circle().radius;
     case ShapeType::Box: return std::sqrt(length_squared(shape.box().half_extents));
-    case ShapeType::Polygon: return polygon_radius(shape.polygon());
+    case ShapeType::Polygon: return polygon_radius(shape.polygon()) + shape.polygon().rounding;
+    case ShapeType::Capsule:
+      return std::sqrt(std::max(length_squared(shape.capsule().center1),
+                                length_squared(shape.capsule().center2))) +
+             shape.capsule().radius;
+    case ShapeType::Segment:
+      return std::sqrt(std::max(length_squared(shape.segment().point1),
+                                length_squared(shape.segment().point2)));
   }
   return 0.0f;
 }
@@ -137,7 +200,9 @@ struct MassData {
 };
 
 /// Mass, centroid and rotational inertia of `shape` at `density` (kg/m^2).
-/// Disc: I = m r^2 / 2; box: I = m (w^2 + h^2) / 12; polygon: triangle fan, moved to the centroid.
+/// Disc: I = m r^2 / 2; box: I = m (w^2 + h^2) / 12; polygon: triangle fan, moved to the centroid
+/// (rounded: plus the edge strips and corner sectors, see shape.cpp); capsule: rectangle plus
+/// two half discs; segment: no area, mass 0.
 MassData compute_mass(const Shape& shape, float density);
 
 /// Mass properties of the raw polygon outline given (no re-centring), for tests and tools:

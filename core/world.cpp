@@ -69,6 +69,25 @@ void validate_shape(const Shape& shape) {
       if (shape.polygon().count < 3 || shape.polygon().count > max_polygon_vertices) {
         throw Error("World::create_body: polygon needs 3..8 vertices (use make_polygon)");
       }
+      if (!(std::isfinite(shape.polygon().rounding) && shape.polygon().rounding >= 0.0f)) {
+        throw Error("World::create_body: polygon rounding radius must be finite and >= 0");
+      }
+      return;
+    case ShapeType::Capsule: {
+      const Capsule& capsule = shape.capsule();
+      if (!(std::isfinite(capsule.radius) && capsule.radius > 0.0f)) {
+        throw Error("World::create_body: capsule radius must be finite and > 0");
+      }
+      if (!(is_finite(capsule.center1) && is_finite(capsule.center2)) || capsule.center1 == capsule.center2) {
+        throw Error("World::create_body: capsule centres must be finite and differ (use make_capsule)");
+      }
+      return;
+    }
+    case ShapeType::Segment:
+      if (!(is_finite(shape.segment().point1) && is_finite(shape.segment().point2)) ||
+          shape.segment().point1 == shape.segment().point2) {
+        throw Error("World::create_body: segment points must be finite and differ (use make_segment)");
+      }
       return;
   }
   throw Error("World::create_body: unknown shape type");
@@ -181,6 +200,10 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   }
   validate_material(def.material, "World::create_body: material");
   validate_shape(shape);
+  if (def.type == BodyType::Dynamic && shape.type() == ShapeType::Segment) {
+    throw Error("World::create_body: a segment has no area and so no mass: a dynamic body "
+                "cannot be only a segment (make it static or kinematic, or use a capsule)");
+  }
   if (def.type == BodyType::Dynamic && !(def.material.density > 0.0f)) {
     throw Error("World::create_body: a dynamic body needs material density > 0 (got " +
                 std::to_string(def.material.density) + ")");

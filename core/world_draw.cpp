@@ -4,6 +4,7 @@
 #include "core/solver/world_state.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace impulse2d {
@@ -29,6 +30,37 @@ Transform drawn_transform(const Body& body, float alpha) {
   return Transform{position, Rotation::from_angle(angle)};
 }
 
+/// Most points of a drawn rounded outline: 8 corners, each an arc of at most 16 steps plus its
+/// start point.
+constexpr int max_rounded_points = max_polygon_vertices * 17;
+
+/// Fills `points` (world) with the outline of the convex `vertices` (body-local, CCW, 2..8;
+/// two for a capsule) swollen by `radius` > 0: at each vertex an arc from the previous edge's
+/// normal to the next one's, in steps of at most 15 degrees. Returns the point count.
+int rounded_outline(const vec2* vertices, int count, float radius, const Transform& transform,
+                    vec2* points) {
+  constexpr float step_angle = 3.14159265358979f / 12.0f;
+  vec2 normals[max_polygon_vertices];
+  for (int i = 0; i < count; ++i) {
+    normals[i] = glm::normalize(right_perpendicular(vertices[(i + 1) % count] - vertices[i]));
+  }
+  int written = 0;
+  for (int i = 0; i < count; ++i) {
+    const vec2 before = normals[(i + count - 1) % count];
+    const vec2 after = normals[i];
+    float sweep = std::atan2(cross(before, after), glm::dot(before, after));
+    if (count == 2) sweep = 3.14159265358979f;  // a capsule's cap: a half turn
+    const int steps = std::max(1, static_cast<int>(std::ceil(sweep / step_angle)));
+    const float start = std::atan2(before.y, before.x);
+    for (int k = 0; k <= steps; ++k) {
+      const float angle = start + sweep * static_cast<float>(k) / static_cast<float>(steps);
+      points[written++] =
+          transform.apply(vertices[i] + radius * vec2(std::cos(angle), std::sin(angle)));
+    }
+  }
+  return written;
+}
+
 void draw_shape(DebugDraw& draw, const Shape& shape, const Transform& transform, Color fill,
                 Color outline) {
   switch (shape.type()) {
@@ -45,6 +77,14 @@ void draw_shape(DebugDraw& draw, const Shape& shape, const Transform& transform,
       return;
     }
     case ShapeType::Polygon: {
+      if (shape.polygon().rounding > 0.0f) {
+        vec2 points[max_rounded_points];
+        const int count = rounded_outline(shape.polygon().vertices.data(), shape.polygon().count,
+                                          shape.polygon().rounding, transform, points);
+        draw.draw_solid_polygon(points, count, fill, outline);
+        draw.draw_segment(transform.position, transform.apply(shape.polygon().vertices[0]), outline);
+        return;
+      }
       vec2 corners[max_polygon_vertices];
       for (int i = 0; i < shape.polygon().count; ++i) corners[i] = transform.apply(shape.polygon().vertices[i]);
       draw.draw_solid_polygon(corners, shape.polygon().count, fill, outline);
@@ -52,6 +92,20 @@ void draw_shape(DebugDraw& draw, const Shape& shape, const Transform& transform,
       draw.draw_segment(transform.position, corners[0], outline);
       return;
     }
+    case ShapeType::Capsule: {
+      const Capsule& capsule = shape.capsule();
+      const vec2 centres[2] = {capsule.center1, capsule.center2};
+      vec2 points[max_rounded_points];
+      const int count = rounded_outline(centres, 2, capsule.radius, transform, points);
+      draw.draw_solid_polygon(points, count, fill, outline);
+      // Orientation mark: the core segment between the cap centres.
+      draw.draw_segment(transform.apply(capsule.center1), transform.apply(capsule.center2), outline);
+      return;
+    }
+    case ShapeType::Segment:
+      draw.draw_segment(transform.apply(shape.segment().point1),
+                        transform.apply(shape.segment().point2), outline);
+      return;
   }
 }
 

@@ -40,6 +40,18 @@ Hull hull_of(const Shape& shape, const Transform& transform) {
         hull.vertices[i] = transform.apply(shape.polygon().vertices[i]);
       }
       hull.count = shape.polygon().count;
+      hull.radius = shape.polygon().rounding;
+      return hull;
+    case ShapeType::Capsule:
+      hull.vertices[0] = transform.apply(shape.capsule().center1);
+      hull.vertices[1] = transform.apply(shape.capsule().center2);
+      hull.count = 2;
+      hull.radius = shape.capsule().radius;
+      return hull;
+    case ShapeType::Segment:
+      hull.vertices[0] = transform.apply(shape.segment().point1);
+      hull.vertices[1] = transform.apply(shape.segment().point2);
+      hull.count = 2;
       return hull;
   }
   return hull;
@@ -186,9 +198,18 @@ void require_query_shape(const Shape& shape, const Transform& transform, const c
     case ShapeType::Circle: valid = shape.circle().radius > 0.0f && std::isfinite(shape.circle().radius); break;
     case ShapeType::Box: valid = shape.box().half_extents.x > 0.0f && shape.box().half_extents.y > 0.0f &&
                                  is_finite(shape.box().half_extents); break;
-    case ShapeType::Polygon: valid = shape.polygon().count >= 3 && shape.polygon().count <= max_polygon_vertices; break;
+    case ShapeType::Polygon: valid = shape.polygon().count >= 3 && shape.polygon().count <= max_polygon_vertices &&
+                                     shape.polygon().rounding >= 0.0f && std::isfinite(shape.polygon().rounding); break;
+    case ShapeType::Capsule: valid = shape.capsule().radius > 0.0f && std::isfinite(shape.capsule().radius) &&
+                                     is_finite(shape.capsule().center1) && is_finite(shape.capsule().center2) &&
+                                     shape.capsule().center1 != shape.capsule().center2; break;
+    case ShapeType::Segment: valid = is_finite(shape.segment().point1) && is_finite(shape.segment().point2) &&
+                                     shape.segment().point1 != shape.segment().point2; break;
   }
-  if (!valid) throw Error(std::string(caller) + ": invalid shape (make it with make_circle, make_box or make_polygon)");
+  if (!valid) {
+    throw Error(std::string(caller) +
+                ": invalid shape (make it with make_circle, make_box, make_polygon, make_capsule or make_segment)");
+  }
 }
 
 // A box turns with the query's rotation: the narrow phase's boxes never turn, so a turned box

@@ -199,7 +199,19 @@ void io_shape(IO& io, Shape& shape) {
     for (vec2& v : polygon.vertices) io_vec2(io, v);
     for (vec2& n : polygon.normals) io_vec2(io, n);
     io.f32(polygon.radius);
+    io.f32(polygon.rounding);
     if (IO::reading) shape = polygon;
+  } else if (kind == static_cast<std::uint8_t>(ShapeType::Capsule)) {
+    Capsule capsule = IO::reading ? Capsule{} : shape.capsule();
+    io_vec2(io, capsule.center1);
+    io_vec2(io, capsule.center2);
+    io.f32(capsule.radius);
+    if (IO::reading) shape = capsule;
+  } else if (kind == static_cast<std::uint8_t>(ShapeType::Segment)) {
+    Segment segment = IO::reading ? Segment{} : shape.segment();
+    io_vec2(io, segment.point1);
+    io_vec2(io, segment.point2);
+    if (IO::reading) shape = segment;
   } else {
     throw Error("World::restore_snapshot: corrupt shape kind " + std::to_string(kind));
   }

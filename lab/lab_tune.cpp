@@ -232,6 +232,8 @@ nlohmann::ordered_json tuned_settings(const LabMethod& method, const demos::Scen
   if (model.circles) shapes.push_back("circle");
   if (model.boxes) shapes.push_back("box");
   if (model.polygons) shapes.push_back("polygon");
+  if (model.capsules) shapes.push_back("capsule");
+  if (model.segments) shapes.push_back("segment");
   nlohmann::ordered_json switches;
   switches["shapes"] = shapes;
   switches["rotation"] = model.rotation;

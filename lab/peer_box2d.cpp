@@ -193,6 +193,7 @@ class Box2dSimulation : public LabSimulation {
 
       b2CircleShape circle;
       b2PolygonShape polygon;
+      b2EdgeShape edge;
       b2FixtureDef fixture;
       switch (body.shape->type()) {
         case ShapeType::Circle:
@@ -221,9 +222,18 @@ class Box2dSimulation : public LabSimulation {
                             vertex.y - scale * (before.y + after.y));
           }
           polygon.Set(vertices, count);
+          polygon.m_radius = b2_polygonRadius + source.rounding;  // the skin plus the rounding
           fixture.shape = &polygon;
           break;
         }
+        case ShapeType::Segment: {
+          const Segment& source = body.shape->segment();
+          edge.SetTwoSided(b2Vec2(source.point1.x, source.point1.y), b2Vec2(source.point2.x, source.point2.y));
+          fixture.shape = &edge;
+          break;
+        }
+        case ShapeType::Capsule:
+          throw std::runtime_error("peer box2d: Box2D 2.4.1 has no capsule shape");
       }
       fixture.density = body.type == BodyType::Dynamic ? body.material->density : 0.0f;
       fixture.friction = settings.enable_friction ? body.material->static_friction : 0.0f;

@@ -194,7 +194,20 @@ class ChipmunkSimulation : public LabSimulation {
             const vec2 v = source.shape->polygon().vertices[static_cast<std::size_t>(i)];
             vertices[i] = cpv(v.x, v.y);
           }
-          shape = cpPolyShapeNewRaw(body, source.shape->polygon().count, vertices, 0.0);
+          shape = cpPolyShapeNewRaw(body, source.shape->polygon().count, vertices,
+                                    source.shape->polygon().rounding);
+          break;
+        }
+        case ShapeType::Capsule: {  // Chipmunk's segment with a radius is a capsule
+          const Capsule& capsule = source.shape->capsule();
+          shape = cpSegmentShapeNew(body, cpv(capsule.center1.x, capsule.center1.y),
+                                    cpv(capsule.center2.x, capsule.center2.y), capsule.radius);
+          break;
+        }
+        case ShapeType::Segment: {
+          const Segment& segment = source.shape->segment();
+          shape = cpSegmentShapeNew(body, cpv(segment.point1.x, segment.point1.y),
+                                    cpv(segment.point2.x, segment.point2.y), 0.0);
           break;
         }
       }

@@ -158,7 +158,9 @@ SceneModel read_model(const JsonCursor& node, const WorldSettings& settings) {
     const JsonCursor kind = shapes.element(i);
     switch (kind.choice<ShapeType>({{"circle", ShapeType::Circle},
                                     {"box", ShapeType::Box},
-                                    {"polygon", ShapeType::Polygon}})) {
+                                    {"polygon", ShapeType::Polygon},
+                                    {"capsule", ShapeType::Capsule},
+                                    {"segment", ShapeType::Segment}})) {
       case ShapeType::Circle:
         model.circles = true;
         break;
@@ -167,6 +169,12 @@ SceneModel read_model(const JsonCursor& node, const WorldSettings& settings) {
         break;
       case ShapeType::Polygon:
         model.polygons = true;
+        break;
+      case ShapeType::Capsule:
+        model.capsules = true;
+        break;
+      case ShapeType::Segment:
+        model.segments = true;
         break;
     }
   }
@@ -232,7 +240,8 @@ bool is_file_name_prefix(const std::string& name) {
 }
 
 /// The shape, and the offset from the body's given position to its centre of mass (non-zero
-/// only for polygons whose vertices are not centred on the origin), body-local.
+/// for polygons whose vertices are not centred on the origin, and for capsules and segments
+/// not centred on it), body-local.
 struct ReadShape {
   Shape shape;
   vec2 centroid{0.0f, 0.0f};
@@ -254,8 +263,32 @@ ReadShape read_shape(const JsonCursor& node) {
         extents.element(0).in_range(limits::min_size, limits::max_size, limits::size_reason),
         extents.element(1).in_range(limits::min_size, limits::max_size, limits::size_reason));
     result.shape = name == "box" ? make_box(half) : make_oriented_box(half);
+  } else if (name == "capsule") {
+    node.allow_only({"type", "center1", "center2", "radius"});
+    const JsonCursor first = node.field("center1");
+    const JsonCursor second = node.field("center2");
+    const vec2 center1 = first.vector_at_most(limits::max_size, limits::size_reason);
+    const vec2 center2 = second.vector_at_most(limits::max_size, limits::size_reason);
+    const float radius =
+        node.field("radius").in_range(limits::min_size, limits::max_size, limits::size_reason);
+    if (!(glm::length(center2 - center1) >= limits::min_size)) {
+      second.fail("center2 must be at least " + compact_number(limits::min_size) +
+                  " m from center1 (equal centres: use a circle)");
+    }
+    result.shape = make_capsule(center1, center2, radius, &result.centroid);
+  } else if (name == "segment") {
+    node.allow_only({"type", "point1", "point2"});
+    const JsonCursor first = node.field("point1");
+    const JsonCursor second = node.field("point2");
+    const vec2 point1 = first.vector_at_most(limits::max_size, limits::size_reason);
+    const vec2 point2 = second.vector_at_most(limits::max_size, limits::size_reason);
+    if (!(glm::length(point2 - point1) >= limits::min_size)) {
+      second.fail("point2 must be at least " + compact_number(limits::min_size) +
+                  " m from point1 (a segment needs a length)");
+    }
+    result.shape = make_segment(point1, point2, &result.centroid);
   } else if (name == "polygon") {
-    node.allow_only({"type", "vertices"});
+    node.allow_only({"type", "vertices", "radius"});
     const JsonCursor list = node.field("vertices");
     const std::size_t count = list.size();
     if (count < 3 || count > static_cast<std::size_t>(max_polygon_vertices)) {
@@ -273,14 +306,20 @@ ReadShape read_shape(const JsonCursor& node) {
       list.fail("the polygon must be at least " + compact_number(limits::min_size) +
                 " m wide and high (" + limits::size_reason + ")");
     }
+    float rounding = 0.0f;
+    if (auto field = node.optional_field("radius")) {
+      rounding = field->non_negative();
+      if (rounding != 0.0f) rounding = field->in_range(limits::min_size, limits::max_size, limits::size_reason);
+    }
     try {
-      result.shape = make_polygon(vertices.data(), static_cast<int>(count), &result.centroid);
+      result.shape = make_rounded_polygon(vertices.data(), static_cast<int>(count), rounding,
+                                          &result.centroid);
     } catch (const Error& error) {
       list.fail(core_reason(error));
     }
   } else {
     type.fail("unknown shape type \"" + name +
-              "\" (expected one of: circle, box, oriented_box, polygon)");
+              "\" (expected one of: circle, box, oriented_box, polygon, capsule, segment)");
   }
   return result;
 }
@@ -298,6 +337,11 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   }
   const ReadShape shape = read_shape(node.field("shape"));
   body.shape = shape.shape;
+  if (def.type == BodyType::Dynamic && body.shape.type() == ShapeType::Segment) {
+    node.field("shape").field("type").fail(
+        "a segment has no area and so no mass: a dynamic body cannot be only a segment (give "
+        "the body \"type\": \"static\" or \"kinematic\", or use a capsule)");
+  }
   const vec2 origin =
       node.field("position").vector_at_most(limits::max_coordinate, limits::coordinate_reason);
   if (auto field = node.optional_field("angle")) {
@@ -730,6 +774,8 @@ Scene parse_scene(const std::string& text, const std::string& file) {
       scene.model.circles = scene.model.circles || body.shape.type() == ShapeType::Circle;
       scene.model.boxes = scene.model.boxes || body.shape.type() == ShapeType::Box;
       scene.model.polygons = scene.model.polygons || body.shape.type() == ShapeType::Polygon;
+      scene.model.capsules = scene.model.capsules || body.shape.type() == ShapeType::Capsule;
+      scene.model.segments = scene.model.segments || body.shape.type() == ShapeType::Segment;
       const bool spins = body.def.type == BodyType::Dynamic && body.shape.type() != ShapeType::Box &&
                          !body.def.fixed_rotation;
       scene.model.rotation = scene.model.rotation || spins;

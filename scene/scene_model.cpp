@@ -10,7 +10,8 @@ namespace {
 /// "circle+box", or "none".
 std::string declared_shapes(const SceneModel& model) {
   std::string shapes;
-  for (ShapeType type : {ShapeType::Circle, ShapeType::Box, ShapeType::Polygon}) {
+  for (ShapeType type : {ShapeType::Circle, ShapeType::Box, ShapeType::Polygon,
+                         ShapeType::Capsule, ShapeType::Segment}) {
     if (model.allows(type))
       shapes += (shapes.empty() ? "" : "+") + std::string(shape_kind_name(type));
   }
@@ -27,6 +28,10 @@ bool SceneModel::allows(ShapeType type) const {
       return boxes;
     case ShapeType::Polygon:
       return polygons;
+    case ShapeType::Capsule:
+      return capsules;
+    case ShapeType::Segment:
+      return segments;
   }
   return false;
 }
@@ -66,6 +71,10 @@ const char* shape_kind_name(ShapeType type) {
       return "box";
     case ShapeType::Polygon:
       return "polygon";
+    case ShapeType::Capsule:
+      return "capsule";
+    case ShapeType::Segment:
+      return "segment";
   }
   return "unknown";
 }

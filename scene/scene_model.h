@@ -20,7 +20,9 @@ namespace impulse2d::demos {
 struct SceneModel {
   bool circles = false;     ///< uses circle shapes
   bool boxes = false;       ///< uses axis-aligned (never rotating) boxes
-  bool polygons = false;    ///< uses convex polygons (including oriented boxes)
+  bool polygons = false;    ///< uses convex polygons (including oriented boxes and rounded ones)
+  bool capsules = false;    ///< uses capsules
+  bool segments = false;    ///< uses segments (static and kinematic bodies only)
   bool rotation = true;     ///< bodies spin (angular terms solved and integrated)
   bool friction = true;     ///< tangent impulses solved
   bool restitution = true;  ///< contacts may bounce
@@ -43,7 +45,7 @@ void apply_model(const SceneModel& model, WorldSettings& settings);
 /// a living body of `world` has a shape kind the model does not declare.
 void verify_shape_kinds(const SceneModel& model, const World& world, const std::string& scene_name);
 
-/// "circle" / "box" / "polygon".
+/// "circle" / "box" / "polygon" / "capsule" / "segment".
 const char* shape_kind_name(ShapeType type);
 
 /// One line: "shapes circle+box, rotation off, friction on, restitution on, ccd off,

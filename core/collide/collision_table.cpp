@@ -5,6 +5,10 @@
 /// swapped order calls it with the shapes swapped and flips the result: the normal is negated,
 /// the points and depths stay, and the two halves of each feature id are swapped so the high
 /// half still names a feature of the first shape.
+///
+/// Fixed orders: a circle is always second; otherwise the kind earlier in `ShapeType` is first.
+/// Pairs of circles, boxes and sharp polygons use the tutorial's functions; any pair with a
+/// rounded polygon, a capsule or a segment goes through collide_rounded(_circle).
 
 #include "core/collide.h"
 #include "core/collide/collide_internal.h"
@@ -34,9 +38,18 @@ Manifold circle_vs_box(const Shape& a, const Transform& xa, const Shape& b, cons
   return flipped(collide_box_circle(b.box(), xb, a.circle(), xa, margin));
 }
 
+bool is_rounded(const Polygon& polygon) { return polygon.rounding > 0.0f; }
+
 Manifold circle_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
                            const Transform& xb, float margin) {
+  if (is_rounded(b.polygon())) return flipped(collide_rounded_circle(b, xb, a.circle(), xa, margin));
   return flipped(collide_polygon_circle(b.polygon(), xb, a.circle(), xa, margin));
+}
+
+/// Circle A vs capsule or segment B.
+Manifold circle_vs_rounded(const Shape& a, const Transform& xa, const Shape& b,
+                           const Transform& xb, float margin) {
+  return flipped(collide_rounded_circle(b, xb, a.circle(), xa, margin));
 }
 
 Manifold box_vs_circle(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
@@ -48,28 +61,54 @@ Manifold box_vs_box(const Shape& a, const Transform& xa, const Shape& b, const T
 }
 
 Manifold box_vs_polygon(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  if (is_rounded(b.polygon())) return collide_rounded(a, xa, b, xb, margin);
   return collide_box_polygon(a.box(), xa, b.polygon(), xb, margin);
 }
 
 Manifold polygon_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
                            const Transform& xb, float margin) {
+  if (is_rounded(a.polygon())) return collide_rounded_circle(a, xa, b.circle(), xb, margin);
   return collide_polygon_circle(a.polygon(), xa, b.circle(), xb, margin);
 }
 
 Manifold polygon_vs_box(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb, float margin) {
+  if (is_rounded(a.polygon())) return flipped(collide_rounded(b, xb, a, xa, margin));
   return flipped(collide_box_polygon(b.box(), xb, a.polygon(), xa, margin));
 }
 
 Manifold polygon_vs_polygon(const Shape& a, const Transform& xa, const Shape& b,
                             const Transform& xb, float margin) {
+  if (is_rounded(a.polygon()) || is_rounded(b.polygon())) return collide_rounded(a, xa, b, xb, margin);
   return collide_polygons(a.polygon(), xa, b.polygon(), xb, margin);
 }
 
-/// Rows: type of A; columns: type of B; in `ShapeType` order (circle, box, polygon).
+/// Capsule or segment A vs circle B.
+Manifold rounded_vs_circle(const Shape& a, const Transform& xa, const Shape& b,
+                           const Transform& xb, float margin) {
+  return collide_rounded_circle(a, xa, b.circle(), xb, margin);
+}
+
+/// A box, polygon, capsule or segment A vs a capsule or segment B, B's kind no earlier.
+Manifold rounded_pair(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                      float margin) {
+  return collide_rounded(a, xa, b, xb, margin);
+}
+
+/// A capsule or segment A vs a box, polygon or capsule B of an earlier kind.
+Manifold rounded_pair_flipped(const Shape& a, const Transform& xa, const Shape& b,
+                              const Transform& xb, float margin) {
+  return flipped(collide_rounded(b, xb, a, xa, margin));
+}
+
+/// Rows: type of A; columns: type of B; in `ShapeType` order (circle, box, polygon, capsule,
+/// segment).
 constexpr CollideFunction collision_table[shape_type_count][shape_type_count] = {
-    {circle_vs_circle, circle_vs_box, circle_vs_polygon},
-    {box_vs_circle, box_vs_box, box_vs_polygon},
-    {polygon_vs_circle, polygon_vs_box, polygon_vs_polygon},
+    {circle_vs_circle, circle_vs_box, circle_vs_polygon, circle_vs_rounded, circle_vs_rounded},
+    {box_vs_circle, box_vs_box, box_vs_polygon, rounded_pair, rounded_pair},
+    {polygon_vs_circle, polygon_vs_box, polygon_vs_polygon, rounded_pair, rounded_pair},
+    {rounded_vs_circle, rounded_pair_flipped, rounded_pair_flipped, rounded_pair, rounded_pair},
+    {rounded_vs_circle, rounded_pair_flipped, rounded_pair_flipped, rounded_pair_flipped,
+     rounded_pair},
 };
 
 int table_index(ShapeType type, const char* argument) {

@@ -40,8 +40,10 @@ float smallest_extent(const Shape& shape) {
       for (int i = 1; i < shape.polygon().count; ++i) {
         nearest = std::min(nearest, glm::dot(shape.polygon().normals[i], shape.polygon().vertices[i]));
       }
-      return nearest;
+      return nearest + shape.polygon().rounding;
     }
+    case ShapeType::Capsule: return shape.capsule().radius;
+    case ShapeType::Segment: return 0.0f;  // never a bullet: segments are not dynamic
   }
   return 0.0f;
 }

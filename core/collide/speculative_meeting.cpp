@@ -1,5 +1,7 @@
 #include "core/collide/speculative_meeting.h"
 
+#include "core/collide/speculative_reach.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -41,6 +43,18 @@ RoundedOutline outline_of(const Body& body, vec2 origin) {
       for (int i = 0; i < outline.count; ++i) {
         outline.vertices[i] = centre + transform.rotation.rotate(body.shape.polygon().vertices[i]);
       }
+      outline.radius = body.shape.polygon().rounding;
+      break;
+    case ShapeType::Capsule:
+      outline.vertices[0] = centre + transform.rotation.rotate(body.shape.capsule().center1);
+      outline.vertices[1] = centre + transform.rotation.rotate(body.shape.capsule().center2);
+      outline.count = 2;
+      outline.radius = body.shape.capsule().radius;
+      break;
+    case ShapeType::Segment:
+      outline.vertices[0] = centre + transform.rotation.rotate(body.shape.segment().point1);
+      outline.vertices[1] = centre + transform.rotation.rotate(body.shape.segment().point2);
+      outline.count = 2;
       break;
   }
   return outline;
@@ -120,9 +134,11 @@ PredictedMotion predict_motion(const Body& body, const WorldSettings& settings, 
   if (body.type == BodyType::Dynamic) {
     motion.velocity += (body.force * body.inverse_mass + settings.gravity * body.gravity_scale) * h;
   }
-  // Discs turn in place and boxes never turn: only a polygon's corners sweep.
-  if (settings.enable_rotation && body.shape.type() == ShapeType::Polygon) {
-    motion.turn_reach = std::fabs(body.angular_velocity) * polygon_radius(body.shape.polygon()) * h;
+  // Discs turn in place and boxes never turn: only a polygon's corners and a capsule's or
+  // segment's ends sweep.
+  if (settings.enable_rotation && body.shape.type() != ShapeType::Circle &&
+      body.shape.type() != ShapeType::Box) {
+    motion.turn_reach = std::fabs(body.angular_velocity) * rotation_reach(body.shape) * h;
   }
   return motion;
 }

@@ -7,13 +7,24 @@ namespace impulse2d {
 
 namespace {
 
-// Farthest distance (m) of a rotating shape's surface from the centre of mass; 0 for a circle
-// (turning about its centre moves no surface point) and for a box (never rotates).
-float rotation_radius(const Shape& shape) {
-  return shape.type() == ShapeType::Polygon ? polygon_radius(shape.polygon()) : 0.0f;
-}
-
 }  // namespace
+
+float rotation_reach(const Shape& shape) {
+  switch (shape.type()) {
+    case ShapeType::Circle:
+    case ShapeType::Box:
+      return 0.0f;
+    case ShapeType::Polygon:
+      return polygon_radius(shape.polygon());
+    case ShapeType::Capsule:
+      return std::sqrt(std::max(length_squared(shape.capsule().center1),
+                                length_squared(shape.capsule().center2)));
+    case ShapeType::Segment:
+      return std::sqrt(std::max(length_squared(shape.segment().point1),
+                                length_squared(shape.segment().point2)));
+  }
+  return 0.0f;
+}
 
 void compute_speculative_reach(const std::vector<Body>& bodies,
                                const std::vector<std::uint8_t>& alive,
@@ -29,7 +40,7 @@ void compute_speculative_reach(const std::vector<Body>& bodies,
         body.type == BodyType::Dynamic ? gravity * std::fabs(body.gravity_scale) * dt : 0.0f;
     const float speed = std::sqrt(length_squared(body.linear_velocity)) + gravity_speed;
     const float turning = settings.enable_rotation
-                              ? std::fabs(body.angular_velocity) * rotation_radius(body.shape)
+                              ? std::fabs(body.angular_velocity) * rotation_reach(body.shape)
                               : 0.0f;
     reach[i] = (speed + turning) * dt;
   }

@@ -10,9 +10,15 @@
 
 namespace impulse2d {
 
+/// Farthest distance (m) from the centre of mass of the points a turn sweeps: a polygon's
+/// farthest vertex (its rounding turns in place about each vertex), a capsule's farthest
+/// cap centre, a segment's farthest end; 0 for a circle (turning about its centre moves no
+/// surface point) and for a box (never rotates).
+float rotation_reach(const Shape& shape);
+
 /// For each living slot, the distance (metres) any point of the body can travel in the next
 /// `dt` seconds: (|v| + |g| gravity_scale dt) dt for the centre plus |w| dt times the
-/// farthest vertex from the centre of mass for a rotating polygon. Zero for static bodies
+/// `rotation_reach` for a rotating shape. Zero for static bodies
 /// and sleeping ones, and everywhere when `settings.speculative_margin` is 0.
 void compute_speculative_reach(const std::vector<Body>& bodies,
                                const std::vector<std::uint8_t>& alive,

@@ -642,7 +642,321 @@ TEST(CollisionTable, EveryPairSeparatedGivesNoPoints) {
 
 TEST(CollisionTable, UnknownShapeTypeIsAnError) {
   EXPECT_THROW(collide_function(static_cast<ShapeType>(7), ShapeType::Circle), Error);
-  EXPECT_THROW(collide_function(ShapeType::Box, static_cast<ShapeType>(3)), Error);
+  EXPECT_THROW(collide_function(ShapeType::Box, static_cast<ShapeType>(5)), Error);
+}
+
+
+// ---- capsules, segments, rounded polygons (issue 31) -------------------------------------
+
+const vec2 pentagon[5] = {vec2{0.6f, -0.45f}, vec2{0.75f, 0.25f}, vec2{0.0f, 0.65f},
+                          vec2{-0.75f, 0.25f}, vec2{-0.6f, -0.45f}};
+
+/// One shape of every kind (the new ones twice: two capsules, two segments, two rounded
+/// polygons, so same-kind pairs are tested too), placed so that every pair overlaps and no
+/// same-kind pair is a near tie between the two reference faces.
+std::vector<Placed> every_kind_overlapping() {
+  return {{make_circle(0.75f), at({0.0f, 0.0f})},
+          {make_box({0.5f, 0.75f}), at({0.5f, 0.25f})},
+          {make_oriented_box({0.5f, 0.25f}), at({-0.25f, 0.5f}, 0.4f)},
+          {make_polygon(pentagon, 5), at({0.1f, -0.3f}, -0.2f)},
+          {make_rounded_polygon(pentagon, 5, 0.2f), at({0.2f, 0.1f}, 0.3f)},
+          {make_rounded_polygon(pentagon, 5, 0.1f), at({-0.3f, -0.2f}, 1.1f)},
+          {make_capsule({-0.8f, 0.0f}, {0.8f, 0.0f}, 0.3f), at({0.1f, 0.2f}, 0.15f)},
+          {make_capsule({0.0f, -0.6f}, {0.0f, 0.6f}, 0.2f), at({0.1f, 0.0f}, -0.5f)},
+          {make_segment({-1.5f, 0.0f}, {1.5f, 0.0f}), at({0.0f, 0.1f}, 0.05f)},
+          {make_segment({-1.0f, 0.0f}, {1.0f, 0.0f}), at({0.2f, 0.1f}, 1.3f)}};
+}
+
+std::string describe(const Placed& placed) {
+  const Shape& shape = placed.shape;
+  std::string name = std::to_string(static_cast<int>(shape.type()));
+  if (shape.type() == ShapeType::Polygon) name += " rounding " + std::to_string(shape.polygon().rounding);
+  return name + " at (" + std::to_string(placed.transform.position.x) + ", " +
+         std::to_string(placed.transform.position.y) + ")";
+}
+
+// Every pair among circle, box, oriented box, polygon, rounded polygon, capsule and segment, in
+// both orders: at most two points, a unit normal, finite points, and, when the kinds differ,
+// the two orders mirrored bit for bit (one function and a flip).
+TEST(CollisionTable, EveryKindEveryPairBothOrdersMirrored) {
+  const std::vector<Placed> shapes = every_kind_overlapping();
+  for (const Placed& a : shapes) {
+    for (const Placed& b : shapes) {
+      if (&a == &b) continue;
+      SCOPED_TRACE("A " + describe(a) + ", B " + describe(b));
+      const Manifold manifold = collide(a.shape, a.transform, b.shape, b.transform, 0.02f);
+      const Manifold swapped = collide(b.shape, b.transform, a.shape, a.transform, 0.02f);
+      ASSERT_GT(manifold.point_count, 0);
+      ASSERT_LE(manifold.point_count, max_manifold_points);
+      expect_unit(manifold.normal);
+      for (int i = 0; i < manifold.point_count; ++i) {
+        EXPECT_TRUE(std::isfinite(manifold.points[i].depth));
+        EXPECT_TRUE(is_finite(manifold.points[i].point));
+      }
+      ASSERT_GT(swapped.point_count, 0);
+      // Two shapes of one kind go through one function in both orders; deep in each other, as
+      // here, the two orders may pick different reference faces (a near tie, as for two
+      // polygons today): the same-kind tests below mirror clear cases.
+      if (a.shape.type() != b.shape.type()) {
+        expect_swapped(manifold, swapped, tolerance(4.0f));
+        EXPECT_EQ(swapped.normal, -manifold.normal);
+        for (int i = 0; i < manifold.point_count; ++i) {
+          const ManifoldPoint* other =
+              find_point(swapped, collide_detail::swap_feature_id(manifold.points[i].feature_id));
+          ASSERT_NE(other, nullptr);
+          EXPECT_EQ(other->point, manifold.points[i].point);
+          EXPECT_EQ(other->depth, manifold.points[i].depth);
+        }
+      }
+    }
+  }
+}
+
+TEST(CollisionTable, EveryKindSeparatedGivesNoPointsAndMarginGivesGaps) {
+  const std::vector<Placed> shapes = every_kind_overlapping();
+  for (const Placed& a : shapes) {
+    for (Placed b : shapes) {
+      b.transform.position += vec2(10.0f, -7.0f);
+      EXPECT_EQ(collide(a.shape, a.transform, b.shape, b.transform, 0.05f).point_count, 0);
+      EXPECT_EQ(collide(b.shape, b.transform, a.shape, a.transform, 0.05f).point_count, 0);
+    }
+  }
+}
+
+TEST(CollideCapsules, CrossingAtRightAnglesGiveOnePoint) {
+  // A lying capsule (radius 0.25) and a standing one (radius 0.2) whose lower cap dips 1 cm
+  // into it, off-centre.
+  const Shape lying = make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f);
+  const Shape standing = make_capsule({0.0f, -0.5f}, {0.0f, 0.5f}, 0.2f);
+  const Transform xb = at({0.3f, 0.25f + 0.2f + 0.5f - 0.01f});
+  const Manifold manifold = collide(lying, at({0.0f, 0.0f}), standing, xb, 0.02f);
+  ASSERT_EQ(manifold.point_count, 1);
+  expect_vec_near(manifold.normal, {0.0f, 1.0f}, tolerance());
+  EXPECT_NEAR(manifold.points[0].depth, 0.01f, tolerance());
+  expect_vec_near(manifold.points[0].point, {0.3f, 0.25f - 0.005f}, tolerance());
+  expect_swapped(manifold, collide(standing, xb, lying, at({0.0f, 0.0f}), 0.02f), tolerance());
+}
+
+TEST(CollideCapsules, ParallelGiveTwoPoints) {
+  const Shape lower = make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f);
+  const Shape upper = make_capsule({-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f);
+  const Transform xb = at({0.2f, 0.5f - 0.02f});
+  const Manifold manifold = collide(lower, at({0.0f, 0.0f}), upper, xb, 0.02f);
+  ASSERT_EQ(manifold.point_count, 2);
+  expect_vec_near(manifold.normal, {0.0f, 1.0f}, tolerance());
+  EXPECT_NE(manifold.points[0].feature_id, manifold.points[1].feature_id);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(manifold.points[i].depth, 0.02f, tolerance());
+    EXPECT_NEAR(manifold.points[i].point.y, 0.25f - 0.01f, tolerance());
+  }
+  EXPECT_NEAR(std::fabs(manifold.points[0].point.x - manifold.points[1].point.x), 1.0f, tolerance());
+}
+
+TEST(CollideCapsules, EndToEndGivesTheCapsNormal) {
+  // Two capsules on one line, caps 1 cm into each other: one point on the axis (no face normal
+  // of either separates them: the corner case must find it).
+  const Shape a = make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f);
+  const Shape b = make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f);
+  const Manifold manifold = collide(a, at({0.0f, 0.0f}), b, at({2.49f, 0.0f}), 0.0f);
+  ASSERT_EQ(manifold.point_count, 1);
+  expect_vec_near(manifold.normal, {1.0f, 0.0f}, tolerance());
+  EXPECT_NEAR(manifold.points[0].depth, 0.01f, tolerance(4.0f));
+  expect_vec_near(manifold.points[0].point, {1.245f, 0.0f}, tolerance(2.0f));
+  // Turned a little about the touching caps: still one point, the normal between the caps.
+  const Transform turned{vec2(1.0f + 0.49f * std::cos(0.2f), 0.49f * std::sin(0.2f)) +
+                             Rotation::from_angle(0.3f).rotate(vec2(1.0f, 0.0f)),
+                         Rotation::from_angle(0.3f)};
+  const Manifold tilted = collide(a, at({0.0f, 0.0f}), b, turned, 0.0f);
+  ASSERT_EQ(tilted.point_count, 1);
+  expect_vec_near(tilted.normal, {std::cos(0.2f), std::sin(0.2f)}, 1e-5f);
+  EXPECT_NEAR(tilted.points[0].depth, 0.01f, 1e-5f);
+}
+
+TEST(CollideCapsules, LyingOnBoxTwoPointsAtRestDepthZero) {
+  const Shape ground = make_box({5.0f, 0.5f});
+  const Shape capsule = make_capsule({-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f);
+  // Capsule axis 0.25 m above the ground's top: touching, and with a 2 cm margin a contact.
+  const Manifold manifold = collide(ground, at({0.0f, -0.5f}), capsule, at({0.0f, 0.25f}), 0.02f);
+  ASSERT_EQ(manifold.point_count, 2);
+  expect_vec_near(manifold.normal, {0.0f, 1.0f}, tolerance());
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(manifold.points[i].depth, 0.0f, tolerance());
+  // 1 cm above: two speculative points of depth -0.01.
+  const Manifold gap = collide(ground, at({0.0f, -0.5f}), capsule, at({0.0f, 0.26f}), 0.02f);
+  ASSERT_EQ(gap.point_count, 2);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(gap.points[i].depth, -0.01f, tolerance());
+  // 3 cm above: beyond the margin.
+  EXPECT_EQ(collide(ground, at({0.0f, -0.5f}), capsule, at({0.0f, 0.28f}), 0.02f).point_count, 0);
+}
+
+TEST(CollideCapsules, FeatureIdsStableUnderTinyTranslation) {
+  const Shape ground = make_box({5.0f, 0.5f});
+  const Shape capsule = make_capsule({-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f);
+  const Manifold first = collide(ground, at({0.0f, -0.5f}), capsule, at({0.0f, 0.245f}, 0.01f), 0.02f);
+  const Manifold second = collide(ground, at({0.0f, -0.5f}), capsule, at({0.001f, 0.2449f}, 0.0101f), 0.02f);
+  ASSERT_EQ(first.point_count, 2);
+  ASSERT_EQ(second.point_count, 2);
+  for (int i = 0; i < 2; ++i) EXPECT_EQ(first.points[i].feature_id, second.points[i].feature_id);
+}
+
+TEST(CollideCapsuleCircle, SideAndCap) {
+  const Shape capsule = make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f);
+  const Circle circle{0.5f};
+  // Above the side: normal +y, depth 0.05.
+  Manifold side = collide(capsule, at({0.0f, 0.0f}), Shape(circle), at({0.4f, 0.7f}));
+  ASSERT_EQ(side.point_count, 1);
+  expect_vec_near(side.normal, {0.0f, 1.0f}, tolerance());
+  EXPECT_NEAR(side.points[0].depth, 0.05f, tolerance());
+  // Beyond the cap along a diagonal: normal from the cap centre.
+  const vec2 direction = glm::normalize(vec2(1.0f, 1.0f));
+  const vec2 centre = vec2(1.0f, 0.0f) + 0.7f * direction;
+  Manifold cap = collide(capsule, at({0.0f, 0.0f}), Shape(circle), at(centre));
+  ASSERT_EQ(cap.point_count, 1);
+  expect_vec_near(cap.normal, direction, tolerance());
+  EXPECT_NEAR(cap.points[0].depth, 0.05f, tolerance());
+  expect_swapped(cap, collide(Shape(circle), at(centre), capsule, at({0.0f, 0.0f})), tolerance());
+}
+
+TEST(CollideSegment, CircleOnSegmentAndBeyondItsEnd) {
+  const Shape segment = make_segment({-2.0f, 0.0f}, {2.0f, 0.0f});
+  const Shape ball = make_circle(0.5f);
+  const Manifold on = collide(segment, at({0.0f, 0.0f}), ball, at({1.0f, 0.49f}));
+  ASSERT_EQ(on.point_count, 1);
+  expect_vec_near(on.normal, {0.0f, 1.0f}, tolerance());
+  EXPECT_NEAR(on.points[0].depth, 0.01f, tolerance());
+  // Below the segment the normal points down: a segment is two-sided.
+  const Manifold below = collide(segment, at({0.0f, 0.0f}), ball, at({1.0f, -0.49f}));
+  ASSERT_EQ(below.point_count, 1);
+  expect_vec_near(below.normal, {0.0f, -1.0f}, tolerance());
+  // On the segment's line beyond its end: the end's normal.
+  const Manifold end = collide(segment, at({0.0f, 0.0f}), ball, at({2.3f, 0.0f}));
+  ASSERT_EQ(end.point_count, 1);
+  expect_vec_near(end.normal, {1.0f, 0.0f}, tolerance());
+  EXPECT_NEAR(end.points[0].depth, 0.2f, tolerance());
+}
+
+TEST(CollideSegment, BoxOnSegmentTwoPoints) {
+  const Shape segment = make_segment({-2.0f, 0.0f}, {2.0f, 0.0f});
+  const Shape box = make_oriented_box({0.5f, 0.25f});
+  const Manifold manifold = collide(segment, at({0.0f, 0.0f}), box, at({0.3f, 0.24f}), 0.02f);
+  ASSERT_EQ(manifold.point_count, 2);
+  expect_vec_near(manifold.normal, {0.0f, 1.0f}, tolerance());
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(manifold.points[i].depth, 0.01f, tolerance());
+}
+
+TEST(CollideRoundedPolygon, RoundingZeroIsTodaysPolygonBitForBit) {
+  vec2 centroid_sharp, centroid_rounded;
+  const Shape sharp = make_polygon(pentagon, 5, &centroid_sharp);
+  const Shape rounded = make_rounded_polygon(pentagon, 5, 0.0f, &centroid_rounded);
+  ASSERT_EQ(rounded.type(), ShapeType::Polygon);
+  EXPECT_EQ(centroid_sharp, centroid_rounded);
+  EXPECT_EQ(rounded.polygon().count, sharp.polygon().count);
+  EXPECT_EQ(rounded.polygon().rounding, 0.0f);
+  EXPECT_EQ(rounded.polygon().radius, sharp.polygon().radius);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(rounded.polygon().vertices[i], sharp.polygon().vertices[i]);
+    EXPECT_EQ(rounded.polygon().normals[i], sharp.polygon().normals[i]);
+  }
+  // The jump table sends a rounding-0 polygon to the tutorial's functions.
+  const Shape ground = make_box({5.0f, 0.5f});
+  const Manifold expected =
+      collide_box_polygon(ground.box(), at({0.0f, -0.5f}), sharp.polygon(), at({0.0f, 0.4f}, 0.1f), 0.02f);
+  const Manifold actual = collide(ground, at({0.0f, -0.5f}), rounded, at({0.0f, 0.4f}, 0.1f), 0.02f);
+  ASSERT_EQ(actual.point_count, expected.point_count);
+  EXPECT_EQ(actual.normal, expected.normal);
+  for (int i = 0; i < actual.point_count; ++i) {
+    EXPECT_EQ(actual.points[i].point, expected.points[i].point);
+    EXPECT_EQ(actual.points[i].depth, expected.points[i].depth);
+    EXPECT_EQ(actual.points[i].feature_id, expected.points[i].feature_id);
+  }
+}
+
+TEST(CollideRoundedPolygon, FlatOnGroundDepthCountsTheRounding) {
+  // A 1 x 0.5 box rounded by 0.1 whose bottom edge (core) is 0.1 above the ground: touching.
+  const vec2 box[4] = {{-0.5f, -0.25f}, {0.5f, -0.25f}, {0.5f, 0.25f}, {-0.5f, 0.25f}};
+  const Shape rounded = make_rounded_polygon(box, 4, 0.1f);
+  const Shape ground = make_box({5.0f, 0.5f});
+  const Manifold touching = collide(ground, at({0.0f, -0.5f}), rounded, at({0.0f, 0.35f}), 0.02f);
+  ASSERT_EQ(touching.point_count, 2);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(touching.points[i].depth, 0.0f, tolerance());
+  const Manifold deep = collide(ground, at({0.0f, -0.5f}), rounded, at({0.0f, 0.33f}), 0.02f);
+  ASSERT_EQ(deep.point_count, 2);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(deep.points[i].depth, 0.02f, tolerance());
+    EXPECT_NEAR(deep.points[i].point.y, -0.01f, tolerance());
+  }
+}
+
+// A rounded corner meets others as the circle of the rounding radius about the vertex would:
+// the same normal, depth and point.
+TEST(CollideRoundedPolygon, CornerContactIsTheCirclesContact) {
+  const vec2 box[4] = {{-0.5f, -0.25f}, {0.5f, -0.25f}, {0.5f, 0.25f}, {-0.5f, 0.25f}};
+  const float rounding = 0.1f;
+  const Shape rounded = make_rounded_polygon(box, 4, rounding);
+  const Transform pose = at({0.3f, 0.9f}, -0.7f);  // tipped onto its lower-right corner
+  const vec2 corner = pose.apply(rounded.polygon().vertices[1]);
+  const Shape corner_circle = make_circle(rounding);
+  // Against a tilted ground polygon, a box and a circle: each as the corner's circle.
+  const std::vector<Placed> others = {
+      {make_oriented_box({3.0f, 0.5f}), at(corner + vec2(0.0f, -0.58f) + vec2(0.2f, 0.0f), 0.0f)},
+      {make_oriented_box({3.0f, 0.5f}),
+       Transform{corner + Rotation::from_angle(0.2f).rotate(vec2(0.3f, -0.585f)), Rotation::from_angle(0.2f)}},
+      {make_circle(0.4f), at(corner + glm::normalize(vec2(0.3f, -1.0f)) * 0.49f)}};
+  for (const Placed& other : others) {
+    const Manifold expected = collide(other.shape, other.transform, corner_circle, at(corner), 0.02f);
+    const Manifold actual = collide(other.shape, other.transform, rounded, pose, 0.02f);
+    ASSERT_EQ(expected.point_count, 1);
+    ASSERT_EQ(actual.point_count, 1);
+    expect_vec_near(actual.normal, expected.normal, 1e-5f);
+    EXPECT_NEAR(actual.points[0].depth, expected.points[0].depth, 1e-5f);
+    expect_vec_near(actual.points[0].point, expected.points[0].point, 1e-5f);
+  }
+}
+
+TEST(CollideRoundedPolygon, CirclesAtTheEdgeAndTheCorner) {
+  const vec2 box[4] = {{-0.5f, -0.5f}, {0.5f, -0.5f}, {0.5f, 0.5f}, {-0.5f, 0.5f}};
+  const Shape rounded = make_rounded_polygon(box, 4, 0.2f);
+  const Shape ball = make_circle(0.3f);
+  const Manifold face = collide(rounded, at({0.0f, 0.0f}), ball, at({0.1f, 0.99f}));
+  ASSERT_EQ(face.point_count, 1);
+  expect_vec_near(face.normal, {0.0f, 1.0f}, tolerance());
+  EXPECT_NEAR(face.points[0].depth, 0.01f, tolerance());
+  const vec2 direction = glm::normalize(vec2(1.0f, 2.0f));
+  const vec2 centre = vec2(0.5f, 0.5f) + 0.49f * direction;
+  const Manifold corner = collide(rounded, at({0.0f, 0.0f}), ball, at(centre));
+  ASSERT_EQ(corner.point_count, 1);
+  expect_vec_near(corner.normal, direction, tolerance());
+  EXPECT_NEAR(corner.points[0].depth, 0.01f, tolerance());
+}
+
+// Same-kind pairs in clear (not near-tie) contact: the two orders mirror each other.
+TEST(CollisionTable, SameKindPairsMirrored) {
+  const vec2 box[4] = {{-0.5f, -0.25f}, {0.5f, -0.25f}, {0.5f, 0.25f}, {-0.5f, 0.25f}};
+  const Shape capsule = make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f);
+  const Shape short_capsule = make_capsule({-0.5f, 0.0f}, {0.5f, 0.0f}, 0.2f);
+  const Shape standing = make_capsule({0.0f, -0.5f}, {0.0f, 0.5f}, 0.2f);
+  const Shape segment = make_segment({-1.0f, 0.0f}, {1.0f, 0.0f});
+  const Shape rounded = make_rounded_polygon(box, 4, 0.1f);
+  const Shape rounded_small = make_rounded_polygon(pentagon, 5, 0.05f);
+  const Shape sharp = make_polygon(box, 4);
+  struct Pair {
+    Placed a, b;
+  };
+  const std::vector<Pair> pairs = {
+      {{capsule, at({0.0f, 0.0f})}, {short_capsule, at({0.3f, 0.44f}, 0.05f)}},
+      {{capsule, at({0.0f, 0.0f})}, {standing, at({0.3f, 0.93f}, 0.2f)}},
+      {{capsule, at({0.0f, 0.0f})}, {capsule, at({2.3f, 0.1f}, 0.4f)}},
+      {{segment, at({0.0f, 0.0f})}, {segment, at({0.3f, 1.01f}, 1.5707964f)}},
+      {{rounded, at({0.0f, 0.0f})}, {rounded, at({0.2f, 0.68f}, 0.1f)}},
+      {{rounded, at({0.0f, 0.0f})}, {rounded_small, at({0.7f, 1.1f}, 0.6f)}},
+      {{rounded, at({0.0f, 0.0f})}, {sharp, at({-0.3f, 0.58f}, -0.05f)}},
+  };
+  for (const Pair& pair : pairs) {
+    SCOPED_TRACE("A " + describe(pair.a) + ", B " + describe(pair.b));
+    const Manifold manifold = collide(pair.a.shape, pair.a.transform, pair.b.shape, pair.b.transform, 0.02f);
+    const Manifold swapped = collide(pair.b.shape, pair.b.transform, pair.a.shape, pair.a.transform, 0.02f);
+    ASSERT_GT(manifold.point_count, 0);
+    expect_swapped(manifold, swapped, tolerance(4.0f));
+  }
 }
 
 }  // namespace

@@ -364,5 +364,190 @@ TEST(ShapeRaycast, PolygonClipsAgainstEdgePlanes) {
   expect_vec_near(hit.normal, vec2(-1.0f, 0.0f), tolerance());
 }
 
+// ---- capsules, segments, rounded polygons (issue 31) -------------------------------------
+
+TEST(ShapeValidation, CapsuleAndSegmentEnds) {
+  expect_error([] { make_capsule({1.0f, 2.0f}, {1.0f, 2.0f}, 0.5f); },
+               {"make_capsule", "center1 and center2", "use a circle"});
+  for (float radius : {0.0f, -0.1f, not_a_number, infinity}) {
+    expect_error([&] { make_capsule({0.0f, 0.0f}, {1.0f, 0.0f}, radius); }, {"make_capsule", "radius"});
+  }
+  expect_error([] { make_capsule({not_a_number, 0.0f}, {1.0f, 0.0f}, 0.5f); },
+               {"make_capsule", "center1", "not finite"});
+  expect_error([] { make_segment({3.0f, 1.0f}, {3.0f, 1.0f}); },
+               {"make_segment", "point1 and point2", "length"});
+  expect_error([] { make_segment({0.0f, 0.0f}, {infinity, 0.0f}); },
+               {"make_segment", "point2", "not finite"});
+  expect_error([] {
+    const vec2 square[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+    make_rounded_polygon(square, 4, -0.01f);
+  }, {"make_rounded_polygon", "radius", ">= 0"});
+}
+
+TEST(ShapeValidation, CapsuleAndSegmentAreCentredOnTheirMidpoint) {
+  vec2 centroid;
+  const Shape capsule = make_capsule({1.0f, 2.0f}, {3.0f, 2.0f}, 0.5f, &centroid);
+  expect_vec_near(centroid, {2.0f, 2.0f}, tolerance());
+  expect_vec_near(capsule.capsule().center1, {-1.0f, 0.0f}, tolerance());
+  expect_vec_near(capsule.capsule().center2, {1.0f, 0.0f}, tolerance());
+  const Shape segment = make_segment({-4.0f, 1.0f}, {0.0f, 3.0f}, &centroid);
+  expect_vec_near(centroid, {-2.0f, 2.0f}, tolerance());
+  expect_vec_near(segment.segment().point1, {-2.0f, -1.0f}, tolerance());
+  expect_vec_near(segment.segment().point2, {2.0f, 1.0f}, tolerance());
+}
+
+/// Relative difference, for mass properties against closed forms.
+double relative(double actual, double expected) { return std::fabs(actual - expected) / std::fabs(expected); }
+
+// Capsule of length L and radius r: a rectangle L x 2r and two half discs. Integrated here in
+// polar coordinates about each cap centre (h = L/2 from the centroid), independently of
+// shape.cpp's parallel-axis route: per half disc
+// int (h^2 + 2 h rho cos(phi) + rho^2) rho drho dphi = pi r^2 h^2 / 2 + 4 h r^3 / 3 + pi r^4 / 4.
+TEST(ShapeMass, CapsuleMatchesTheClosedForm) {
+  for (const auto& [length, radius] : {std::pair<double, double>{2.0, 0.25}, {1.0, 1.0}, {0.1, 3.0}, {7.5, 0.05}}) {
+    const double density = 1.7;
+    const Shape capsule = make_capsule({0.0f, 0.0f}, {static_cast<float>(length) * 0.6f, static_cast<float>(length) * 0.8f},
+                                       static_cast<float>(radius));
+    const MassData mass = compute_mass(capsule, static_cast<float>(density));
+    const double pi_d = 3.14159265358979323846;
+    const double h = 0.5 * length;
+    const double area = pi_d * radius * radius + 2.0 * radius * length;
+    const double rectangle = 2.0 * radius * length * (length * length + 4.0 * radius * radius) / 12.0;
+    const double caps = 2.0 * (pi_d * radius * radius * h * h / 2.0 + 4.0 * h * radius * radius * radius / 3.0 +
+                               pi_d * radius * radius * radius * radius / 4.0);
+    EXPECT_LT(relative(mass.area, area), 1e-6) << length << " x " << radius;
+    EXPECT_LT(relative(mass.mass, density * area), 1e-6);
+    EXPECT_LT(relative(mass.inertia, density * (rectangle + caps)), 1e-6) << length << " x " << radius;
+    expect_vec_near(mass.centroid, {0.0f, 0.0f}, tolerance(static_cast<float>(length)));
+  }
+}
+
+// A square of half side a rounded by r: core square, four edge strips 2a x r, four quarter discs
+// about the corners (each, in polar coordinates about its corner v = (a, a):
+// |v|^2 pi r^2 / 4 + 4 a r^3 / 3 + pi r^4 / 8).
+TEST(ShapeMass, RoundedSquareMatchesTheClosedForm) {
+  for (const auto& [a, r] : {std::pair<double, double>{0.5, 0.1}, {1.0, 1.0}, {0.05, 2.0}, {3.0, 0.01}}) {
+    const float af = static_cast<float>(a);
+    const vec2 square[4] = {{-af, -af}, {af, -af}, {af, af}, {-af, af}};
+    const double density = 0.8;
+    const MassData mass = compute_mass(make_rounded_polygon(square, 4, static_cast<float>(r)), static_cast<float>(density));
+    const double pi_d = 3.14159265358979323846;
+    const double area = 4.0 * a * a + 8.0 * a * r + pi_d * r * r;
+    const double core = 8.0 * a * a * a * a / 3.0;
+    const double strip_area = 2.0 * a * r;
+    const double strips = 4.0 * (strip_area * (4.0 * a * a + r * r) / 12.0 + strip_area * (a + 0.5 * r) * (a + 0.5 * r));
+    const double corners = 4.0 * (2.0 * a * a * pi_d * r * r / 4.0 + 4.0 * a * r * r * r / 3.0 + pi_d * r * r * r * r / 8.0);
+    EXPECT_LT(relative(mass.area, area), 1e-6) << a << ", " << r;
+    EXPECT_LT(relative(mass.inertia, density * (core + strips + corners)), 1e-6) << a << ", " << r;
+    expect_vec_near(mass.centroid, {0.0f, 0.0f}, 1e-6f);
+  }
+}
+
+// A lopsided rounded triangle: the rounding moves the centroid off the core's, and
+// make_rounded_polygon centres the rounded solid. Checked against a fine grid integration
+// (independent of the strip-and-sector sums), to its own accuracy.
+TEST(ShapeMass, RoundedTriangleAgainstGridIntegration) {
+  const vec2 triangle[3] = {{0.0f, 0.0f}, {3.0f, 0.0f}, {0.5f, 1.0f}};
+  const float rounding = 0.4f;
+  vec2 centroid;
+  const Shape shape = make_rounded_polygon(triangle, 3, rounding, &centroid);
+  const MassData mass = compute_mass(shape, 1.0f);
+  expect_vec_near(mass.centroid, {0.0f, 0.0f}, 1e-6f);
+  // Grid over the bounds, in the input coordinates.
+  const int cells = 1200;
+  const double lower_x = -0.5, upper_x = 3.5, lower_y = -0.5, upper_y = 1.5;
+  const double dx = (upper_x - lower_x) / cells, dy = (upper_y - lower_y) / cells;
+  double area = 0.0, mx = 0.0, my = 0.0, second = 0.0;
+  for (int i = 0; i < cells; ++i) {
+    for (int j = 0; j < cells; ++j) {
+      const vec2 p(static_cast<float>(lower_x + (i + 0.5) * dx), static_cast<float>(lower_y + (j + 0.5) * dy));
+      if (!shape_contains_point(shape, Transform{centroid, Rotation{}}, p)) continue;
+      area += dx * dy;
+      mx += dx * dy * p.x;
+      my += dx * dy * p.y;
+      second += dx * dy * (static_cast<double>(p.x) * p.x + static_cast<double>(p.y) * p.y);
+    }
+  }
+  const double cx = mx / area, cy = my / area;
+  EXPECT_LT(relative(mass.area, area), 2e-3);
+  EXPECT_NEAR(centroid.x, cx, 2e-3);
+  EXPECT_NEAR(centroid.y, cy, 2e-3);
+  EXPECT_LT(relative(mass.inertia, second - area * (cx * cx + cy * cy)), 3e-3);
+  // And the core's centroid (1.1667, 0.3333) is not the rounded one.
+  EXPECT_GT(std::fabs(centroid.x - 3.5f / 3.0f) + std::fabs(centroid.y - 1.0f / 3.0f), 1e-2f);
+}
+
+TEST(ShapeMass, SegmentIsMassless) {
+  const MassData mass = compute_mass(make_segment({-1.0f, 0.0f}, {1.0f, 0.0f}), 5.0f);
+  EXPECT_EQ(mass.mass, 0.0f);
+  EXPECT_EQ(mass.area, 0.0f);
+  EXPECT_EQ(mass.inertia, 0.0f);
+}
+
+TEST(ShapeBounds, CapsuleSegmentRoundedPolygon) {
+  const Aabb capsule = compute_aabb(make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f), at({2.0f, 1.0f}, pi / 2.0f));
+  expect_vec_near(capsule.lower, {1.5f, -0.5f}, tolerance(2.0f));
+  expect_vec_near(capsule.upper, {2.5f, 2.5f}, tolerance(2.0f));
+  const Aabb segment = compute_aabb(make_segment({-1.0f, -2.0f}, {1.0f, 2.0f}), at({0.0f, 0.0f}));
+  expect_vec_near(segment.lower, {-1.0f, -2.0f}, tolerance());
+  expect_vec_near(segment.upper, {1.0f, 2.0f}, tolerance());
+  const vec2 square[4] = {{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}};
+  const Aabb rounded = compute_aabb(make_rounded_polygon(square, 4, 0.25f), at({0.0f, 0.0f}));
+  expect_vec_near(rounded.lower, {-1.25f, -1.25f}, tolerance());
+  expect_vec_near(rounded.upper, {1.25f, 1.25f}, tolerance());
+}
+
+TEST(ShapeContains, CapsuleSegmentRoundedCorner) {
+  const Shape capsule = make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f);
+  EXPECT_TRUE(shape_contains_point(capsule, at({0.0f, 0.0f}), {1.3f, 0.3f}));
+  EXPECT_FALSE(shape_contains_point(capsule, at({0.0f, 0.0f}), {1.4f, 0.4f}));
+  EXPECT_FALSE(shape_contains_point(make_segment({-1.0f, 0.0f}, {1.0f, 0.0f}), at({0.0f, 0.0f}), {0.0f, 0.0f}));
+  const vec2 square[4] = {{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}};
+  const Shape rounded = make_rounded_polygon(square, 4, 0.25f);
+  EXPECT_TRUE(shape_contains_point(rounded, at({0.0f, 0.0f}), {1.15f, 1.15f}));   // inside the arc
+  EXPECT_FALSE(shape_contains_point(rounded, at({0.0f, 0.0f}), {1.2f, 1.2f}));    // beyond the arc
+  EXPECT_TRUE(shape_contains_point(rounded, at({0.0f, 0.0f}), {0.0f, 1.24f}));    // the edge strip
+}
+
+TEST(ShapeRaycast, CapsuleSideAndCap) {
+  const Shape capsule = make_capsule({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f);
+  ShapeRayHit hit;
+  ASSERT_TRUE(raycast_shape(capsule, at({0.0f, 0.0f}), {0.2f, 2.0f}, {0.0f, -4.0f}, &hit));
+  EXPECT_NEAR(hit.fraction, 1.5f / 4.0f, tolerance());
+  expect_vec_near(hit.normal, {0.0f, 1.0f}, tolerance());
+  ASSERT_TRUE(raycast_shape(capsule, at({0.0f, 0.0f}), {3.0f, 0.0f}, {-4.0f, 0.0f}, &hit));
+  EXPECT_NEAR(hit.fraction, 1.5f / 4.0f, tolerance());
+  expect_vec_near(hit.normal, {1.0f, 0.0f}, tolerance());
+  EXPECT_FALSE(raycast_shape(capsule, at({0.0f, 0.0f}), {0.0f, 0.0f}, {0.0f, 4.0f}, &hit));  // inside
+  EXPECT_FALSE(raycast_shape(capsule, at({0.0f, 0.0f}), {3.0f, 0.6f}, {-6.0f, 0.0f}, &hit));  // misses
+}
+
+TEST(ShapeRaycast, SegmentFacesTheRay) {
+  const Shape segment = make_segment({-1.0f, 0.0f}, {1.0f, 0.0f});
+  ShapeRayHit hit;
+  ASSERT_TRUE(raycast_shape(segment, at({0.0f, 1.0f}), {0.5f, 3.0f}, {0.0f, -4.0f}, &hit));
+  EXPECT_NEAR(hit.fraction, 0.5f, tolerance());
+  expect_vec_near(hit.normal, {0.0f, 1.0f}, tolerance());
+  ASSERT_TRUE(raycast_shape(segment, at({0.0f, 1.0f}), {0.5f, -1.0f}, {0.0f, 4.0f}, &hit));
+  expect_vec_near(hit.normal, {0.0f, -1.0f}, tolerance());
+  EXPECT_FALSE(raycast_shape(segment, at({0.0f, 1.0f}), {1.5f, 3.0f}, {0.0f, -4.0f}, &hit));
+}
+
+TEST(ShapeRaycast, RoundedCornerNormalIsRadial) {
+  const vec2 square[4] = {{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}};
+  const Shape rounded = make_rounded_polygon(square, 4, 0.5f);
+  ShapeRayHit hit;
+  // Along the diagonal into the corner at (1, 1): enters at (1, 1) + 0.5 (1, 1)/sqrt(2).
+  const vec2 origin(3.0f, 3.0f);
+  ASSERT_TRUE(raycast_shape(rounded, at({0.0f, 0.0f}), origin, {-3.0f, -3.0f}, &hit));
+  const vec2 entry = vec2(1.0f) + 0.5f * glm::normalize(vec2(1.0f));
+  EXPECT_NEAR(hit.fraction, (origin.x - entry.x) / 3.0f, 1e-6f);
+  expect_vec_near(hit.normal, glm::normalize(vec2(1.0f)), 1e-6f);
+  // Straight down onto the flat top: the edge strip, at y = 1.5.
+  ASSERT_TRUE(raycast_shape(rounded, at({0.0f, 0.0f}), {0.3f, 3.0f}, {0.0f, -3.0f}, &hit));
+  EXPECT_NEAR(hit.fraction, 0.5f, tolerance());
+  expect_vec_near(hit.normal, {0.0f, 1.0f}, tolerance());
+}
+
 }  // namespace
 }  // namespace impulse2d

@@ -177,8 +177,12 @@ TEST(Snapshot, CorruptBuffersAreErrors) {
     refused(std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(length)), "truncated");
   }
   std::vector<std::uint8_t> version = bytes;
-  version[4] = 2;
-  refused(version, "version 2");
+  version[4] = 3;
+  refused(version, "version 3");
+  // Version 1 (before capsules, segments and rounded polygons) is refused cleanly too.
+  std::vector<std::uint8_t> old_version = bytes;
+  old_version[4] = 1;
+  refused(old_version, "snapshot version 1, this build reads version 2");
   std::vector<std::uint8_t> magic = bytes;
   magic[0] ^= 0xFF;
   refused(magic, "magic");

@@ -177,8 +177,8 @@ INSTANTIATE_TEST_SUITE_P(
                 R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Static"})"),
             "bodies[0].material: a dynamic body needs density > 0"},
         BadFile{"UnknownShape",
-                scene_with_body(R"({"shape": {"type": "capsule"}, "position": [0, 0]})"),
-                "bodies[0].shape.type: unknown shape type \"capsule\""},
+                scene_with_body(R"({"shape": {"type": "chain"}, "position": [0, 0]})"),
+                "bodies[0].shape.type: unknown shape type \"chain\""},
         BadFile{
             "Misspelt",
             scene_with_body(R"({"shape": {"type": "circle", "raduis": 1}, "position": [0, 0]})"),

@@ -1,5 +1,6 @@
-// libFuzzer target: two shapes and two transforms decoded from the bytes go through the
-// collision jump table in both orders. Every manifold must have at most 2 points, finite
+// libFuzzer target: two shapes (circle, box, oriented box, polygon, capsule, segment, rounded
+// polygon) and two transforms decoded from the bytes go through the collision jump table in
+// both orders. Every manifold must have at most 2 points, finite
 // depths and points, a unit normal when touching, and swapping the pair must not turn a
 // clear contact into none or make the normal point the same way (except when the centres do
 // not differ along the normal: then a fixed direction is chosen by design).
@@ -36,24 +37,38 @@ class Bytes {
   std::size_t at_ = 0;
 };
 
+/// Kinds 0..3 as before the new shapes (so the older seeds decode as they did), then capsule,
+/// segment and rounded polygon.
 std::optional<Shape> read_shape(Bytes& bytes) {
-  switch (bytes.byte() % 4) {
-    case 0:
-      return make_circle(bytes.in(0.01f, 5.0f));
-    case 1:
-      return make_box({bytes.in(0.01f, 5.0f), bytes.in(0.01f, 5.0f)});
-    case 2:
-      return make_oriented_box({bytes.in(0.01f, 5.0f), bytes.in(0.01f, 5.0f)});
-    default: {
-      const int count = 3 + bytes.byte() % (max_polygon_vertices - 2);
-      vec2 vertices[max_polygon_vertices];
-      for (int i = 0; i < count; ++i) vertices[i] = {bytes.in(-5.0f, 5.0f), bytes.in(-5.0f, 5.0f)};
-      try {
-        return make_polygon(vertices, count);
-      } catch (const Error&) {
-        return std::nullopt;  // concave or degenerate: rejected by design
+  const int kind = bytes.byte() % 7;
+  try {
+    switch (kind) {
+      case 0:
+        return make_circle(bytes.in(0.01f, 5.0f));
+      case 1:
+        return make_box({bytes.in(0.01f, 5.0f), bytes.in(0.01f, 5.0f)});
+      case 2:
+        return make_oriented_box({bytes.in(0.01f, 5.0f), bytes.in(0.01f, 5.0f)});
+      case 4: {
+        const vec2 center1{bytes.in(-3.0f, 3.0f), bytes.in(-3.0f, 3.0f)};
+        const vec2 center2{bytes.in(-3.0f, 3.0f), bytes.in(-3.0f, 3.0f)};
+        return make_capsule(center1, center2, bytes.in(0.01f, 2.0f));
+      }
+      case 5: {
+        const vec2 point1{bytes.in(-5.0f, 5.0f), bytes.in(-5.0f, 5.0f)};
+        const vec2 point2{bytes.in(-5.0f, 5.0f), bytes.in(-5.0f, 5.0f)};
+        return make_segment(point1, point2);
+      }
+      default: {  // 3: a polygon; 6: a rounded one
+        const int count = 3 + bytes.byte() % (max_polygon_vertices - 2);
+        vec2 vertices[max_polygon_vertices];
+        for (int i = 0; i < count; ++i) vertices[i] = {bytes.in(-5.0f, 5.0f), bytes.in(-5.0f, 5.0f)};
+        if (kind == 3) return make_polygon(vertices, count);
+        return make_rounded_polygon(vertices, count, bytes.in(0.0f, 1.0f));
       }
     }
+  } catch (const Error&) {
+    return std::nullopt;  // concave, degenerate, equal ends: rejected by design
   }
 }
 

@@ -1,6 +1,7 @@
 // libFuzzer target: `World::restore_snapshot` on arbitrary bytes (seeds in
-// tests/fuzz/corpus/restore_snapshot: snapshots saved by `trace --save-state` of small scenes,
-// without the state file's header). A buffer is either refused with `Error`, leaving the world
+// tests/fuzz/corpus/restore_snapshot: version-2 snapshots of small worlds saved with
+// `World::save_snapshot`: a ball dropped on a box, boxes falling through a polygon sensor, a
+// capsule and a rounded box on a segment floor). A buffer is either refused with `Error`, leaving the world
 // exactly as it was, or accepted; an accepted world must save to bytes that restore again to
 // the same bytes, and step a few times without crashing.
 #include <cstddef>
