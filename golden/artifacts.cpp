@@ -46,6 +46,7 @@ json check_to_json(const GoldenCheck& check, const json& files) {
              {"envelope_reach", check.noise->envelope_reach},
              {"stops_telling_step", check.noise->stops_telling_step},
              {"last_telling_step", check.noise->last_telling_step},
+             {"unsampled_living_set", check.noise->unsampled_living_set},
              {"escapes", std::move(escapes)}};
   }
   return {{"name", check.name},

@@ -108,6 +108,12 @@ std::string NoiseVerdict::describe_cannot_tell() const {
   text << "and this run moved " << (largest_move_body.empty() ? "no body" : largest_move_body)
        << " " << largest_move << " m; the bound within which a change is called noise is "
        << bound << " m (1 % of the scene's size, " << scene_scale << " m)";
+  if (!unsampled_living_set.empty()) {
+    text << "; which bodies are alive differs (" << unsampled_living_set.front();
+    if (unsampled_living_set.size() > 1) text << " and " << unsampled_living_set.size() - 1 << " more";
+    text << "), and rounding alone already changes which bodies this scene has removed by this "
+            "frame, in ways its eight perturbed runs do not all show";
+  }
   if (stops_telling_step >= 0) {
     text << "; the scene amplifies rounding beyond that bound from step " << stops_telling_step;
     if (last_telling_step >= 0) {
@@ -131,6 +137,9 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
   for (const BodyNoise& noise : envelope.bodies) noise_by_name[noise.name] = &noise;
   const std::set<std::string> extra_bodies(envelope.extra_bodies.begin(),
                                            envelope.extra_bodies.end());
+  // Does rounding alone already change which bodies are alive at the frame?
+  bool living_set_varies = !extra_bodies.empty();
+  for (const BodyNoise& noise : envelope.bodies) living_set_varies |= noise.may_be_missing;
   std::map<std::string, const BodyPose*> actual_by_name;
   for (const BodyPose& pose : actual_bodies) actual_by_name[pose.name] = &pose;
 
@@ -155,8 +164,12 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
     if (actual == actual_by_name.end()) {
       // Removed earlier in this run: noise when some perturbed run removed it too.
       if (noise == noise_by_name.end() || !noise->second->may_be_missing) {
-        verdict.escapes.push_back(
-            {golden.name + " (missing in this run)", 0.0, 0.0, "", true, true});
+        if (living_set_varies) {
+          verdict.unsampled_living_set.push_back(golden.name + " (removed in this run only)");
+        } else {
+          verdict.escapes.push_back(
+              {golden.name + " (missing in this run)", 0.0, 0.0, "", true, true});
+        }
       }
       ++verdict.compared;
       continue;
@@ -179,6 +192,10 @@ NoiseVerdict judge_against_envelope(const NoiseEnvelope& envelope,
   for (const auto& extra : actual_by_name) {
     ++verdict.compared;
     if (extra_bodies.count(extra.first) != 0) continue;  // some perturbed run had it too
+    if (living_set_varies) {
+      verdict.unsampled_living_set.push_back(extra.first + " (alive in this run only)");
+      continue;
+    }
     verdict.escapes.push_back({extra.first + " (not in the golden run)", 0.0, 0.0, "", true, true});
   }
 

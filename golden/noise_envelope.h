@@ -142,6 +142,11 @@ struct NoiseVerdict {
   std::int64_t last_telling_step = -1;
   /// True when the sidecar records the per-step spread (`NoiseCheckpoint::body_spread`).
   bool spread_recorded = false;
+  /// Bodies alive on one side only ("body #43 (alive in this run only)") in a scene whose
+  /// perturbed runs already disagree on which bodies are alive at the frame (some body
+  /// `may_be_missing`, or `extra_bodies`): eight samples cannot say which bodies rounding
+  /// may swap, so these are not escapes but make the verdict "cannot tell".
+  std::vector<std::string> unsampled_living_set;
 
   /// True when nothing left the envelope.
   bool within() const { return escapes.empty(); }
@@ -149,7 +154,8 @@ struct NoiseVerdict {
   /// move) is beyond `bound`: the scene's own chaos could explain it, and so could a real
   /// change.
   bool cannot_tell() const {
-    return within() && (largest_move > bound || envelope_reach > bound);
+    return within() &&
+           (largest_move > bound || envelope_reach > bound || !unsampled_living_set.empty());
   }
   /// "the perturbed runs ... step N ... frame M" for a cannot-tell verdict.
   std::string describe_cannot_tell() const;
