@@ -84,8 +84,7 @@ std::optional<std::pair<float, float>> visible_extent(const World& world,
 /// follows a body moves every frame anyway and is left as it is.
 render::Camera centred_camera(const SceneRun& run, const FramePlan& plan,
                               const ContactSheetOptions& options) {
-  const render::Camera camera =
-      scene_camera(run.scene().view.camera, run.world(), options.tile_width, options.tile_height);
+  const render::Camera camera = run_camera(run, options.tile_width, options.tile_height);
   if (run.scene().view.camera.mode == CameraSpec::Mode::Follow) return camera;
   SceneRun probe(run.scene(), run.params());
   std::optional<std::pair<float, float>> extent;

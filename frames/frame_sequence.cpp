@@ -133,8 +133,7 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
   const std::string fingerprint = golden::split_fingerprint(renderer.fingerprint()).describe();
   const std::string scene_label =
       run.scene().source == "built-in" ? scene_name : scene_name + " (" + run.scene().source + ")";
-  const render::Camera camera =
-      scene_camera(run.scene().view.camera, run.world(), options.width, options.height);
+  const render::Camera camera = run_camera(run, options.width, options.height);
   render::FrameOptions frame_options = view_frame_options(run, options.draw, options.theme);
   render::HudInfo hud;
   hud.scene_name = scene_title(run.scene());

@@ -57,6 +57,12 @@ render::Camera scene_camera(const CameraSpec& spec, const World& world, int widt
   return render::Camera::centered(middle + band_shift(width, height, zoom), zoom, width, height);
 }
 
+render::Camera run_camera(const SceneRun& run, int width, int height) {
+  if (!run.restored()) return scene_camera(run.scene().view.camera, run.world(), width, height);
+  const SceneRun fresh(run.scene(), run.params());
+  return scene_camera(run.scene().view.camera, fresh.world(), width, height);
+}
+
 render::Camera frame_camera(const render::Camera& camera, const SceneRun& run) {
   const std::optional<vec2> followed = run.followed_position();
   if (!followed) return camera;

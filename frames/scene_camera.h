@@ -16,6 +16,11 @@ class SceneRun;
 /// first step).
 render::Camera scene_camera(const CameraSpec& spec, const World& world, int width, int height);
 
+/// `scene_camera` of `run`'s scene fitted to the world the scene starts from: `run`'s own
+/// world before its first step, a fresh run's when `run` continues a saved state (so a
+/// resumed run draws its frames exactly as the whole run does).
+render::Camera run_camera(const SceneRun& run, int width, int height);
+
 /// The camera for the current frame of `run`: `camera` (from `scene_camera`) moved so that the
 /// followed body is in the middle of the space between the bands when the scene's camera
 /// follows one, else `camera` unchanged.

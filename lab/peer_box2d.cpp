@@ -21,6 +21,21 @@ b2Vec2 to_b2(vec2 v) { return b2Vec2(v.x, v.y); }
                            what + ": not supported by Box2D 2.4.1");
 }
 
+// The bodies and collide_connected of any joint definition.
+template <class B2Def, class Source>
+void attach(B2Def& def, b2Body* a, b2Body* b, const Source& source) {
+  def.bodyA = a;
+  def.bodyB = b;
+  def.collideConnected = source.collide_connected;
+}
+
+// The local anchors of an anchored joint (the adapter's body origins are the centres of mass).
+template <class B2Def, class Source>
+void set_anchors(B2Def& def, const Source& source) {
+  def.localAnchorA = to_b2(source.local_anchor_a);
+  def.localAnchorB = to_b2(source.local_anchor_b);
+}
+
 /// Builds `joint` between `a` and `b` in `world`. Box2D 2.4.1's anchors are from the body's
 /// origin, which the adapter puts at the centre of mass, so the local anchors carry over.
 void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body* b) {
@@ -30,10 +45,8 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
       const RevoluteJointDef& source = spec.revolute;
       if (source.enable_spring && source.hertz > 0.0f) unsupported(joint, "a spring");
       b2RevoluteJointDef def;
-      def.bodyA = a;
-      def.bodyB = b;
-      def.localAnchorA = to_b2(source.local_anchor_a);
-      def.localAnchorB = to_b2(source.local_anchor_b);
+      attach(def, a, b, source);
+      set_anchors(def, source);
       def.referenceAngle = source.reference_angle;
       def.enableLimit = source.enable_limit;
       def.lowerAngle = source.lower_angle;
@@ -41,7 +54,6 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
       def.enableMotor = source.enable_motor;
       def.motorSpeed = source.motor_speed;
       def.maxMotorTorque = source.max_motor_torque;
-      def.collideConnected = source.collide_connected;
       world.CreateJoint(&def);
       return;
     }
@@ -49,10 +61,8 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
       const PrismaticJointDef& source = spec.prismatic;
       if (source.enable_spring && source.hertz > 0.0f) unsupported(joint, "a spring");
       b2PrismaticJointDef def;
-      def.bodyA = a;
-      def.bodyB = b;
-      def.localAnchorA = to_b2(source.local_anchor_a);
-      def.localAnchorB = to_b2(source.local_anchor_b);
+      attach(def, a, b, source);
+      set_anchors(def, source);
       def.localAxisA = to_b2(source.local_axis_a);
       def.localAxisA.Normalize();
       def.referenceAngle = source.reference_angle;
@@ -62,7 +72,6 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
       def.enableMotor = source.enable_motor;
       def.motorSpeed = source.motor_speed;
       def.maxMotorForce = source.max_motor_force;
-      def.collideConnected = source.collide_connected;
       world.CreateJoint(&def);
       return;
     }
@@ -72,10 +81,8 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
       const DistanceJointDef& source = spec.distance;
       if (source.enable_motor) unsupported(joint, "a motor");
       b2DistanceJointDef def;
-      def.bodyA = a;
-      def.bodyB = b;
-      def.localAnchorA = to_b2(source.local_anchor_a);
-      def.localAnchorB = to_b2(source.local_anchor_b);
+      attach(def, a, b, source);
+      set_anchors(def, source);
       def.length = source.length;
       if (!source.enable_spring) {
         def.minLength = def.maxLength = source.length;
@@ -86,7 +93,6 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
           b2LinearStiffness(def.stiffness, def.damping, source.hertz, source.damping_ratio, a, b);
         }
       }
-      def.collideConnected = source.collide_connected;
       world.CreateJoint(&def);
       return;
     }
@@ -95,26 +101,21 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
       const WeldJointDef& source = spec.weld;
       if (source.linear_hertz > 0.0f) unsupported(joint, "a linear spring");
       b2WeldJointDef def;
-      def.bodyA = a;
-      def.bodyB = b;
-      def.localAnchorA = to_b2(source.local_anchor_a);
-      def.localAnchorB = to_b2(source.local_anchor_b);
+      attach(def, a, b, source);
+      set_anchors(def, source);
       def.referenceAngle = source.reference_angle;
       if (source.angular_hertz > 0.0f) {
         b2AngularStiffness(def.stiffness, def.damping, source.angular_hertz,
                            source.angular_damping_ratio, a, b);
       }
-      def.collideConnected = source.collide_connected;
       world.CreateJoint(&def);
       return;
     }
     case JointType::Wheel: {
       const WheelJointDef& source = spec.wheel;
       b2WheelJointDef def;
-      def.bodyA = a;
-      def.bodyB = b;
-      def.localAnchorA = to_b2(source.local_anchor_a);
-      def.localAnchorB = to_b2(source.local_anchor_b);
+      attach(def, a, b, source);
+      set_anchors(def, source);
       def.localAxisA = to_b2(source.local_axis_a);
       def.localAxisA.Normalize();
       def.enableLimit = source.enable_limit;
@@ -128,21 +129,18 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
       if (source.enable_spring && source.hertz > 0.0f) {
         b2LinearStiffness(def.stiffness, def.damping, source.hertz, source.damping_ratio, a, b);
       }
-      def.collideConnected = source.collide_connected;
       world.CreateJoint(&def);
       return;
     }
     case JointType::Motor: {
       const MotorJointDef& source = spec.motor;
       b2MotorJointDef def;
-      def.bodyA = a;
-      def.bodyB = b;
+      attach(def, a, b, source);
       def.linearOffset = to_b2(source.linear_offset);
       def.angularOffset = source.angular_offset;
       def.maxForce = source.max_force;
       def.maxTorque = source.max_torque;
       def.correctionFactor = source.correction_factor;
-      def.collideConnected = source.collide_connected;
       world.CreateJoint(&def);
       return;
     }
@@ -151,12 +149,10 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
       // then move the target.
       const MouseJointDef& source = spec.mouse;
       b2MouseJointDef def;
-      def.bodyA = a;
-      def.bodyB = b;
+      attach(def, a, b, source);
       def.target = b->GetWorldPoint(to_b2(source.local_anchor_b));
       def.maxForce = source.max_force;
       b2LinearStiffness(def.stiffness, def.damping, source.hertz, source.damping_ratio, a, b);
-      def.collideConnected = source.collide_connected;
       static_cast<b2MouseJoint*>(world.CreateJoint(&def))->SetTarget(to_b2(source.target));
       return;
     }

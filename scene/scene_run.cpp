@@ -193,6 +193,7 @@ void SceneRun::restore_snapshot(const std::vector<std::uint8_t>& snapshot) {
   world_.restore_snapshot(snapshot);
   next_event_ = next;
   forces_.clear();
+  restored_ = true;
 }
 
 void SceneRun::step() {

@@ -55,6 +55,9 @@ class SceneRun {
   /// joints, buttons, mouse targets, forces still acting). Throws `Error` for a snapshot the
   /// core refuses (the world then keeps its state).
   void restore_snapshot(const std::vector<std::uint8_t>& snapshot);
+  /// True once `restore_snapshot` gave this run a saved state: its world is then not the one
+  /// the scene starts from (a camera fitted to the scene must use a fresh run).
+  bool restored() const { return restored_; }
 
   /// With `strict`, `step` throws `std::runtime_error` naming the first body that diverges
   /// (the command line's `--strict`); without, divergences are only recorded.
@@ -120,6 +123,7 @@ class SceneRun {
   std::vector<Divergence> divergences_;
   int bodies_in_run_ = 0;
   bool strict_ = false;
+  bool restored_ = false;
 };
 
 /// "body 3 (\"ball\") diverged in step 120 (its state became non-finite; ...)" for messages.

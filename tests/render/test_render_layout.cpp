@@ -133,7 +133,9 @@ TEST_P(HudAndLegendLayout, CoverNoBodyAndAtMostTwelvePercentOfA320x240Frame) {
                                 ", step " + std::to_string(at);
       EXPECT_EQ(coverage.body_pixels, 0) << where << ": the HUD or legend covers " << coverage.first_body
                                          << " (" << coverage.body_pixels << " body pixels)";
-      if (size.width == 320) EXPECT_LE(coverage.area_fraction, 0.12) << where;
+      if (size.width == 320) {
+        EXPECT_LE(coverage.area_fraction, 0.12) << where;
+      }
     }
     std::printf("[ coverage ] %s %dx%d: HUD + legend change at most %.1f %% of the frame\n", scene.name.c_str(),
                 size.width, size.height, 100.0 * worst_area);
