@@ -9,6 +9,7 @@
 
 #include "core/collide.h"
 #include "core/collide/collide_internal.h"
+#include "core/collide/face_search.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,10 @@
 namespace impulse2d {
 
 namespace {
+
+using collide_detail::FaceSeparation;
+using collide_detail::incident_face;
+using collide_detail::max_face_separation;
 
 using collide_detail::next_vertex;
 using collide_detail::vertex_feature;
@@ -34,41 +39,6 @@ struct PolygonView {
   const vec2* normals;
   int count;
 };
-
-struct FaceSeparation {
-  int face;
-  float separation;  ///< metres; negative when the polygons overlap along this face normal
-};
-
-/// The face of `reference` along whose normal `other` is furthest out: for each face, the
-/// signed distance of other's deepest vertex; the maximum over faces.
-FaceSeparation max_face_separation(const PolygonView& reference, const PolygonView& other) {
-  FaceSeparation best{0, 0.0f};
-  for (int face = 0; face < reference.count; ++face) {
-    const vec2 normal = reference.normals[face];
-    const vec2 vertex = reference.vertices[face];
-    float deepest = glm::dot(normal, other.vertices[0] - vertex);
-    for (int j = 1; j < other.count; ++j) {
-      deepest = std::min(deepest, glm::dot(normal, other.vertices[j] - vertex));
-    }
-    if (face == 0 || deepest > best.separation) best = {face, deepest};
-  }
-  return best;
-}
-
-/// The face of `incident` most anti-parallel to `reference_normal`.
-int incident_face(const PolygonView& incident, vec2 reference_normal) {
-  int best_face = 0;
-  float best_dot = glm::dot(reference_normal, incident.normals[0]);
-  for (int face = 1; face < incident.count; ++face) {
-    const float face_dot = glm::dot(reference_normal, incident.normals[face]);
-    if (face_dot < best_dot) {
-      best_dot = face_dot;
-      best_face = face;
-    }
-  }
-  return best_face;
-}
 
 /// A candidate contact point on the incident edge and the vertices naming it.
 struct ClipPoint {

@@ -12,6 +12,7 @@
 
 #include "core/collide.h"
 #include "core/collide/collide_internal.h"
+#include "core/collide/face_search.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,10 @@
 namespace impulse2d {
 
 namespace {
+
+using collide_detail::FaceSeparation;
+using collide_detail::incident_face;
+using collide_detail::max_face_separation;
 
 using collide_detail::edge_feature;
 using collide_detail::next_vertex;
@@ -89,40 +94,6 @@ RoundedOutline outline_of(const Shape& shape, const Transform& transform, Transf
   outline.count = 1;
   outline.radius = shape.circle().radius;
   return outline;
-}
-
-struct FaceSeparation {
-  int face;
-  float separation;  ///< metres between the bare outlines along the face normal
-};
-
-/// The face of `reference` along whose normal `other` is furthest out.
-FaceSeparation max_face_separation(const RoundedOutline& reference, const RoundedOutline& other) {
-  FaceSeparation best{0, 0.0f};
-  for (int face = 0; face < reference.count; ++face) {
-    const vec2 normal = reference.normals[face];
-    const vec2 vertex = reference.vertices[face];
-    float deepest = glm::dot(normal, other.vertices[0] - vertex);
-    for (int j = 1; j < other.count; ++j) {
-      deepest = std::min(deepest, glm::dot(normal, other.vertices[j] - vertex));
-    }
-    if (face == 0 || deepest > best.separation) best = {face, deepest};
-  }
-  return best;
-}
-
-/// The face of `incident` most anti-parallel to `reference_normal`.
-int incident_face(const RoundedOutline& incident, vec2 reference_normal) {
-  int best_face = 0;
-  float best_dot = glm::dot(reference_normal, incident.normals[0]);
-  for (int face = 1; face < incident.count; ++face) {
-    const float face_dot = glm::dot(reference_normal, incident.normals[face]);
-    if (face_dot < best_dot) {
-      best_dot = face_dot;
-      best_face = face;
-    }
-  }
-  return best_face;
 }
 
 /// The nearest points of segments p0 -> p1 and q0 -> q1: their fractions along each.
