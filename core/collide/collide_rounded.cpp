@@ -256,13 +256,28 @@ Manifold collide_rounded(const Shape& a, const Transform& xa, const Shape& b, co
     // Where the faces' nearest points are closer than the clipped points say (a corner against
     // a corner or beside a face), the rounded surfaces meet along the line between those
     // nearest points: one point with the circle's normal there.
-    const int face_a = reference_is_b ? incident_start : reference_face;
-    const int face_b = reference_is_b ? reference_face : incident_start;
+    // The nearest pair of faces of the two cores, over every pair (at most 8 x 8): the faces
+    // the clip chose need not be it (a needle-thin outline has two faces about equally
+    // anti-parallel to the reference normal, far apart along it).
+    int face_a = 0;
+    int face_b = 0;
+    NearestPoints nearest{0.0f, 0.0f, std::numeric_limits<float>::max()};
+    for (int i = 0; i < outline_a.count; ++i) {
+      for (int j = 0; j < outline_b.count; ++j) {
+        const NearestPoints candidate = nearest_points(
+            outline_a.vertices[i], outline_a.vertices[next_vertex(i, outline_a.count)],
+            outline_b.vertices[j], outline_b.vertices[next_vertex(j, outline_b.count)]);
+        if (candidate.distance_squared < nearest.distance_squared) {
+          nearest = candidate;
+          face_a = i;
+          face_b = j;
+        }
+      }
+    }
     const vec2 a0 = outline_a.vertices[face_a];
     const vec2 a1 = outline_a.vertices[next_vertex(face_a, outline_a.count)];
     const vec2 b0 = outline_b.vertices[face_b];
     const vec2 b1 = outline_b.vertices[next_vertex(face_b, outline_b.count)];
-    const NearestPoints nearest = nearest_points(a0, a1, b0, b1);
     const float distance = std::sqrt(nearest.distance_squared);
     float clipped_gap = std::numeric_limits<float>::max();
     for (int i = 0; i < manifold.point_count; ++i) {
