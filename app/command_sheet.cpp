@@ -114,7 +114,6 @@ SheetJob prepare_sheet(const SheetArguments& arguments) {
     job.scenes.push_back(std::move(scene));
   }
   const SheetScene& first = job.scenes.front();
-  options.draw = first.draw;
   if (job.scenes.size() == 1) {
     options.caption = (first.resolved.params.specs().empty() ? "no parameters" : first.resolved.params.summary()) +
                       "  |  overlays: " + overlay_list(first.draw.flags);

@@ -165,10 +165,8 @@ void render_tiles(const SheetSource& source, const ContactSheetOptions& options,
                   bool name_in_label, std::vector<render::Frame>& frames,
                   std::vector<std::string>& labels) {
   SceneRun& run = *source.run;
-  ContactSheetOptions own = options;
-  own.draw = source.draw;
   render::FrameRenderer tiles(options.tile_width, options.tile_height);
-  const render::Camera camera = centred_camera(run, source.plan, own);
+  const render::Camera camera = centred_camera(run, source.plan, options);
   render::FrameOptions frame_options = view_frame_options(run, source.draw, options.theme);
   frame_options.show_hud = false;  // the label strip says it
   constexpr std::size_t trail_points = 240;  // 4 s of path at 60 steps per second
@@ -201,12 +199,6 @@ void render_tiles(const SheetSource& source, const ContactSheetOptions& options,
 }
 
 }  // namespace
-
-std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
-                                        const ContactSheetOptions& options,
-                                        const std::filesystem::path& output) {
-  return write_contact_sheet({SheetSource{&run, plan, options.draw}}, options, output);
-}
 
 std::pair<int, int> write_contact_sheet(const std::vector<SheetSource>& sources,
                                         const ContactSheetOptions& options,

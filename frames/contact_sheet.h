@@ -24,7 +24,6 @@ struct ContactSheetOptions {
   int tile_width = 400;                        ///< pixels per frame
   int tile_height = 300;                       ///< pixels per frame
   int columns = 4;                             ///< tiles per row (>= 1)
-  DebugDrawOptions draw;                       ///< overlay flags and arrow scales
   render::Theme theme = render::Theme::Light;  ///< colours
   TrailSelection trails;                       ///< bodies whose recent path is drawn
   std::string caption;  ///< the title's second line, e.g. "rows=20 | overlays: normals"
@@ -43,18 +42,12 @@ struct SheetSource {
   DebugDrawOptions draw;    ///< overlay flags and arrow scales of its tiles
 };
 
-/// Steps `run` through `plan`, renders each planned step as a tile and writes the sheet to
-/// `output` (atomically; a directory it had to create is removed again on failure). The
-/// tiles share one camera: the scene's, moved vertically so that what it shows of the bodies
-/// over the planned frames is centred (found on a second run of the same scene, stepped
-/// first). Returns the sheet's size in pixels as {width, height}.
-std::pair<int, int> write_contact_sheet(SceneRun& run, const FramePlan& plan,
-                                        const ContactSheetOptions& options,
-                                        const std::filesystem::path& output);
-
-/// As above for several scenes on one sheet, their tiles in order (each scene's with its own
-/// camera, centred as above, and overlays; `options.draw` is not used): each label names its
-/// scene, the title counts them.
+/// Steps each source's run through its plan, renders each planned step as a tile, in the
+/// sources' order, and writes the sheet to `output` (atomically; a directory it had to create
+/// is removed again on failure). A source's tiles share one camera: its scene's, moved
+/// vertically so that what it shows of the bodies over the planned frames is centred (found
+/// on a second run of the same scene, stepped first). With several sources each label names
+/// its scene and the title counts them. Returns the sheet's size in pixels as {width, height}.
 std::pair<int, int> write_contact_sheet(const std::vector<SheetSource>& sources,
                                         const ContactSheetOptions& options,
                                         const std::filesystem::path& output);
