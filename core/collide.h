@@ -56,6 +56,12 @@ Manifold collide_rounded(const Shape& a, const Transform& xa, const Shape& b, co
 Manifold collide_rounded_circle(const Shape& a, const Transform& xa, const Circle& b,
                                 const Transform& xb, float margin = 0.0f);
 
+/// A chain link (a `Segment` with `one_sided`) A vs a circle, box, polygon or capsule B: the
+/// segment's manifold, dropped for a shape behind the link and made smooth across the link's
+/// joins with its neighbours (see collide_chain_link.cpp). Empty against a segment.
+Manifold collide_chain_link(const Shape& link, const Transform& xa, const Shape& other,
+                            const Transform& xb, float margin = 0.0f);
+
 /// Signature of one entry of the collision jump table.
 using CollideFunction = Manifold (*)(const Shape& a, const Transform& xa, const Shape& b,
                                      const Transform& xb, float margin);

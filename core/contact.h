@@ -23,8 +23,14 @@ struct ContactPoint {
   vec2 point{0.0f, 0.0f};      ///< world position, metres, midway between the two surfaces
   vec2 anchor_a{0.0f, 0.0f};   ///< point relative to A's centre of mass, metres
   vec2 anchor_b{0.0f, 0.0f};   ///< point relative to B's centre of mass, metres
-  vec2 local_anchor_a{0.0f, 0.0f};  ///< A's surface point in A's frame, metres
-  vec2 local_anchor_b{0.0f, 0.0f};  ///< B's surface point in B's frame, metres
+  /// A's core point in A's frame, metres: A's surface point moved in along the normal by A's
+  /// rounding (a circle's: its centre), so that it stays a fixed point of A as A turns: the
+  /// separation tracked from it does not grow when a curved body rolls.
+  vec2 local_anchor_a{0.0f, 0.0f};
+  vec2 local_anchor_b{0.0f, 0.0f};  ///< B's core point in B's frame, metres (as A's)
+  /// Sum (m) of the two shapes' roundings: the separation is the core points' offset along
+  /// the normal less this.
+  float rounding = 0.0f;
   /// Penetration at detection, metres: positive when overlapping, negative for a speculative
   /// point (the gap the bodies may still close).
   float depth = 0.0f;

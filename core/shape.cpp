@@ -472,6 +472,8 @@ bool raycast_segment(const Segment& segment, const Transform& transform, vec2 or
   const float fraction = cross(offset, edge) / denominator;
   const float along = cross(offset, translation) / denominator;
   if (!(fraction > 0.0f && fraction <= 1.0f && along >= 0.0f && along <= 1.0f)) return false;
+  // A chain link is hit from its front (left) side only.
+  if (segment.one_sided && cross(edge, translation) >= 0.0f) return false;
   if (hit != nullptr) {
     vec2 normal = glm::normalize(right_perpendicular(edge));
     if (glm::dot(normal, translation) > 0.0f) normal = -normal;
@@ -549,6 +551,47 @@ Shape make_segment(vec2 point1, vec2 point2, vec2* centroid_out) {
   const vec2 centroid = 0.5f * (point1 + point2);
   if (centroid_out != nullptr) *centroid_out = centroid;
   return Segment{point1 - centroid, point2 - centroid};
+}
+
+std::vector<ChainLink> make_chain(const vec2* points, int count, bool loop) {
+  const char* function = "make_chain";
+  constexpr int max_points = 100000;
+  const int least = loop ? 3 : 2;
+  if (count < least || count > max_points) {
+    fail(function, std::string(loop ? "a loop" : "an open chain") + " needs " +
+                       std::to_string(least) + ".." + std::to_string(max_points) +
+                       " points, got " + std::to_string(count));
+  }
+  auto name = [](int i) { return "points[" + std::to_string(i) + "]"; };
+  for (int i = 0; i < count; ++i) {
+    if (!is_finite(points[i])) fail(function, name(i) + " " + format_vertex(points[i]) + " is not finite");
+  }
+  for (int i = 1; i < count; ++i) {
+    validate_ends(function, name(i - 1).c_str(), points[i - 1], name(i).c_str(), points[i],
+                  "equal (consecutive chain points must differ)");
+  }
+  if (loop) {
+    validate_ends(function, name(count - 1).c_str(), points[count - 1], name(0).c_str(), points[0],
+                  "equal (a loop closes itself: do not repeat the first point at the end)");
+  }
+  const int links = loop ? count : count - 1;
+  auto point = [&](int i) { return points[(i + count) % count]; };
+  std::vector<ChainLink> chain;
+  chain.reserve(static_cast<std::size_t>(links));
+  for (int i = 0; i < links; ++i) {
+    const vec2 point1 = point(i);
+    const vec2 point2 = point(i + 1);
+    // An open chain's ends have no neighbour: the ghost is the end point itself.
+    const vec2 ghost1 = (loop || i > 0) ? point(i - 1) : point1;
+    const vec2 ghost2 = (loop || i + 1 < links) ? point(i + 2) : point2;
+    const vec2 midpoint = 0.5f * (point1 + point2);
+    Segment segment{point1 - midpoint, point2 - midpoint};
+    segment.one_sided = true;
+    segment.ghost1 = ghost1 - midpoint;
+    segment.ghost2 = ghost2 - midpoint;
+    chain.push_back(ChainLink{Shape(segment), midpoint});
+  }
+  return chain;
 }
 
 float farthest_vertex_distance(const Polygon& polygon) {

@@ -11,6 +11,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace impulse2d {
 
@@ -60,9 +61,21 @@ struct Capsule {
 
 /// A line segment with no thickness and no area (so no mass): for static and kinematic bodies
 /// (level geometry, moving platforms). Stored with its midpoint at the body origin.
+///
+/// A link of a chain (`make_chain`) is one-sided: it collides only with shapes whose centre is
+/// in front of it, on the left of the direction point1 -> point2 (a ground line listed left to
+/// right faces up), and it knows its neighbours' far points (ghost vertices) so that a body
+/// crossing from one link to the next feels one smooth surface (no "ghost collision" at the
+/// seam, as Box2D's chain segments).
 struct Segment {
   vec2 point1{-0.5f, 0.0f};  ///< one end, metres, body-local
   vec2 point2{0.5f, 0.0f};   ///< the other end, metres, body-local, != point1
+  bool one_sided = false;    ///< a chain link: front side only, smoothed by the ghosts
+  /// The previous chain point (metres, body-local); equal to `point1` at an open chain's start,
+  /// where the end is a free corner. Read only when `one_sided`.
+  vec2 ghost1{0.0f, 0.0f};
+  /// The next chain point (metres, body-local); equal to `point2` at an open chain's end.
+  vec2 ghost2{0.0f, 0.0f};
 };
 
 /// A shape of one kind: a tagged union (the kind, then the one kind's data), 144 bytes. Build
@@ -161,6 +174,22 @@ Shape make_capsule(vec2 center1, vec2 center2, float radius, vec2* centroid_out 
 /// kinematic body may have one.
 Shape make_segment(vec2 point1, vec2 point2, vec2* centroid_out = nullptr);
 
+/// One link of a chain: a one-sided segment shape (midpoint at its body origin) and where that
+/// body goes (the midpoint, in the coordinates of the chain's points).
+struct ChainLink {
+  Shape shape;                 ///< a `Segment` with `one_sided` and its ghosts set
+  vec2 position{0.0f, 0.0f};   ///< the link's midpoint, metres
+};
+
+/// The links of a chain through `count` points (metres): one one-sided segment per pair of
+/// consecutive points, and with `loop` one more from the last point back to the first. Bodies
+/// collide with the side on the left of the direction of the points (a ground line listed
+/// left to right is solid below; a loop listed clockwise is solid inside, counter-clockwise a
+/// track ridden inside). Throws `Error` naming the point for fewer than 2 points (3 for a
+/// loop), more than 100000, non-finite points, a point equal to the one before it, or a loop
+/// whose last point repeats the first (a loop closes itself).
+std::vector<ChainLink> make_chain(const vec2* points, int count, bool loop);
+
 /// Distance (m) of the polygon's farthest vertex from its centre, computed from the vertices
 /// (what `Polygon::radius` caches).
 float farthest_vertex_distance(const Polygon& polygon);
@@ -184,6 +213,20 @@ inline float shape_extent(const Shape& shape) {
     case ShapeType::Segment:
       return std::sqrt(std::max(length_squared(shape.segment().point1),
                                 length_squared(shape.segment().point2)));
+  }
+  return 0.0f;
+}
+
+/// Radius (m) by which the shape's surface lies outside its core (its centre of curvature
+/// under every rounded part): a circle's and a capsule's radius, a polygon's rounding; 0 for a
+/// box, a sharp polygon and a segment.
+inline float shape_rounding(const Shape& shape) {
+  switch (shape.type()) {
+    case ShapeType::Circle: return shape.circle().radius;
+    case ShapeType::Capsule: return shape.capsule().radius;
+    case ShapeType::Polygon: return shape.polygon().rounding;
+    case ShapeType::Box:
+    case ShapeType::Segment: return 0.0f;
   }
   return 0.0f;
 }

@@ -88,6 +88,10 @@ void validate_shape(const Shape& shape) {
           shape.segment().point1 == shape.segment().point2) {
         throw Error("World::create_body: segment points must be finite and differ (use make_segment)");
       }
+      if (shape.segment().one_sided &&
+          !(is_finite(shape.segment().ghost1) && is_finite(shape.segment().ghost2))) {
+        throw Error("World::create_body: chain link ghost points must be finite (use make_chain)");
+      }
       return;
   }
   throw Error("World::create_body: unknown shape type");
@@ -204,6 +208,11 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
     throw Error("World::create_body: a segment has no area and so no mass: a dynamic body "
                 "cannot be only a segment (make it static or kinematic, or use a capsule)");
   }
+  if (def.type != BodyType::Static && shape.type() == ShapeType::Segment &&
+      shape.segment().one_sided) {
+    throw Error("World::create_body: a chain is level geometry: only a static body may hold a "
+                "chain link (make the body static, or use segments or capsules)");
+  }
   if (def.type == BodyType::Dynamic && !(def.material.density > 0.0f)) {
     throw Error("World::create_body: a dynamic body needs material density > 0 (got " +
                 std::to_string(def.material.density) + ")");
@@ -233,6 +242,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
     body.shape = polygon;
   }
   body.extent = shape_extent(body.shape);
+  body.rounding = shape_rounding(body.shape);
   body.material = def.material;
   const bool rotates = shape.type() != ShapeType::Box && !def.fixed_rotation;
   body.angle = rotates ? def.angle : 0.0f;

@@ -67,6 +67,11 @@ class World {
 
   /// Creates a body with one shape. Throws `Error` for non-finite or invalid definitions.
   BodyId create_body(const BodyDef& def, const Shape& shape);
+  /// Creates a chain (see `make_chain`): one static body per link, each at its link's midpoint
+  /// moved and turned by `def.position` and `def.angle`, the rest of `def` (material, layers,
+  /// events) shared; returns their handles in link order. Throws `Error` for a `def` that is
+  /// not static or for bad points (naming the point), creating nothing.
+  std::vector<BodyId> create_chain(const BodyDef& def, const vec2* points, int count, bool loop);
   /// Removes a body; its handle and any copy of it become stale. Throws on a stale handle.
   void remove_body(BodyId id);
   /// True when `id` names a living body.

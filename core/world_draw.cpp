@@ -129,6 +129,23 @@ void World::draw(DebugDraw& draw, const DebugDrawOptions& options) const {
       draw_shape(draw, body.shape, drawn_transform(body, alpha), fill_of(body, options), palette.outline);
     }
   }
+  if (flags & draw_contact_normals) {
+    // Chain links' front sides: a short tick from each link's midpoint along its normal.
+    for (std::size_t i = 0; i < state_->bodies.size(); ++i) {
+      const Body& body = state_->bodies[i];
+      if (!state_->alive[i] || body.shape.type() != ShapeType::Segment ||
+          !body.shape.segment().one_sided) {
+        continue;
+      }
+      const Segment& link = body.shape.segment();
+      const vec2 start = body.transform.apply(link.point1);
+      const vec2 edge = body.transform.apply(link.point2) - start;
+      const vec2 middle = start + 0.5f * edge;
+      draw.draw_segment(middle,
+                        middle + glm::normalize(left_perpendicular(edge)) * (0.5f * options.normal_length),
+                        palette.outline);
+    }
+  }
   if (flags & draw_aabbs) {
     for (std::size_t i = 0; i < state_->bodies.size(); ++i) {
       if (state_->alive[i]) draw_box_outline(draw, state_->bodies[i].aabb, palette.aabb);

@@ -211,6 +211,9 @@ void io_shape(IO& io, Shape& shape) {
     Segment segment = IO::reading ? Segment{} : shape.segment();
     io_vec2(io, segment.point1);
     io_vec2(io, segment.point2);
+    io_bool(io, segment.one_sided);
+    io_vec2(io, segment.ghost1);
+    io_vec2(io, segment.ghost2);
     if (IO::reading) shape = segment;
   } else {
     throw Error("World::restore_snapshot: corrupt shape kind " + std::to_string(kind));
@@ -241,6 +244,7 @@ void io_body(IO& io, Body& b) {
   io.f32(b.previous_angle);
   io.f32(b.sleep_time);
   io.f32(b.extent);
+  io.f32(b.rounding);
   io_bool(io, b.speculative);
   io.u32(b.collision_layers);
   io_aabb(io, b.aabb);
@@ -312,6 +316,7 @@ void io_contact(IO& io, Contact& c) {
   for (ContactPoint& p : c.points) {
     for (vec2* v : {&p.point, &p.anchor_a, &p.anchor_b, &p.local_anchor_a, &p.local_anchor_b}) io_vec2(io, *v);
     io.f32(p.depth);
+    io.f32(p.rounding);
     io.u32(p.feature_id);
     for (float* f : {&p.normal_impulse, &p.tangent_impulse, &p.normal_mass, &p.tangent_mass, &p.velocity_bias}) {
       io.f32(*f);

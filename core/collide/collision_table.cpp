@@ -8,7 +8,8 @@
 ///
 /// Fixed orders: a circle is always second; otherwise the kind earlier in `ShapeType` is first.
 /// Pairs of circles, boxes and sharp polygons use the tutorial's functions; any pair with a
-/// rounded polygon, a capsule or a segment goes through collide_rounded(_circle).
+/// rounded polygon, a capsule or a segment goes through collide_rounded(_circle), and any pair
+/// with a chain link (a one-sided segment) through collide_chain_link.
 
 #include "core/collide.h"
 #include "core/collide/collide_internal.h"
@@ -100,15 +101,34 @@ Manifold rounded_pair_flipped(const Shape& a, const Transform& xa, const Shape& 
   return flipped(collide_rounded(b, xb, a, xa, margin));
 }
 
+/// Segment A (a chain link or a plain segment) vs any B.
+Manifold segment_vs_any(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                        float margin) {
+  if (a.segment().one_sided) return collide_chain_link(a, xa, b, xb, margin);
+  if (b.type() == ShapeType::Circle) return rounded_vs_circle(a, xa, b, xb, margin);
+  if (b.type() == ShapeType::Segment) {
+    if (b.segment().one_sided) return flipped(collide_chain_link(b, xb, a, xa, margin));
+    return rounded_pair(a, xa, b, xb, margin);
+  }
+  return rounded_pair_flipped(a, xa, b, xb, margin);
+}
+
+/// Any A but a segment vs segment B (a chain link or a plain segment).
+Manifold any_vs_segment(const Shape& a, const Transform& xa, const Shape& b, const Transform& xb,
+                        float margin) {
+  if (b.segment().one_sided) return flipped(collide_chain_link(b, xb, a, xa, margin));
+  if (a.type() == ShapeType::Circle) return circle_vs_rounded(a, xa, b, xb, margin);
+  return rounded_pair(a, xa, b, xb, margin);
+}
+
 /// Rows: type of A; columns: type of B; in `ShapeType` order (circle, box, polygon, capsule,
 /// segment).
 constexpr CollideFunction collision_table[shape_type_count][shape_type_count] = {
-    {circle_vs_circle, circle_vs_box, circle_vs_polygon, circle_vs_rounded, circle_vs_rounded},
-    {box_vs_circle, box_vs_box, box_vs_polygon, rounded_pair, rounded_pair},
-    {polygon_vs_circle, polygon_vs_box, polygon_vs_polygon, rounded_pair, rounded_pair},
-    {rounded_vs_circle, rounded_pair_flipped, rounded_pair_flipped, rounded_pair, rounded_pair},
-    {rounded_vs_circle, rounded_pair_flipped, rounded_pair_flipped, rounded_pair_flipped,
-     rounded_pair},
+    {circle_vs_circle, circle_vs_box, circle_vs_polygon, circle_vs_rounded, any_vs_segment},
+    {box_vs_circle, box_vs_box, box_vs_polygon, rounded_pair, any_vs_segment},
+    {polygon_vs_circle, polygon_vs_box, polygon_vs_polygon, rounded_pair, any_vs_segment},
+    {rounded_vs_circle, rounded_pair_flipped, rounded_pair_flipped, rounded_pair, any_vs_segment},
+    {segment_vs_any, segment_vs_any, segment_vs_any, segment_vs_any, segment_vs_any},
 };
 
 int table_index(ShapeType type, const char* argument) {

@@ -34,6 +34,9 @@ struct Body {
   /// Farthest distance (m) of the shape's surface from the centre of mass (`shape_extent`),
   /// kept here beside the fields contact recycling reads, away from the shape's cold bytes.
   float extent = 0.0f;
+  /// `shape_rounding` of the shape (m): how far its surface lies outside its core, read when
+  /// each contact is prepared.
+  float rounding = 0.0f;
   bool speculative = true;       ///< its pairs get speculative contacts
   std::uint32_t collision_layers = 1;  ///< bitmask
   Aabb aabb;                     ///< world bounds, updated each step

@@ -34,7 +34,7 @@ enum ContactBlockFlag : std::int32_t {
 // A block's lanes are split in three arrays by the passes that read them: the blocks are
 // streamed a dozen times per step, so once they outgrow the cache their bytes are the solve's
 // cost. Warm starting reads only the `ContactBlock` (84 bytes a lane), the relax pass that and
-// the `ContactBlockSolve` (164), the biased pass all three (204).
+// the `ContactBlockSolve` (172), the biased pass all three (212).
 
 /// What warm starting applies at one manifold point slot, one value per lane.
 template <int Lanes>
@@ -66,10 +66,11 @@ struct alignas(4 * Lanes) ContactBlock {
 /// What both solve passes read at one manifold point slot besides its impulses.
 template <int Lanes>
 struct BlockPointSolve {
-  float surface_ax[Lanes];     ///< A's surface point in A's frame, metres
+  float surface_ax[Lanes];     ///< A's core point in A's frame, metres
   float surface_ay[Lanes];     ///< (y)
-  float surface_bx[Lanes];     ///< B's surface point in B's frame, metres
+  float surface_bx[Lanes];     ///< B's core point in B's frame, metres
   float surface_by[Lanes];     ///< (y)
+  float rounding[Lanes];       ///< the two shapes' roundings (m): separation = offset - this
   float normal_mass[Lanes];    ///< effective mass along the normal, kg (0: no point)
   float tangent_mass[Lanes];   ///< effective mass along the tangent, kg (0: no point)
   float velocity_bias[Lanes];  ///< target normal speed of a bouncing point, m/s

@@ -54,13 +54,13 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
 /// (2x2 block); then ends the bounces.
 void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies);
 
-/// Current separation (m) of a prepared point, from its local anchors: > 0 apart. Inline: the
+/// Current separation (m) of a prepared point, from its core anchors: > 0 apart. Inline: the
 /// soft step asks it for every point in every pass.
 inline float current_separation(const Body& a, const Body& b, const Contact& contact,
                                 const ContactPoint& point) {
-  const vec2 surface_a = a.transform.apply(point.local_anchor_a);
-  const vec2 surface_b = b.transform.apply(point.local_anchor_b);
-  return glm::dot(surface_b - surface_a, contact.normal);
+  const vec2 core_a = a.transform.apply(point.local_anchor_a);
+  const vec2 core_b = b.transform.apply(point.local_anchor_b);
+  return glm::dot(core_b - core_a, contact.normal) - point.rounding;
 }
 
 }  // namespace impulse2d

@@ -41,11 +41,13 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
     } else {
       point.anchor_a = point.point - a.transform.position;
       point.anchor_b = point.point - b.transform.position;
-      // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n.
+      // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n; the core
+      // points a further rounding in.
       const vec2 half_depth = normal * (0.5f * point.depth);
-      point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth);
-      point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth);
+      point.local_anchor_a = a.transform.apply_inverse(point.point + half_depth - normal * a.rounding);
+      point.local_anchor_b = b.transform.apply_inverse(point.point - half_depth + normal * b.rounding);
     }
+    point.rounding = a.rounding + b.rounding;
     const vec2 velocity = relative_velocity(a, b, point);
     const float slip = glm::dot(velocity, tangent);
     slip_sum += slip;

@@ -51,8 +51,8 @@ inline void set_recycled_anchors(const Body& a, const Body& b, const Contact& co
   const vec2 on_a = a.transform.position + point.anchor_a;
   const vec2 on_b = b.transform.position + point.anchor_b;
   const float excess = glm::dot(on_b - on_a, contact.normal) + point.depth;
-  point.local_anchor_a = a.transform.apply_inverse(on_a);
-  point.local_anchor_b = b.transform.apply_inverse(on_b - contact.normal * excess);
+  point.local_anchor_a = a.transform.apply_inverse(on_a - contact.normal * a.rounding);
+  point.local_anchor_b = b.transform.apply_inverse(on_b - contact.normal * (excess - b.rounding));
 }
 
 }  // namespace impulse2d

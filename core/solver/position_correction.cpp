@@ -46,9 +46,12 @@ float correct_positions_nonlinear(const std::vector<Contact>& contacts, std::vec
       for (int i = 0; i < contact.point_count; ++i) {
         const ContactPoint& point = contact.points[i];
         if (point.waiting) continue;  // sat out this step's solve: its overlap is next step's
-        const vec2 surface_a = a.transform.apply(point.local_anchor_a);
-        const vec2 surface_b = b.transform.apply(point.local_anchor_b);
-        const float separation = glm::dot(surface_b - surface_a, normal);
+        const vec2 core_a = a.transform.apply(point.local_anchor_a);
+        const vec2 core_b = b.transform.apply(point.local_anchor_b);
+        const float separation = glm::dot(core_b - core_a, normal) - point.rounding;
+        // The surface points: each core point moved out by its body's rounding.
+        const vec2 surface_a = core_a + normal * a.rounding;
+        const vec2 surface_b = core_b - normal * b.rounding;
         deepest = std::max(deepest, -separation);
         const float error = std::clamp(settings.correction_percent * (separation + settings.slop),
                                        -settings.max_correction, 0.0f);

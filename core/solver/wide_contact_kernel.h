@@ -571,7 +571,8 @@ void solve_blocks(const ContactBlockArrays<Lanes>& arrays, SolverBody* bodies,
       // where the point last stuck (the sticking anchors are read by the biased pass only).
       const BlockPointSolve<Lanes>& point = solve.points[slot];
       separation[slot] = state.offset_along(point.surface_ax, point.surface_ay, point.surface_bx,
-                                            point.surface_by, state.normal_x, state.normal_y);
+                                            point.surface_by, state.normal_x, state.normal_y) -
+                         load_lanes<Floats>(point.rounding);
       if (!pulls_back) continue;
       const BlockPointStick<Lanes>& stick = arrays.sticks[i].points[slot];
       drift[slot] = state.offset_along(stick.stick_ax, stick.stick_ay, stick.stick_bx,

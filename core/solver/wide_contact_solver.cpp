@@ -64,6 +64,7 @@ void for_each_point(Storage& packed, const std::vector<std::int32_t>& contact_in
 // Point slot `slot` of lane `lane` left without a point: nothing to solve, no impulse to apply.
 template <int Lanes>
 void clear_point(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot, int lane) {
+  solve.points[slot].rounding[lane] = 0.0f;
   solve.points[slot].normal_mass[lane] = 0.0f;
   solve.points[slot].tangent_mass[lane] = 0.0f;
   block.points[slot].normal_impulse[lane] = 0.0f;
@@ -198,6 +199,7 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
     BlockPointSolve<Lanes>& solved = solve.points[i];
     set_lane_points(solved.surface_ax, solved.surface_ay, solved.surface_bx, solved.surface_by,
                     lane, point.local_anchor_a, point.local_anchor_b);
+    solved.rounding[lane] = point.rounding;
     solved.normal_mass[lane] = point.normal_mass;
     solved.tangent_mass[lane] = point.tangent_mass;
     BlockPointStick<Lanes>& stuck = stick.points[i];
