@@ -5,6 +5,7 @@
 /// arithmetic and then freeze, explode or vanish without a word, so the loader rejects them
 /// with the JSON path, the range and the reason (README, "Limits").
 
+#include <cstddef>
 #include <cstdint>
 
 namespace impulse2d::demos::limits {
@@ -24,6 +25,9 @@ constexpr const char* size_reason =
 constexpr float max_coordinate = 1e4f;
 /// Why positions have their range.
 constexpr const char* coordinate_reason = "m; float positions resolve 1 mm only up to ~16 km";
+
+/// Most points of one chain (`make_chain`'s limit): each link is a static body.
+constexpr std::size_t max_chain_points = 100000;
 
 /// Smallest side of a camera's view rectangle, m (the smallest body fills it).
 constexpr float min_view_side = 1e-3f;

@@ -160,7 +160,8 @@ SceneModel read_model(const JsonCursor& node, const WorldSettings& settings) {
                                     {"box", ShapeType::Box},
                                     {"polygon", ShapeType::Polygon},
                                     {"capsule", ShapeType::Capsule},
-                                    {"segment", ShapeType::Segment}})) {
+                                    {"segment", ShapeType::Segment},
+                                    {"chain", ShapeType::Segment}})) {
       case ShapeType::Circle:
         model.circles = true;
         break;
@@ -245,7 +246,38 @@ bool is_file_name_prefix(const std::string& name) {
 struct ReadShape {
   Shape shape;
   vec2 centroid{0.0f, 0.0f};
+  std::vector<ChainLink> chain;  ///< a chain's links (then `shape` is the first link's)
 };
+
+/// A "chain" shape object's links: "points" (at least 2, 3 for a loop) and "loop".
+std::vector<ChainLink> read_chain(const JsonCursor& node) {
+  node.allow_only({"type", "points", "loop"});
+  const bool loop = node.has("loop") && node.field("loop").boolean();
+  const JsonCursor list = node.field("points");
+  const std::size_t count = list.size();
+  const std::size_t least = loop ? 3 : 2;
+  if (count < least || count > limits::max_chain_points) {
+    list.fail(std::string(loop ? "a loop" : "an open chain") + " needs " + std::to_string(least) +
+              ".." + std::to_string(limits::max_chain_points) + " points, got " +
+              std::to_string(count));
+  }
+  std::vector<vec2> points;
+  for (std::size_t i = 0; i < count; ++i) {
+    points.push_back(list.element(i).vector_at_most(limits::max_coordinate, limits::coordinate_reason));
+    if (i > 0 && !(glm::length(points[i] - points[i - 1]) >= limits::min_size)) {
+      list.element(i).fail("must be at least " + compact_number(limits::min_size) +
+                           " m from the point before it (consecutive chain points must differ)");
+    }
+  }
+  if (loop && !(glm::length(points.front() - points.back()) >= limits::min_size)) {
+    list.element(count - 1).fail("repeats the first point: a loop closes itself, leave it out");
+  }
+  try {
+    return make_chain(points.data(), static_cast<int>(count), loop);
+  } catch (const Error& error) {
+    list.fail(core_reason(error));
+  }
+}
 
 ReadShape read_shape(const JsonCursor& node) {
   const JsonCursor type = node.field("type");
@@ -287,6 +319,9 @@ ReadShape read_shape(const JsonCursor& node) {
                   " m from point1 (a segment needs a length)");
     }
     result.shape = make_segment(point1, point2, &result.centroid);
+  } else if (name == "chain") {
+    result.chain = read_chain(node);
+    result.shape = result.chain.front().shape;
   } else if (name == "polygon") {
     node.allow_only({"type", "vertices", "radius"});
     const JsonCursor list = node.field("vertices");
@@ -319,12 +354,15 @@ ReadShape read_shape(const JsonCursor& node) {
     }
   } else {
     type.fail("unknown shape type \"" + name +
-              "\" (expected one of: circle, box, oriented_box, polygon, capsule, segment)");
+              "\" (expected one of: circle, box, oriented_box, polygon, capsule, segment, chain)");
   }
   return result;
 }
 
-BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
+/// A body object; a chain's links go to `chain` (one static body each, at their midpoints
+/// placed by the body's position and angle), or fail where `chain` is null (spawned bodies).
+BodySpawn read_body(const JsonCursor& node, const MaterialTable& table,
+                    std::vector<ChainLink>* chain = nullptr) {
   node.allow_only({"name", "type", "shape", "position", "angle", "velocity", "angular_velocity",
                    "gravity_scale", "linear_damping", "angular_damping", "fixed_rotation", "bullet",
                    "layers", "material", "one_way", "sensor", "sensor_detects_static", "events"});
@@ -337,6 +375,17 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table) {
   }
   const ReadShape shape = read_shape(node.field("shape"));
   body.shape = shape.shape;
+  if (!shape.chain.empty()) {
+    if (chain == nullptr) {
+      node.field("shape").field("type").fail(
+          "a spawned body cannot be a chain (put the chain in \"bodies\")");
+    }
+    if (def.type != BodyType::Static) {
+      node.field("shape").field("type").fail(
+          "a chain is level geometry: its body must be \"type\": \"static\"");
+    }
+    *chain = shape.chain;
+  }
   if (def.type == BodyType::Dynamic && body.shape.type() == ShapeType::Segment) {
     node.field("shape").field("type").fail(
         "a segment has no area and so no mass: a dynamic body cannot be only a segment (give "
@@ -583,9 +632,19 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   const JsonCursor body_list = root.field("bodies");
   for (std::size_t i = 0; i < body_list.size(); ++i) {
     const JsonCursor node = body_list.element(i);
-    bodies.push_back(read_body(node, table));
+    const int index = static_cast<int>(bodies.size());  // creation index: links count
+    std::vector<ChainLink> chain;
+    const BodySpawn body = read_body(node, table, &chain);
+    if (chain.empty()) bodies.push_back(body);
+    const Transform place{body.def.position, Rotation::from_angle(body.def.angle)};
+    for (const ChainLink& link : chain) {
+      BodySpawn spawn = body;
+      spawn.def.position = place.apply(link.position);
+      spawn.shape = link.shape;
+      bodies.push_back(spawn);
+    }
     if (auto name = node.optional_field("name")) {
-      if (!names.emplace(read_body_name(*name), static_cast<int>(i)).second) {
+      if (!names.emplace(read_body_name(*name), index).second) {
         name->fail("the name \"" + name->string() + "\" is used twice");
       }
     }

@@ -50,6 +50,14 @@ struct Body {
   Shape shape;                ///< in body-local coordinates, centroid at the origin
 };
 
+/// `body`'s core point (body frame, metres) under its surface point `surface` (world metres),
+/// where `outward` (unit, world) is the surface's normal there: a circle's centre (exactly
+/// the origin), else the surface point moved in by the body's rounding.
+inline vec2 core_anchor(const Body& body, vec2 surface, vec2 outward) {
+  if (body.shape.type() == ShapeType::Circle) return vec2(0.0f, 0.0f);
+  return body.transform.apply_inverse(surface - outward * body.rounding);
+}
+
 /// The view of `body` that `World::body` hands out.
 inline BodyView view_of(const Body& body) {
   BodyView view;

@@ -39,20 +39,31 @@ void recycle_manifold(const Body& a, const Body& b, Contact& contact);
 
 /// The anchors a kept point is solved with this step (Box2D v3's): `anchor_a` and `anchor_b`
 /// are the offsets from each body's centre to the point as they were when the manifold was
-/// computed, not turned with the bodies since; `local_anchor_a/b` are the material points at
-/// the ends of those offsets now, B's moved along the normal so that their separation starts
-/// the step at the recycled depth. Turning the offsets with the bodies instead (the points
+/// computed, not turned with the bodies since; `local_anchor_a/b` are the core points under
+/// the ends of those offsets now (`core_anchor`: a circle's centre), B's (for a circle B, A's)
+/// moved along the normal so that their separation starts the step at the recycled depth. Turning the offsets with the bodies instead (the points
 /// fixed in the material) let a 20-box soft-step stack lean over within 15 s, as collision
 /// afresh every step does; with the offsets kept it stands like Box2D v3's (3 cm of sway).
 /// Defined here so that the per-point prepare loop inlines it.
 inline void set_recycled_anchors(const Body& a, const Body& b, const Contact& contact, ContactPoint& point) {
   point.anchor_a = contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a);
   point.anchor_b = contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
-  const vec2 on_a = a.transform.position + point.anchor_a;
-  const vec2 on_b = b.transform.position + point.anchor_b;
-  const float excess = glm::dot(on_b - on_a, contact.normal) + point.depth;
-  point.local_anchor_a = a.transform.apply_inverse(on_a - contact.normal * a.rounding);
-  point.local_anchor_b = b.transform.apply_inverse(on_b - contact.normal * (excess - b.rounding));
+  const vec2 normal = contact.normal;
+  const bool round_a = a.shape.type() == ShapeType::Circle;
+  const bool round_b = b.shape.type() == ShapeType::Circle;
+  // The core points (see `core_anchor`) under the ends of the offsets.
+  vec2 core_a = round_a ? a.transform.position : a.transform.position + point.anchor_a - normal * a.rounding;
+  vec2 core_b = round_b ? b.transform.position : b.transform.position + point.anchor_b + normal * b.rounding;
+  // B's core (or, for a circle B, A's) moves along the normal so that the separation starts
+  // the step at the recycled depth; two circles' centres give their separation exactly.
+  const float excess = glm::dot(core_b - core_a, normal) - point.rounding + point.depth;
+  if (!round_b) {
+    core_b -= normal * excess;
+  } else if (!round_a) {
+    core_a += normal * excess;
+  }
+  point.local_anchor_a = round_a ? vec2(0.0f, 0.0f) : a.transform.apply_inverse(core_a);
+  point.local_anchor_b = round_b ? vec2(0.0f, 0.0f) : b.transform.apply_inverse(core_b);
 }
 
 }  // namespace impulse2d

@@ -26,7 +26,7 @@ constexpr SceneFrames kSceneFrames[] = {
     {"shape_pairs", 30, 240},      {"pyramid", 60, 600},      {"stack", 60, 600},
     {"newtons_cradle", 60, 180},   {"bullet", 20, 90},        {"ball_pit", 120, 600},
     {"random_polygons", 120, 600}, {"platformer", 470, 1110}, {"push", 60, 120},
-    {"heavy_on_light", 30, 300},   {"capsules", 60, 480},
+    {"heavy_on_light", 30, 300},   {"capsules", 60, 480},     {"terrain_chain", 90, 720},
 };
 
 /// The scenes with joints (issue 30): the same frames, their motion overlays with the joints'.

@@ -184,7 +184,7 @@ TEST(Snapshot, CorruptBuffersAreErrors) {
   for (std::uint8_t old : {1, 2}) {
     std::vector<std::uint8_t> old_version = bytes;
     old_version[4] = old;
-    refused(old_version, "snapshot version " + std::to_string(old) + ", this build reads version 3");
+    refused(old_version, ("snapshot version " + std::to_string(old) + ", this build reads version 3").c_str());
   }
   std::vector<std::uint8_t> magic = bytes;
   magic[0] ^= 0xFF;

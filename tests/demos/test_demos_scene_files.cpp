@@ -177,8 +177,12 @@ INSTANTIATE_TEST_SUITE_P(
                 R"({"shape": {"type": "circle", "radius": 1}, "position": [0, 0], "material": "Static"})"),
             "bodies[0].material: a dynamic body needs density > 0"},
         BadFile{"UnknownShape",
-                scene_with_body(R"({"shape": {"type": "chain"}, "position": [0, 0]})"),
-                "bodies[0].shape.type: unknown shape type \"chain\""},
+                scene_with_body(R"({"shape": {"type": "hexagon"}, "position": [0, 0]})"),
+                "bodies[0].shape.type: unknown shape type \"hexagon\""},
+        BadFile{"ChainOnADynamicBody",
+                scene_with_body(
+                    R"({"shape": {"type": "chain", "points": [[0, 0], [1, 0]]}, "position": [0, 0]})"),
+                "bodies[0].shape.type: a chain is level geometry"},
         BadFile{
             "Misspelt",
             scene_with_body(R"({"shape": {"type": "circle", "raduis": 1}, "position": [0, 0]})"),

@@ -1,5 +1,5 @@
-// libFuzzer target: two shapes (circle, box, oriented box, polygon, capsule, segment, rounded
-// polygon) and two transforms decoded from the bytes go through the collision jump table in
+// libFuzzer target: two shapes (circle, box, oriented box, polygon, capsule, segment, chain
+// link, rounded polygon) and two transforms decoded from the bytes go through the collision jump table in
 // both orders. Every manifold must have at most 2 points, finite
 // depths and points, a unit normal when touching, and swapping the pair must not turn a
 // clear contact into none or make the normal point the same way (except when the centres do
@@ -38,9 +38,11 @@ class Bytes {
 };
 
 /// Kinds 0..3 as before the new shapes (so the older seeds decode as they did), then capsule,
-/// segment and rounded polygon.
+/// segment and rounded polygon; a segment whose kind byte is 128 or more is the middle link of
+/// a chain through four decoded points (its ghosts the outer two).
 std::optional<Shape> read_shape(Bytes& bytes) {
-  const int kind = bytes.byte() % 7;
+  const std::uint8_t selector = bytes.byte();
+  const int kind = selector % 7;
   try {
     switch (kind) {
       case 0:
@@ -57,7 +59,11 @@ std::optional<Shape> read_shape(Bytes& bytes) {
       case 5: {
         const vec2 point1{bytes.in(-5.0f, 5.0f), bytes.in(-5.0f, 5.0f)};
         const vec2 point2{bytes.in(-5.0f, 5.0f), bytes.in(-5.0f, 5.0f)};
-        return make_segment(point1, point2);
+        if (selector < 128) return make_segment(point1, point2);
+        const vec2 ghost1{bytes.in(-5.0f, 5.0f), bytes.in(-5.0f, 5.0f)};
+        const vec2 ghost2{bytes.in(-5.0f, 5.0f), bytes.in(-5.0f, 5.0f)};
+        const vec2 points[4] = {ghost1, point1, point2, ghost2};
+        return make_chain(points, 4, false)[1].shape;
       }
       default: {  // 3: a polygon; 6: a rounded one
         const int count = 3 + bytes.byte() % (max_polygon_vertices - 2);
