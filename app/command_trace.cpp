@@ -41,7 +41,9 @@ struct TraceJob {
 /// `UsageError`.
 TraceJob prepare_trace(const TraceArguments& arguments) {
   TraceJob job;
-  job.resolved = resolve(arguments.scene);
+  // The events are checked against the run's true end once a loaded state gave its start;
+  // a run saved for later may stop before some of them (the continuation applies them).
+  job.resolved = resolve(arguments.scene, false);
   if (arguments.format == "json") {
     job.format = TraceFormat::Json;
   } else if (arguments.format != "csv") {
@@ -54,6 +56,7 @@ TraceJob prepare_trace(const TraceArguments& arguments) {
   job.fingerprint = scene_fingerprint(*job.run);
   if (!arguments.load_state.empty()) load_state_file(arguments.load_state, *job.run);
   job.first_step = job.run->step_count();
+  if (arguments.save_state.empty()) check_events_in_run(job.resolved, job.first_step + job.resolved.steps);
   for (const BodyId id : job.run->world().body_ids()) {
     job.moving += job.run->world().body(id).type == BodyType::Static ? 0 : 1;
   }

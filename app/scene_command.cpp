@@ -38,7 +38,7 @@ std::string overlay_help() {
   return text;
 }
 
-ResolvedScene resolve(const SceneArguments& arguments) {
+ResolvedScene resolve(const SceneArguments& arguments, bool check_events) {
   ResolvedScene resolved{resolve_scene(arguments.scene), Params{}, 0};
   resolved.params = Params(resolved.scene.params);
   for (const std::string& assignment : arguments.params) resolved.params.set_assignment(assignment);
@@ -47,15 +47,19 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     throw UsageError("--steps " + std::to_string(resolved.steps) + ": must be 0.." +
                      std::to_string(limits::max_steps));
   }
+  if (check_events) check_events_in_run(resolved, resolved.steps);
+  return resolved;
+}
+
+void check_events_in_run(const ResolvedScene& resolved, std::int64_t last_step) {
   for (const SceneEvent& event : resolved.scene.events) {
-    if (event.step > resolved.steps) {
+    if (event.step > last_step) {
       throw UsageError(resolved.scene.source + ": " + event.origin + ".step: step " +
                        std::to_string(event.step) + " is after the end of the run (steps 0.." +
-                       std::to_string(resolved.steps) +
+                       std::to_string(last_step) +
                        "; change it with --steps or the file's run.steps)");
     }
   }
-  return resolved;
 }
 
 std::unique_ptr<SceneRun> start_run(const ResolvedScene& resolved, const SceneArguments& arguments) {

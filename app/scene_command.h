@@ -44,9 +44,13 @@ void add_backend_option(CLI::App& command, std::string& backend);
 /// The help text of `--overlays`: every overlay with its description.
 std::string overlay_help();
 
-/// Resolves the scene, applies the parameters and checks the length and the events against
-/// it. Throws `UsageError`.
-ResolvedScene resolve(const SceneArguments& arguments);
+/// Resolves the scene, applies the parameters and checks the length, and (with
+/// `check_events`) the events against it (`check_events_in_run` up to `steps`). Throws
+/// `UsageError`.
+ResolvedScene resolve(const SceneArguments& arguments, bool check_events = true);
+/// Throws `UsageError` naming the first event of the scene after `last_step`, the last step of
+/// the run: it would never happen.
+void check_events_in_run(const ResolvedScene& resolved, std::int64_t last_step);
 /// A run of the resolved scene, strict when asked.
 std::unique_ptr<SceneRun> start_run(const ResolvedScene& resolved, const SceneArguments& arguments);
 

@@ -178,7 +178,10 @@ void render_tiles(const SheetSource& source, const ContactSheetOptions& options,
   // A tile shows the events of the steps since the tile before it.
   render::EventMarks events;
   const bool record_events = (source.draw.flags & draw_events) != 0;
-  if (record_events) frame_options.events = &events;
+  if (record_events) {
+    frame_options.events = &events;
+    events.start(run.world());
+  }
   bool first = true;
   for (const std::int64_t step : source.plan.frames) {
     while (run.step_count() < step) {

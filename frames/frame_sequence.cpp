@@ -146,7 +146,10 @@ FrameSequenceResult render_staged(SceneRun& run, const FramePlan& plan,
   // A frame shows the events of the steps since the frame before it.
   render::EventMarks events;
   const bool record_events = (options.draw.flags & draw_events) != 0;
-  if (record_events) frame_options.events = &events;
+  if (record_events) {
+    frame_options.events = &events;
+    events.start(run.world());
+  }
 
   FrameSequenceResult result;
   std::vector<FrameIndexRow> index;

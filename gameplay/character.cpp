@@ -105,15 +105,22 @@ Character::Character(World& world, const CharacterDef& def) : settings_(def.sett
   body_def.speculative = false;
   body_ = world.create_body(body_def, make_box(def.half_extents));
   half_extents_ = def.half_extents;
-  jumps_left_ = settings_.extra_jumps;
-  steps_since_grounded_ = INT_MAX;
-  jumped_since_grounded_ = true;  // no ground used yet: no coyote jump from the spawn point
+  state_.jumps_left = settings_.extra_jumps;
+  state_.steps_since_grounded = INT_MAX;
+  state_.jumped_since_grounded = true;  // no ground used yet: no coyote jump from the spawn point
+}
+
+Character::Character(const World& world, BodyId body, const CharacterDef& def,
+                     const CharacterState& state)
+    : body_(body), half_extents_(def.half_extents), settings_(def.settings), state_(state) {
+  validate_character_settings(settings_);
+  if (!world.is_valid(body_)) throw Error("Character: the saved character's body does not exist");
 }
 
 void Character::set_settings(const CharacterSettings& settings) {
   validate_character_settings(settings);
   settings_ = settings;
-  jumps_left_ = std::min(jumps_left_, settings_.extra_jumps);
+  state_.jumps_left = std::min(state_.jumps_left, settings_.extra_jumps);
 }
 
 float Character::jump_speed(const World& world) const {
@@ -121,7 +128,7 @@ float Character::jump_speed(const World& world) const {
 }
 
 void Character::sense_contacts(const World& world, vec2 up, float move_x) {
-  ground_ = wall_ = steep_ = ceiling_ = step_ = CharacterSurface{};
+  state_.ground = state_.wall = state_.steep = state_.ceiling = state_.step = CharacterSurface{};
   const BodyView self = world.body(body_);
   const vec2 self_moved = self.transform.position - self.previous_position;
   const vec2 feet = self.transform.position - up * half_extents_.y;
@@ -166,20 +173,20 @@ void Character::sense_contacts(const World& world, vec2 up, float move_x) {
       const float score = move_sign == 0.0f ? normal_up : glm::dot(tangent * move_sign, up);
       if (score > best_ground_score) {
         best_ground_score = score;
-        ground_ = surface;
+        state_.ground = surface;
       }
     } else if (std::abs(normal_up) <= wall_max_dot) {
       if (top_above_feet <= settings_.max_step_height &&
-          (!step_.found() || top_above_feet > step_height_)) {
-        step_ = surface;
-        step_height_ = top_above_feet;
-      } else if (!wall_.found() || glm::dot(surface.normal, side) * move_sign < 0.0f) {
-        wall_ = surface;  // with a wall on each side, the one pressed into
+          (!state_.step.found() || top_above_feet > state_.step_height)) {
+        state_.step = surface;
+        state_.step_height = top_above_feet;
+      } else if (!state_.wall.found() || glm::dot(surface.normal, side) * move_sign < 0.0f) {
+        state_.wall = surface;  // with a wall on each side, the one pressed into
       }
     } else if (normal_up < 0.0f) {
-      ceiling_ = surface;
+      state_.ceiling = surface;
     } else {
-      steep_ = surface;
+      state_.steep = surface;
     }
   }
 }
@@ -203,11 +210,11 @@ bool Character::snap_to_ground(const World& world, vec2 up, float* push_distance
     found = true;
     nearest_gap = gap;
     const BodyView other = world.body(hit->body);
-    ground_.body = hit->body;
-    ground_.normal = hit->normal;
-    ground_.point = hit->point;
-    ground_.velocity = material_velocity(other, hit->point);
-    ground_.friction = mix_friction(self.material->static_friction, other.material->static_friction,
+    state_.ground.body = hit->body;
+    state_.ground.normal = hit->normal;
+    state_.ground.point = hit->point;
+    state_.ground.velocity = material_velocity(other, hit->point);
+    state_.ground.friction = mix_friction(self.material->static_friction, other.material->static_friction,
                                     world.settings().friction_mixing);
   }
   // Close the gap in one step and sink to half the allowed overlap, so the next step's
@@ -228,66 +235,66 @@ void Character::update(World& world, const CharacterInput& input) {
   vec2 velocity = self.linear_velocity;
   const float mass = self.mass;
 
-  const bool pressed = input.jump && !jump_was_held_;
-  jump_was_held_ = input.jump;
-  last_action_ = CharacterAction::None;
+  const bool pressed = input.jump && !state_.jump_was_held;
+  state_.jump_was_held = input.jump;
+  state_.last_action = CharacterAction::None;
 
   // 1. Where are we: surfaces from the contacts, or ground to snap to.
   sense_contacts(world, up, move_x);
-  const bool ground_contact = ground_.found();
+  const bool ground_contact = state_.ground.found();
   float snap_push = 0.0f;
-  bool on_ground = ground_contact || (may_snap_ && snap_to_ground(world, up, &snap_push));
-  if (!on_ground && !wall_.found()) wall_ = step_;  // off the ground a low wall is still a wall
+  bool on_ground = ground_contact || (state_.may_snap && snap_to_ground(world, up, &snap_push));
+  if (!on_ground && !state_.wall.found()) state_.wall = state_.step;  // off the ground a low wall is still a wall
 
   // 2. Timers, in steps at this world's time step.
   const int coyote_steps = window_steps(settings_.coyote_time, dt);
   const int buffer_steps = window_steps(settings_.jump_buffer_time, dt);
   if (on_ground) {
-    steps_since_grounded_ = 0;
-    jumps_left_ = settings_.extra_jumps;
-    jumped_since_grounded_ = false;
-    rising_hold_ = false;
-  } else if (steps_since_grounded_ < INT_MAX) {
-    ++steps_since_grounded_;
+    state_.steps_since_grounded = 0;
+    state_.jumps_left = settings_.extra_jumps;
+    state_.jumped_since_grounded = false;
+    state_.rising_hold = false;
+  } else if (state_.steps_since_grounded < INT_MAX) {
+    ++state_.steps_since_grounded;
   }
   if (pressed) {
-    press_buffered_ = true;
-    buffer_age_ = 0;
-  } else if (press_buffered_ && ++buffer_age_ > buffer_steps) {
-    press_buffered_ = false;
+    state_.press_buffered = true;
+    state_.buffer_age = 0;
+  } else if (state_.press_buffered && ++state_.buffer_age > buffer_steps) {
+    state_.press_buffered = false;
   }
-  bool input_locked = lock_steps_left_ > 0;
-  if (input_locked) --lock_steps_left_;
+  bool input_locked = state_.lock_steps_left > 0;
+  if (input_locked) --state_.lock_steps_left;
 
   // 3. Jumps, in order of preference: drop through, from the ground (or coyote), off a wall,
   // in the air.
-  if (press_buffered_) {
+  if (state_.press_buffered) {
     const float take_off_speed = jump_speed(world);
-    const bool coyote = !jumped_since_grounded_ && steps_since_grounded_ <= coyote_steps;
+    const bool coyote = !state_.jumped_since_grounded && state_.steps_since_grounded <= coyote_steps;
     if (ground_contact && input.down && one_way_platforms_ != nullptr &&
-        one_way_platforms_->contains(ground_.body)) {
-      world.set_contact_enabled(body_, ground_.body, false);
-      last_action_ = CharacterAction::DropThrough;
+        one_way_platforms_->contains(state_.ground.body)) {
+      world.set_contact_enabled(body_, state_.ground.body, false);
+      state_.last_action = CharacterAction::DropThrough;
     } else if (on_ground || coyote) {
-      const float ground_rise = on_ground ? glm::dot(ground_.velocity, up) : 0.0f;
+      const float ground_rise = on_ground ? glm::dot(state_.ground.velocity, up) : 0.0f;
       velocity += up * (ground_rise + take_off_speed - glm::dot(velocity, up));
-      last_action_ = on_ground ? CharacterAction::GroundJump : CharacterAction::CoyoteJump;
-    } else if (wall_.found()) {
-      const vec2 away = horizontal_part(wall_.normal, up);
-      velocity = wall_.velocity + away * settings_.wall_jump_velocity.x +
+      state_.last_action = on_ground ? CharacterAction::GroundJump : CharacterAction::CoyoteJump;
+    } else if (state_.wall.found()) {
+      const vec2 away = horizontal_part(state_.wall.normal, up);
+      velocity = state_.wall.velocity + away * settings_.wall_jump_velocity.x +
                  up * settings_.wall_jump_velocity.y;
-      lock_steps_left_ = window_steps(settings_.wall_jump_lock_time, dt);
+      state_.lock_steps_left = window_steps(settings_.wall_jump_lock_time, dt);
       input_locked = true;
-      last_action_ = CharacterAction::WallJump;
-    } else if (jumps_left_ > 0) {
-      --jumps_left_;
+      state_.last_action = CharacterAction::WallJump;
+    } else if (state_.jumps_left > 0) {
+      --state_.jumps_left;
       velocity += up * (take_off_speed - glm::dot(velocity, up));
-      last_action_ = CharacterAction::AirJump;
+      state_.last_action = CharacterAction::AirJump;
     }
-    if (last_action_ != CharacterAction::None) {
-      press_buffered_ = false;
-      jumped_since_grounded_ = true;
-      rising_hold_ = last_action_ != CharacterAction::DropThrough;
+    if (state_.last_action != CharacterAction::None) {
+      state_.press_buffered = false;
+      state_.jumped_since_grounded = true;
+      state_.rising_hold = state_.last_action != CharacterAction::DropThrough;
       on_ground = false;
     }
   }
@@ -295,89 +302,89 @@ void Character::update(World& world, const CharacterInput& input) {
   // 4. Motion.
   const float target_speed = move_x * settings_.max_speed;
   if (on_ground) {
-    support_ = CharacterSupport::Ground;
+    state_.support = CharacterSupport::Ground;
     // Walk along the ground relative to it (so platforms carry us); gravity off, so the
     // solver needs no normal impulse and friction does not fight the walk.
-    const vec2 tangent = right_perpendicular(ground_.normal);
+    const vec2 tangent = right_perpendicular(state_.ground.normal);
     // On the same ground as last update, keep the speed relative to what it did then, so a
     // platform that changes velocity takes us with it.
     const vec2 ground_before =
-        ground_.body == previous_ground_body_ ? previous_ground_velocity_ : ground_.velocity;
+        state_.ground.body == state_.previous_ground_body ? state_.previous_ground_velocity : state_.ground.velocity;
     float along = glm::dot(velocity - ground_before, tangent);
     if (!input_locked) {
       const bool speeding_up = target_speed != 0.0f && along * target_speed >= 0.0f &&
                                std::abs(target_speed) > std::abs(along);
       float rate = speeding_up ? settings_.ground_acceleration : settings_.ground_deceleration;
       if (settings_.full_traction_friction > 0.0f) {
-        rate *= std::min(1.0f, ground_.friction / settings_.full_traction_friction);
+        rate *= std::min(1.0f, state_.ground.friction / settings_.full_traction_friction);
       }
       along = move_toward(along, target_speed, rate * dt);
     }
-    for (const CharacterSurface* blocker : {&wall_, &steep_}) {
+    for (const CharacterSurface* blocker : {&state_.wall, &state_.steep}) {
       if (blocker->found() && glm::dot(tangent * along, horizontal_part(blocker->normal, up)) < 0.0f) {
         along = 0.0f;  // do not walk into a wall or up a slope too steep to stand on
       }
     }
-    velocity = ground_.velocity + tangent * along - up * (snap_push / dt);
-    if (step_.found() && glm::dot(tangent * along, horizontal_part(step_.normal, up)) < 0.0f) {
+    velocity = state_.ground.velocity + tangent * along - up * (snap_push / dt);
+    if (state_.step.found() && glm::dot(tangent * along, horizontal_part(state_.step.normal, up)) < 0.0f) {
       // Walking into a step: the solver would stop us at its face, so that contact is let
       // through until we part, and we rise onto the top within this step (half a slop above
       // it; snapping brings us down onto it).
-      world.set_contact_enabled(body_, step_.body, false);
-      const float lift = step_height_ + 0.5f * world_settings.slop;
-      velocity = ground_.velocity + side * glm::dot(tangent * along, side) + up * (lift / dt);
+      world.set_contact_enabled(body_, state_.step.body, false);
+      const float lift = state_.step_height + 0.5f * world_settings.slop;
+      velocity = state_.ground.velocity + side * glm::dot(tangent * along, side) + up * (lift / dt);
     }
-    gravity_scale_ = 0.0f;
-    const BodyView ground_body = world.body(ground_.body);
+    state_.gravity_scale = 0.0f;
+    const BodyView ground_body = world.body(state_.ground.body);
     if (ground_body.type == BodyType::Dynamic) {
-      world.apply_force(ground_.body, -up * (mass * gravity), ground_.point);  // our weight
+      world.apply_force(state_.ground.body, -up * (mass * gravity), state_.ground.point);  // our weight
     }
   } else {
-    support_ = CharacterSupport::Air;
-    if (steep_.found() && last_action_ == CharacterAction::None) {
-      support_ = CharacterSupport::SteepSlope;  // slides: gravity and the contact's friction act
+    state_.support = CharacterSupport::Air;
+    if (state_.steep.found() && state_.last_action == CharacterAction::None) {
+      state_.support = CharacterSupport::SteepSlope;  // slides: gravity and the contact's friction act
     } else if (!input_locked) {
       const float horizontal = glm::dot(velocity, side);
       velocity += side * (move_toward(horizontal, target_speed, settings_.air_acceleration * dt) -
                           horizontal);
     }
-    if (!input.jump || glm::dot(velocity, up) <= 0.0f || ceiling_.found()) rising_hold_ = false;
-    gravity_scale_ = rising_hold_ ? settings_.held_gravity_scale : 1.0f;
+    if (!input.jump || glm::dot(velocity, up) <= 0.0f || state_.ceiling.found()) state_.rising_hold = false;
+    state_.gravity_scale = state_.rising_hold ? settings_.held_gravity_scale : 1.0f;
 
     // Neither walls nor steep slopes are pushed into (no friction holding us to them)...
-    for (const CharacterSurface* blocker : {&wall_, &steep_}) {
+    for (const CharacterSurface* blocker : {&state_.wall, &state_.steep}) {
       if (!blocker->found()) continue;
       const vec2 across = horizontal_part(blocker->normal, up);
       const float into = glm::dot(velocity - blocker->velocity, across);
       if (into < 0.0f) velocity -= across * into;
     }
     // ...and a ceiling stops the rise.
-    if (ceiling_.found()) {
-      const float into = glm::dot(velocity - ceiling_.velocity, ceiling_.normal);
-      if (into < 0.0f) velocity -= ceiling_.normal * into;
+    if (state_.ceiling.found()) {
+      const float into = glm::dot(velocity - state_.ceiling.velocity, state_.ceiling.normal);
+      if (into < 0.0f) velocity -= state_.ceiling.normal * into;
     }
     // Pressing into a wall while falling: slide down it no faster than wall_slide_speed.
     const bool pressing_wall =
-        wall_.found() && move_x * glm::dot(wall_.normal, side) < 0.0f && !input_locked;
-    if (pressing_wall && last_action_ == CharacterAction::None) {
-      support_ = CharacterSupport::WallSlide;
+        state_.wall.found() && move_x * glm::dot(state_.wall.normal, side) < 0.0f && !input_locked;
+    if (pressing_wall && state_.last_action == CharacterAction::None) {
+      state_.support = CharacterSupport::WallSlide;
       const float rise = glm::dot(velocity, up);
-      if (rise - gravity * gravity_scale_ * dt < -settings_.wall_slide_speed) {
+      if (rise - gravity * state_.gravity_scale * dt < -settings_.wall_slide_speed) {
         velocity += up * (-settings_.wall_slide_speed - rise);
-        gravity_scale_ = 0.0f;
+        state_.gravity_scale = 0.0f;
       }
     }
   }
 
   world.set_linear_velocity(body_, velocity);
-  world.set_gravity_scale(body_, gravity_scale_);
-  may_snap_ = on_ground;
-  previous_ground_body_ = on_ground ? ground_.body : BodyId{};
-  previous_ground_velocity_ = ground_.velocity;
-  coyote_steps_left_ = (!on_ground && !jumped_since_grounded_)
-                           ? std::max(0, coyote_steps - steps_since_grounded_)
+  world.set_gravity_scale(body_, state_.gravity_scale);
+  state_.may_snap = on_ground;
+  state_.previous_ground_body = on_ground ? state_.ground.body : BodyId{};
+  state_.previous_ground_velocity = state_.ground.velocity;
+  state_.coyote_steps_left = (!on_ground && !state_.jumped_since_grounded)
+                           ? std::max(0, coyote_steps - state_.steps_since_grounded)
                            : 0;
-  buffer_steps_left_ = press_buffered_ ? buffer_steps - buffer_age_ : 0;
+  state_.buffer_steps_left = state_.press_buffered ? buffer_steps - state_.buffer_age : 0;
 }
 
 }  // namespace impulse2d

@@ -112,12 +112,45 @@ struct CharacterSurface {
   bool found() const { return !body.is_null(); }
 };
 
+/// Everything the controller carries from one update to the next (and draws): the surfaces
+/// of the last update and the jump state. `Character::state` reads it and the restoring
+/// constructor takes it back, so a saved run continues as the original.
+struct CharacterState {
+  CharacterSurface ground;   ///< walkable ground of the last update (also from ground snapping)
+  CharacterSurface wall;     ///< wall of the last update
+  CharacterSurface steep;    ///< ground too steep to stand on, last update
+  CharacterSurface ceiling;  ///< surface above, last update
+  CharacterSurface step;     ///< low wall the character can walk up, last update
+  float step_height = 0.0f;  ///< metres from the feet to the top of `step`
+  BodyId previous_ground_body;                 ///< ground of the update before (null in the air)
+  vec2 previous_ground_velocity{0.0f, 0.0f};   ///< its velocity then, m/s
+
+  CharacterSupport support = CharacterSupport::Air;    ///< where it was in the last update
+  CharacterAction last_action = CharacterAction::None;  ///< what it did in the last update
+  bool jump_was_held = false;          ///< jump button state of the last update
+  bool may_snap = false;               ///< grounded last update without a jump or drop
+  bool jumped_since_grounded = false;  ///< a jump or drop used the ground (no coyote after it)
+  bool rising_hold = false;            ///< variable-height phase of the current jump
+  bool press_buffered = false;         ///< a press is waiting for a chance to jump
+  int buffer_age = 0;                  ///< updates since the buffered press
+  int steps_since_grounded = 0;        ///< updates since the last grounded one (INT_MAX: never)
+  int jumps_left = 0;                  ///< extra jumps left
+  int lock_steps_left = 0;             ///< steps of horizontal-input lock left
+  int coyote_steps_left = 0;           ///< steps of the coyote window left
+  int buffer_steps_left = 0;           ///< steps a buffered press stays valid
+  float gravity_scale = 1.0f;          ///< gravity scale set by the last update
+};
+
 /// A platformer character: its body in the world plus the controller's state.
 class Character {
  public:
   /// Creates the character's body in `world`: dynamic, axis-aligned box, fixed rotation.
   /// Throws `Error` for invalid settings or definition.
   Character(World& world, const CharacterDef& def);
+  /// Takes back a character saved with `state()`: `body` is its body in `world` (a world
+  /// restored from a snapshot of the same moment), `def` the definition it was made from.
+  /// Throws `Error` for invalid settings or a body that does not exist in `world`.
+  Character(const World& world, BodyId body, const CharacterDef& def, const CharacterState& state);
 
   /// Runs the controller for the next step: reads `world.contacts()` (from the last step),
   /// decides jumps, sets the body's velocity and gravity scale. Call once before each
@@ -133,32 +166,34 @@ class Character {
 
   /// The character's body.
   BodyId body() const { return body_; }
+  /// The controller's state carried between updates (for saving it with the world).
+  const CharacterState& state() const { return state_; }
   /// m/s: the take-off speed of a jump, sqrt(2 |g| jump_height), under `world`'s gravity.
   float jump_speed(const World& world) const;
 
   /// True when the last update found walkable ground.
-  bool grounded() const { return support_ == CharacterSupport::Ground; }
+  bool grounded() const { return state_.support == CharacterSupport::Ground; }
   /// Where the character was in the last update.
-  CharacterSupport support() const { return support_; }
+  CharacterSupport support() const { return state_.support; }
   /// What it did in the last update.
-  CharacterAction last_action() const { return last_action_; }
+  CharacterAction last_action() const { return state_.last_action; }
   /// The ground of the last update (not found in the air).
-  const CharacterSurface& ground() const { return ground_; }
+  const CharacterSurface& ground() const { return state_.ground; }
   /// The wall touched in the last update (not found when none).
-  const CharacterSurface& wall() const { return wall_; }
+  const CharacterSurface& wall() const { return state_.wall; }
   /// Extra jumps left.
-  int jumps_left() const { return jumps_left_; }
+  int jumps_left() const { return state_.jumps_left; }
   /// Updates since the last grounded one (0 while grounded).
-  int steps_since_grounded() const { return steps_since_grounded_; }
+  int steps_since_grounded() const { return state_.steps_since_grounded; }
   /// Steps of the coyote window left after the last update (0 when a ground jump is no longer
   /// possible or the character is grounded and needs none).
-  int coyote_steps_left() const { return coyote_steps_left_; }
+  int coyote_steps_left() const { return state_.coyote_steps_left; }
   /// Steps a buffered press stays valid after the last update (0 when none is buffered).
-  int buffer_steps_left() const { return buffer_steps_left_; }
+  int buffer_steps_left() const { return state_.buffer_steps_left; }
   /// Steps of horizontal-input lock left after a wall jump.
-  int lock_steps_left() const { return lock_steps_left_; }
+  int lock_steps_left() const { return state_.lock_steps_left; }
   /// Gravity scale set by the last update.
-  float gravity_scale() const { return gravity_scale_; }
+  float gravity_scale() const { return state_.gravity_scale; }
 
   /// Draws the character's overlays: ground normal (green), wall normal (orange), a coyote
   /// bar (yellow) and a buffer bar (magenta) under the feet, a dot per extra jump left above
@@ -174,31 +209,7 @@ class Character {
   CharacterSettings settings_;
   const OneWayPlatforms* one_way_platforms_ = nullptr;
 
-  // Surfaces of the current update.
-  CharacterSurface ground_;
-  CharacterSurface wall_;
-  CharacterSurface steep_;
-  CharacterSurface ceiling_;
-  CharacterSurface step_;
-  float step_height_ = 0.0f;  // metres from the feet to the top of `step_`
-  BodyId previous_ground_body_;        // ground of the previous update (null in the air)
-  vec2 previous_ground_velocity_{0.0f, 0.0f};  // its velocity then, m/s
-
-  // Controller state carried between updates.
-  CharacterSupport support_ = CharacterSupport::Air;
-  CharacterAction last_action_ = CharacterAction::None;
-  bool jump_was_held_ = false;           // jump button state of the previous update
-  bool may_snap_ = false;                // grounded last update without a jump or drop
-  bool jumped_since_grounded_ = false;   // a jump or drop used the ground (no coyote after it)
-  bool rising_hold_ = false;             // variable-height phase of the current jump
-  bool press_buffered_ = false;          // a press is waiting for a chance to jump
-  int buffer_age_ = 0;                   // updates since the buffered press
-  int steps_since_grounded_ = 0;
-  int jumps_left_ = 0;
-  int lock_steps_left_ = 0;
-  int coyote_steps_left_ = 0;
-  int buffer_steps_left_ = 0;
-  float gravity_scale_ = 1.0f;
+  CharacterState state_;
 };
 
 }  // namespace impulse2d

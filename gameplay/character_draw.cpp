@@ -35,31 +35,31 @@ void Character::draw(const World& world, DebugDraw& draw, Color label_color) con
   const int coyote_window = window_steps(settings_.coyote_time, dt);
   const int buffer_window = window_steps(settings_.jump_buffer_time, dt);
 
-  if (ground_.found()) {
-    draw.draw_arrow(ground_.point, ground_.point + ground_.normal * normal_arrow_length,
+  if (state_.ground.found()) {
+    draw.draw_arrow(state_.ground.point, state_.ground.point + state_.ground.normal * normal_arrow_length,
                     ground_normal_color);
   }
-  if (wall_.found()) {
-    draw.draw_arrow(wall_.point, wall_.point + wall_.normal * normal_arrow_length,
+  if (state_.wall.found()) {
+    draw.draw_arrow(state_.wall.point, state_.wall.point + state_.wall.normal * normal_arrow_length,
                     wall_normal_color);
   }
 
   const float width = 2.0f * half_extents_.x;
   const vec2 below_feet = center + vec2(-half_extents_.x, -half_extents_.y - 0.12f);
-  draw_bar(draw, below_feet, width, coyote_steps_left_, coyote_window, coyote_color);
-  draw_bar(draw, below_feet - vec2(0.0f, 0.1f), width, buffer_steps_left_, buffer_window,
+  draw_bar(draw, below_feet, width, state_.coyote_steps_left, coyote_window, coyote_color);
+  draw_bar(draw, below_feet - vec2(0.0f, 0.1f), width, state_.buffer_steps_left, buffer_window,
            buffer_color);
 
   const vec2 above_head = center + vec2(-half_extents_.x, half_extents_.y + 0.15f);
-  for (int i = 0; i < jumps_left_; ++i) {
+  for (int i = 0; i < state_.jumps_left; ++i) {
     draw.draw_point(above_head + vec2(0.2f * static_cast<float>(i), 0.0f), jump_dot_pixels,
                     jump_dot_color);
   }
   draw.draw_text(above_head + vec2(0.0f, 0.15f),
-                 "coyote " + std::to_string(coyote_steps_left_) + "/" +
+                 "coyote " + std::to_string(state_.coyote_steps_left) + "/" +
                      std::to_string(coyote_window) + "  buffer " +
-                     std::to_string(buffer_steps_left_) + "/" + std::to_string(buffer_window) +
-                     "  jumps " + std::to_string(jumps_left_),
+                     std::to_string(state_.buffer_steps_left) + "/" + std::to_string(buffer_window) +
+                     "  jumps " + std::to_string(state_.jumps_left),
                  label_color);
 }
 

@@ -20,6 +20,13 @@ class OneWayPlatforms {
   /// platform's frame: it turns with the platform). Adding a body twice replaces its `up`.
   /// Throws `Error` for a null handle or a non-unit `up`.
   void add(BodyId platform, vec2 up = vec2(0.0f, 1.0f));
+  /// A one-way platform: the body and its local solid direction.
+  struct Platform {
+    BodyId body;  ///< the platform
+    vec2 up;      ///< unit direction, in the platform's frame, it is solid for
+  };
+  /// Every platform, in the order added (for saving them with the world).
+  const std::vector<Platform>& platforms() const { return platforms_; }
   /// True when `body` was added.
   bool contains(BodyId body) const;
   /// The rule, for a pair that starts touching: a pair without a platform is allowed; with a
@@ -38,10 +45,6 @@ class OneWayPlatforms {
   float rising_speed_tolerance = 0.05f;
 
  private:
-  struct Platform {
-    BodyId body;  // the platform
-    vec2 up;      // local solid direction
-  };
   const Platform* find(BodyId body) const;
   std::vector<Platform> platforms_;  // in the order added
 };

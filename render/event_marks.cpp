@@ -14,16 +14,21 @@ constexpr float kTwoPi = 6.28318530718f;
 constexpr int kRingSegments = 12;
 constexpr int kBurstRays = 8;
 
+// The mean of a contact's points; false for a contact without points.
+bool contact_point(const Contact& contact, vec2& point) {
+  if (contact.point_count == 0) return false;
+  vec2 sum(0.0f, 0.0f);
+  for (int i = 0; i < contact.point_count; ++i) sum += contact.points[i].point;
+  point = sum / static_cast<float>(contact.point_count);
+  return true;
+}
+
 // Where the pair (a, b) touches: the mean of its contact points, awake or asleep; without a
 // contact, midway between the closest points of the two shapes. Nothing when a body is gone.
 bool touch_point(const World& world, BodyId a, BodyId b, vec2& point) {
   for (const std::vector<Contact>* contacts : {&world.contacts(), &world.sleeping_contacts()}) {
     for (const Contact& contact : *contacts) {
-      if (contact.body_a != a || contact.body_b != b || contact.point_count == 0) continue;
-      vec2 sum(0.0f, 0.0f);
-      for (int i = 0; i < contact.point_count; ++i) sum += contact.points[i].point;
-      point = sum / static_cast<float>(contact.point_count);
-      return true;
+      if (contact.body_a == a && contact.body_b == b && contact_point(contact, point)) return true;
     }
   }
   if (!world.is_valid(a) || !world.is_valid(b)) return false;
@@ -87,9 +92,35 @@ std::vector<EventMark> last_step_event_marks(const World& world, std::int64_t st
   return marks;
 }
 
+void EventMarks::start(const World& world) { remember_touches(world); }
+
 void EventMarks::record(const World& world, std::int64_t step) {
   const std::vector<EventMark> last = last_step_event_marks(world, step);
-  marks_.insert(marks_.end(), last.begin(), last.end());
+  // The ends left out there (a body removed) come first among the ends, in the world's order.
+  std::size_t at = 0;
+  while (at < last.size() && last[at].kind == EventKind::touch_begin) ++at;
+  marks_.insert(marks_.end(), last.begin(), last.begin() + static_cast<std::ptrdiff_t>(at));
+  for (const ContactEndTouchEvent& event : world.contact_events().end) {
+    if (world.is_valid(event.body_a) && world.is_valid(event.body_b)) continue;
+    for (const TouchPoint& touch : touches_) {
+      if (touch.body_a == event.body_a && touch.body_b == event.body_b) {
+        marks_.push_back({EventKind::touch_end, touch.point, 0.0f, step});
+        break;
+      }
+    }
+  }
+  marks_.insert(marks_.end(), last.begin() + static_cast<std::ptrdiff_t>(at), last.end());
+  remember_touches(world);
+}
+
+void EventMarks::remember_touches(const World& world) {
+  touches_.clear();
+  for (const std::vector<Contact>* contacts : {&world.contacts(), &world.sleeping_contacts()}) {
+    for (const Contact& contact : *contacts) {
+      vec2 point;
+      if (contact_point(contact, point)) touches_.push_back({contact.body_a, contact.body_b, point});
+    }
+  }
 }
 
 EventCounts count_event_marks(const std::vector<EventMark>& marks) {

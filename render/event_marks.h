@@ -4,7 +4,10 @@
 /// by step between two frames and drawn as marks. A touch begins with a ring and ends with a
 /// cross where the pair touches, a hit is a burst whose rays grow with its approach speed, and
 /// a sensor's begin (ring) and end (cross) sit at the visitor's centre in the sensor colour.
+/// A touch that ends because one of its bodies was removed is crossed where the pair last
+/// touched (`EventMarks` remembers it from the step before).
 
+#include "core/body.h"
 #include "core/debug_draw.h"
 #include "render/hud.h"
 
@@ -32,7 +35,8 @@ enum class EventKind : std::uint8_t {
 struct EventMark {
   EventKind kind = EventKind::touch_begin;  ///< what happened
   /// Where, metres: the mean of the pair's contact points (the closest points between the two
-  /// shapes when the contact is gone), a hit's point, a sensor visitor's centre.
+  /// shapes when the contact is gone; for an end whose body was removed, the mean of the
+  /// pair's contact points after the step before), a hit's point, a sensor visitor's centre.
   vec2 point{0.0f, 0.0f};
   float speed = 0.0f;     ///< a hit's approach speed, m/s (0 for the other kinds)
   std::int64_t step = 0;  ///< the step it happened in
@@ -51,22 +55,35 @@ struct EventCounts {
 
 /// The marks of the events of `world`'s last step, labelled `step`, in the world's order
 /// (touch begins, ends, hits, sensor begins, ends). An end whose body was removed has no place
-/// to be drawn and is left out.
+/// left in the world and is left out (`EventMarks::record` places it).
 std::vector<EventMark> last_step_event_marks(const World& world, std::int64_t step);
 
-/// The marks of the steps since the last frame: `record` after each step, draw, `clear` after
-/// each frame, so that frames taken every N steps lose no event.
+/// The marks of the steps since the last frame: `start` before the first step, `record` after
+/// each step, draw, `clear` after each frame, so that frames taken every N steps lose no event.
 class EventMarks {
  public:
-  /// Appends the marks of `world`'s last step (`last_step_event_marks`), labelled `step`.
+  /// Remembers where `world`'s pairs touch now (as `record` does after each step), so that a
+  /// touch whose body is removed before the next step is still crossed where it was.
+  void start(const World& world);
+  /// Appends the marks of `world`'s last step (`last_step_event_marks`), labelled `step`, with
+  /// the ends of pairs whose body was removed placed where the pair touched when `start` or the
+  /// previous `record` saw it; then remembers where the pairs touch now.
   void record(const World& world, std::int64_t step);
-  /// Forgets every mark (after a frame is drawn).
+  /// Forgets every mark (after a frame is drawn); the touch points are kept.
   void clear() { marks_.clear(); }
   /// The marks recorded since the last `clear`, in step order.
   const std::vector<EventMark>& marks() const { return marks_; }
 
  private:
+  // Where a pair of bodies touched when last seen: the mean of its contact points.
+  struct TouchPoint {
+    BodyId body_a;
+    BodyId body_b;
+    vec2 point;
+  };
+  void remember_touches(const World& world);
   std::vector<EventMark> marks_;
+  std::vector<TouchPoint> touches_;  // the world's contacts with points, in its order
 };
 
 /// How many marks of each kind `marks` holds.

@@ -32,6 +32,11 @@ class CharacterScript : public StepScript {
   void button(World& world, const std::string& name, bool pressed) override;
   /// Creates the character on the first call, then updates it from the buttons held.
   void before_step(World& world, std::int64_t step) override;
+  /// The buttons held and, once it exists, the character: its one-way platforms, its body and
+  /// its controller state.
+  std::vector<std::uint8_t> save_state() const override;
+  /// Takes back what `save_state` wrote and re-installs the one-way platforms' contact filter.
+  void restore_state(World& world, const std::vector<std::uint8_t>& bytes) override;
   /// The character's body once it exists.
   std::optional<BodyId> followed_body() const override;
   /// The character's ground normal, timers and jumps left, labelled in the palette's colour.

@@ -169,28 +169,41 @@ void SceneRun::apply_event(const SceneEvent& event) {
   }
 }
 
-void SceneRun::restore_snapshot(const std::vector<std::uint8_t>& snapshot) {
-  if (script_) {
-    throw UsageError("scene " + scene_.name +
-                     " runs a script whose state a snapshot does not hold; it cannot start "
-                     "from a saved state");
-  }
-  World restored(world_.settings());
+std::vector<std::uint8_t> SceneRun::save_script_state() const {
+  return script_ ? script_->save_state() : std::vector<std::uint8_t>{};
+}
+
+void SceneRun::restore_snapshot(const std::vector<std::uint8_t>& snapshot,
+                                const std::vector<std::uint8_t>& script_state) {
+  // A copy keeps the world's contact filter (a script that installs its own installs it again
+  // in `restore_state`).
+  World restored = world_;
   restored.restore_snapshot(snapshot);  // throws Error, leaving this run as it was
   const std::int64_t step = restored.step_count();
   std::size_t next = 0;
   for (; next < events_.size() && events_[next]->step < step; ++next) {
     const SceneEvent& event = *events_[next];
-    const bool done = event.kind == SceneEventKind::Impulse ||
+    const bool done = event.kind == SceneEventKind::Impulse || event.kind == SceneEventKind::Button ||
                       (event.kind == SceneEventKind::Force && event.step + event.steps <= step);
     if (!done) {
       throw UsageError(scene_.source + ": " + event.origin + " (step " +
                        std::to_string(event.step) + ") comes before the saved state's step " +
                        std::to_string(step) +
-                       "; only impulses and finished forces can be resumed from a saved state");
+                       "; only impulses, button presses and finished forces can be resumed from "
+                       "a saved state");
     }
   }
-  world_.restore_snapshot(snapshot);
+  std::unique_ptr<StepScript> script;
+  if (scene_.script) {
+    if (script_state.empty()) throw Error("the saved state holds no state of the scene's script");
+    script = scene_.script(params_);
+    script->restore_state(restored, script_state);  // throws Error; this run is untouched
+  } else if (!script_state.empty()) {
+    throw Error("the saved state holds a script's state, but scene " + scene_.name +
+                " has no script");
+  }
+  world_ = std::move(restored);
+  script_ = std::move(script);
   next_event_ = next;
   forces_.clear();
   restored_ = true;

@@ -48,13 +48,21 @@ class SceneRun {
   /// `Interrupted` when SIGINT, SIGTERM or SIGHUP arrived.
   void step();
 
-  /// Continues this run from `snapshot` (`World::save_snapshot` of a run of the same scene):
-  /// the world takes its state, and the scene's events before its step are taken as done.
-  /// Throws `UsageError` when the run could not continue from it exactly: the scene has a
-  /// script, or events before that step that leave state outside the world (spawns, removals,
-  /// joints, buttons, mouse targets, forces still acting). Throws `Error` for a snapshot the
-  /// core refuses (the world then keeps its state).
-  void restore_snapshot(const std::vector<std::uint8_t>& snapshot);
+  /// The scene script's state after the steps taken so far (`StepScript::save_state`), or
+  /// nothing when the scene has no script. Saved beside `world().save_snapshot()`.
+  std::vector<std::uint8_t> save_script_state() const;
+
+  /// Continues this run from `snapshot` and `script_state` (`World::save_snapshot` and
+  /// `save_script_state` of a run of the same scene and parameters at the same step): the
+  /// world takes its state, a fresh script takes the script's, and the scene's events before
+  /// its step are taken as done. Throws `UsageError` when the run could not continue from it
+  /// exactly: events before that step that leave state outside the world and the script
+  /// (spawns, removals, joints, mouse targets, forces still acting; button presses are the
+  /// script's state). Throws `Error` for a snapshot the core refuses or script bytes the script
+  /// refuses (script state without a script, or none with one). Either way the run keeps
+  /// its state.
+  void restore_snapshot(const std::vector<std::uint8_t>& snapshot,
+                        const std::vector<std::uint8_t>& script_state);
   /// True once `restore_snapshot` gave this run a saved state: its world is then not the one
   /// the scene starts from (a camera fitted to the scene must use a fresh run).
   bool restored() const { return restored_; }

@@ -19,11 +19,24 @@ struct DebugDrawOptions;
 namespace impulse2d::demos {
 
 /// Called by a `SceneRun` around every step. One instance lives for one run.
+///
+/// A script's state between steps (counters, random generators, handles, a controller) is
+/// saved with the world (`save_state`) and taken back by a fresh instance (`restore_state`),
+/// so `--load-state` continues a scripted run bit for bit as the run that saved it.
 class StepScript {
  public:
   virtual ~StepScript() = default;
   /// Called just before step `step` is taken, after that step's scripted events.
   virtual void before_step(World& world, std::int64_t step) = 0;
+  /// The script's state after the steps taken so far, as bytes of its own versioned layout
+  /// (scene/script_state.h). A script with no state of its own writes only its version.
+  virtual std::vector<std::uint8_t> save_state() const = 0;
+  /// Takes back the state `save_state` wrote, into a script just made for the same scene and
+  /// parameters that has not stepped, with `world` already restored to the same moment (the
+  /// script may re-install what the world does not save, e.g. its contact filter). Throws
+  /// `Error` saying what is wrong for bytes of another version, truncated or out of range, or
+  /// naming bodies `world` does not hold; `world` is then not to be used by the run.
+  virtual void restore_state(World& world, const std::vector<std::uint8_t>& bytes) = 0;
   /// The buttons this scene reacts to; a `Button` event naming another one is rejected
   /// before the run starts. None by default.
   virtual std::vector<std::string> buttons() const { return {}; }

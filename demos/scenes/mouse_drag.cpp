@@ -5,6 +5,7 @@
 #include "core/world.h"
 #include "demos/scene_helpers.h"
 #include "scene/scene.h"
+#include "scene/script_state.h"
 #include "scene/step_script.h"
 
 #include <cmath>
@@ -28,6 +29,14 @@ class DragScript : public StepScript {
       if (world.joint_type(id) == JointType::Mouse) world.set_mouse_target(id, target_at(world.time()));
     }
   }
+  // The target follows the world's time: the state is the version.
+  std::vector<std::uint8_t> save_state() const override { return ScriptStateWriter(state_version).bytes(); }
+  void restore_state(World&, const std::vector<std::uint8_t>& bytes) override {
+    ScriptStateReader(bytes, "script mouse_drag", state_version).finish();
+  }
+
+ private:
+  static constexpr std::uint32_t state_version = 1;
 };
 
 void build(World& world, const Params& params) {

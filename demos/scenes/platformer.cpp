@@ -7,6 +7,7 @@
 #include "core/world.h"
 #include "scene/character_script.h"
 #include "scene/scene.h"
+#include "scene/script_state.h"
 #include "demos/scene_helpers.h"
 
 #include <optional>
@@ -76,6 +77,26 @@ class PlatformerScript final : public CharacterScript {
     CharacterScript::before_step(world, step);
   }
 
+  std::vector<std::uint8_t> save_state() const override {
+    ScriptStateWriter out(state_version);
+    out.body(platform_);
+    out.f32(platform_direction_);
+    out.nested(CharacterScript::save_state());
+    return out.bytes();
+  }
+
+  void restore_state(World& world, const std::vector<std::uint8_t>& bytes) override {
+    ScriptStateReader in(bytes, "script platformer", state_version);
+    platform_ = in.body();
+    if (!platform_.is_null() && !world.is_valid(platform_)) {
+      in.fail("the moving platform is not a body of the saved world");
+    }
+    platform_direction_ = in.f32();
+    const std::vector<std::uint8_t> character = in.nested();
+    in.finish();
+    CharacterScript::restore_state(world, character);
+  }
+
  private:
   static CharacterDef character_def() {
     CharacterDef def;
@@ -83,6 +104,7 @@ class PlatformerScript final : public CharacterScript {
     return def;
   }
 
+  static constexpr std::uint32_t state_version = 1;
   BodyId platform_;
   float platform_direction_ = 1.0f;
 };

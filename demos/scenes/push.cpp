@@ -9,6 +9,7 @@
 
 #include "core/world.h"
 #include "scene/scene.h"
+#include "scene/script_state.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {
@@ -55,8 +56,14 @@ class PushScript final : public StepScript {
       ++lane;
     }
   }
+  // The pushes depend on the parameters alone: the state is the version.
+  std::vector<std::uint8_t> save_state() const override { return ScriptStateWriter(state_version).bytes(); }
+  void restore_state(World&, const std::vector<std::uint8_t>& bytes) override {
+    ScriptStateReader(bytes, "script push", state_version).finish();
+  }
 
  private:
+  static constexpr std::uint32_t state_version = 1;
   float ratios_[lane_count] = {};
 };
 

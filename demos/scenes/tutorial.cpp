@@ -8,6 +8,7 @@
 
 #include "core/world.h"
 #include "scene/scene.h"
+#include "scene/script_state.h"
 #include "demos/scene_helpers.h"
 
 namespace impulse2d::demos::scenes {
@@ -32,22 +33,53 @@ class Rain final : public StepScript {
     remove_lost_bodies(world);
     if (step % interval_ != 0 || dropped_ >= count_) return;
     ++dropped_;
-    const std::vector<Material> falling = {materials::rock(),       materials::wood(),
-                                           materials::metal(),      materials::bouncy_ball(),
-                                           materials::super_ball(), materials::pillow()};
-    const Material material = falling[static_cast<std::size_t>(random_.integer(0, 5))];
-    const bool circle = random_.unit() < 0.5f;
-    const Shape shape = circle ? make_circle(random_.uniform(0.35f, 0.9f))
-                               : random_convex_polygon(random_, random_.uniform(0.5f, 1.1f));
-    const float x = random_.uniform(-spawn_half_width, spawn_half_width);
-    const float angle = random_.uniform(0.0f, 6.2831853f);
-    add_body(world, BodyType::Dynamic, shape, {x - half_offset, spawn_height},
-             frictionless(material), angle, left_layer);
-    add_body(world, BodyType::Dynamic, shape, {x + half_offset, spawn_height}, material, angle,
-             right_layer);
+    const Drop drop = next_drop();
+    add_body(world, BodyType::Dynamic, drop.shape, {drop.x - half_offset, spawn_height},
+             frictionless(drop.material), drop.angle, left_layer);
+    add_body(world, BodyType::Dynamic, drop.shape, {drop.x + half_offset, spawn_height},
+             drop.material, drop.angle, right_layer);
+  }
+
+  // The bodies dropped so far; the generator is the seed's after that many drops.
+  std::vector<std::uint8_t> save_state() const override {
+    ScriptStateWriter out(state_version);
+    out.i32(dropped_);
+    return out.bytes();
+  }
+
+  void restore_state(World&, const std::vector<std::uint8_t>& bytes) override {
+    ScriptStateReader in(bytes, "script tutorial", state_version);
+    const int dropped = in.i32(0, count_);
+    in.finish();
+    for (; dropped_ < dropped; ++dropped_) next_drop();  // the generator's draws, again
   }
 
  private:
+  static constexpr std::uint32_t state_version = 1;
+
+  // One body to drop on both copies, at `x` from a copy's centre.
+  struct Drop {
+    Material material;
+    Shape shape;
+    float x = 0.0f;
+    float angle = 0.0f;
+  };
+
+  // Draws the next drop from the generator (the same draws in the same order every run).
+  Drop next_drop() {
+    const std::vector<Material> falling = {materials::rock(),       materials::wood(),
+                                           materials::metal(),      materials::bouncy_ball(),
+                                           materials::super_ball(), materials::pillow()};
+    Drop drop;
+    drop.material = falling[static_cast<std::size_t>(random_.integer(0, 5))];
+    const bool circle = random_.unit() < 0.5f;
+    drop.shape = circle ? make_circle(random_.uniform(0.35f, 0.9f))
+                        : random_convex_polygon(random_, random_.uniform(0.5f, 1.1f));
+    drop.x = random_.uniform(-spawn_half_width, spawn_half_width);
+    drop.angle = random_.uniform(0.0f, 6.2831853f);
+    return drop;
+  }
+
   void remove_lost_bodies(World& world) const {
     for (BodyId id : world.body_ids()) {
       if (world.body(id).transform.position.y < lost_below) world.remove_body(id);

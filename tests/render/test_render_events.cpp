@@ -80,6 +80,43 @@ TEST(EventMarks, RecordKeepsEveryStepsEventsUntilCleared) {
   EXPECT_TRUE(marks.marks().empty());
 }
 
+// A touch whose body is removed between two steps ends in the next step's events with a stale
+// handle, and the world has no contact left to place it: `EventMarks` crosses it where the
+// pair touched when it last looked (the record after the step before, or `start` for a run
+// that begins there, as one resumed from a saved state does), so both draw the same cross.
+TEST(EventMarks, AnEndWhoseBodyWasRemovedIsCrossedWhereThePairLastTouched) {
+  std::vector<vec2> crosses;
+  for (const bool resumed : {false, true}) {
+    DropWorld drop(0.5f);
+    EventMarks marks;
+    for (std::int64_t step = 1; step <= 90; ++step) {
+      drop.world.step();
+      if (!resumed) marks.record(drop.world, step);
+    }
+    ASSERT_EQ(drop.world.contacts().size() + drop.world.sleeping_contacts().size(), 1u) << "the ball rests";
+    if (resumed) marks.start(drop.world);
+    marks.clear();
+    drop.world.remove_body(drop.ball);
+    drop.world.step();
+    ASSERT_EQ(drop.world.contact_events().end.size(), 1u) << "the removal ends the touch";
+    EXPECT_EQ(count_kind(last_step_event_marks(drop.world, 91), EventKind::touch_end), 0)
+        << "the world alone has no place for it";
+    marks.record(drop.world, 91);
+    ASSERT_EQ(marks.marks().size(), 1u);
+    const EventMark& mark = marks.marks()[0];
+    EXPECT_EQ(mark.kind, EventKind::touch_end);
+    EXPECT_EQ(mark.step, 91);
+    EXPECT_NEAR(mark.point.x, 0.0f, 1e-4f) << "under the ball";
+    EXPECT_NEAR(mark.point.y, 0.0f, 0.02f) << "on the ground's top";
+    crosses.push_back(mark.point);
+    marks.clear();
+    drop.world.step();
+    marks.record(drop.world, 92);
+    EXPECT_TRUE(marks.marks().empty()) << "ended once";
+  }
+  EXPECT_EQ(crosses[0], crosses[1]);
+}
+
 // The legend names only the kinds drawn; nothing is drawn or listed without events, so frames
 // that ask for the overlay where nothing happened equal those that do not ask.
 TEST(EventMarks, LegendAndPixelsOnlyWhereSomethingHappened) {
