@@ -2,12 +2,13 @@
 // the HUD and legend, once with every overlay on and once with shapes only.
 //
 //   bench_render [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE] [--render-only [--flags MASK]]
+//   bench_render --ratio [--repeats N]
 //
 // Prints a Markdown table: render ms/frame, wall-clock and CPU time of all threads (llvmpipe
-// rasterises on its own threads); PNG encode ms/frame and size with stb's default deflate
-// (the baseline) and with the fast path (libdeflate level 1, no row filter); and end-to-end
-// frames/s of simulate+render+encode+write, first all on one thread with stb's default
-// encoder (the baseline), then with the fast encoder, on this thread and on writer threads,
+// rasterises on its own threads); PNG encode ms/frame and size with image/'s `Small` setting
+// (libdeflate level 12, the goldens'; the baseline) and its `Fast` one (libdeflate level 1,
+// frame sequences'); and end-to-end frames/s of simulate+render+encode+write, first all on
+// one thread with `Small` (the baseline), then with `Fast`, on this thread and on writer threads,
 // with the CPU time of all threads per frame for the last. On a machine shared with other
 // jobs the CPU times move much less than the wall-clock ones. Ratios are against the
 // baselines measured in the same run. Frames go to DIR (default: a temporary directory
@@ -19,15 +20,30 @@
 // --frames 3` counts three renders (the first compiles the shaders: subtract a 1-frame run);
 // --flags picks the overlays instead (core's DebugDrawFlag bits, e.g. 0x1 for shapes only,
 // 0xFFF for all), and --dump-frame saves the last frame.
+// --ratio renders the ball_pit scene at 800x600 as `impulse2d render ball_pit --size 800x600`
+// does (600 steps, every 4th a frame, PNG frames written by 2 writer threads), once with
+// `--overlays all` and once with `--overlays none`, in turn (the order swapped every pair),
+// --repeats times (default 5), and prints the CPU time of all threads per frame of each, the
+// every-overlay / shapes-only ratio of each pair with the median and range; then the same for
+// the render alone (`FrameRenderer::render`, both overlay sets rendered at each frame's step).
 #include "core/world.h"
+#include "demos/scene_registry.h"
+#include "frames/frame_plan.h"
+#include "frames/frame_sequence.h"
+#include "frames/scene_camera.h"
+#include "frames/view_frame_options.h"
 #include "render/camera.h"
 #include "render/frame_renderer.h"
 #include "render/frame_writer.h"
 #include "image/png.h"
+#include "scene/overlays.h"
+#include "scene/scene_run.h"
 
 #include <sys/resource.h>
+#include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -119,6 +135,8 @@ struct Arguments {
   std::string dump_frame;
   bool render_only = false;
   std::uint32_t render_only_flags = draw_all;
+  bool ratio = false;
+  int repeats = 5;
 };
 
 Arguments parse_arguments(int argc, char** argv) {
@@ -136,18 +154,22 @@ Arguments parse_arguments(int argc, char** argv) {
       args.dump_frame = argv[++i];
     } else if (flag == "--render-only") {
       args.render_only = true;
+    } else if (flag == "--ratio") {
+      args.ratio = true;
+    } else if (flag == "--repeats" && has_value) {
+      args.repeats = std::atoi(argv[++i]);
     } else if (flag == "--flags" && has_value) {
       args.render_only_flags = static_cast<std::uint32_t>(std::strtoul(argv[++i], nullptr, 0));
     } else {
       std::fprintf(stderr,
                    "usage: %s [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE] [--render-only "
-                   "[--flags MASK]]\n",
-                   argv[0]);
+                   "[--flags MASK]]\n       %s --ratio [--repeats N]\n",
+                   argv[0], argv[0]);
       std::exit(2);
     }
   }
-  if (args.frames < 1 || args.warmup < 0) {
-    std::fprintf(stderr, "bench_render: --frames must be >= 1 and --warmup >= 0\n");
+  if (args.frames < 1 || args.warmup < 0 || args.repeats < 1) {
+    std::fprintf(stderr, "bench_render: --frames and --repeats must be >= 1 and --warmup >= 0\n");
     std::exit(2);
   }
   return args;
@@ -223,7 +245,7 @@ Throughput end_to_end_async(World world, FrameRenderer& renderer, const Camera& 
 struct Measured {
   double render_ms = 0.0;
   double render_cpu_ms = 0.0;
-  EncodeResult stb;
+  EncodeResult small;
   EncodeResult fast;
   double baseline_fps = 0.0;
   double fast_sync_fps = 0.0;
@@ -231,6 +253,112 @@ struct Measured {
   Throughput async2;
 };
 
+
+// --ratio: the every-overlay frame against the shapes-only frame of ball_pit, 800x600.
+constexpr const char* kRatioScene = "ball_pit";
+
+// CPU milliseconds of all threads per frame of `impulse2d render ball_pit --size 800x600
+// --overlays <overlays>`: a fresh run, rendered and written to `directory` by 2 writer threads.
+double end_to_end_cpu_per_frame(const demos::Scene& scene, const std::string& overlays, const fs::path& directory) {
+  demos::SceneRun run(scene, demos::Params(scene.params));
+  const demos::FramePlan plan = demos::plan_frames(scene.view.frames, scene.view.steps);
+  demos::FrameSequenceOptions options;
+  options.width = kWidth;
+  options.height = kHeight;
+  options.draw = scene.view.draw;
+  options.draw.flags = demos::parse_overlays(overlays);
+  options.directory = directory;
+  options.clean = true;
+  const double cpu_start = process_cpu_milliseconds();
+  const demos::FrameSequenceResult result = demos::render_frame_sequence(run, plan, options, nullptr);
+  return (process_cpu_milliseconds() - cpu_start) / static_cast<double>(result.frame_count);
+}
+
+// CPU milliseconds of all threads per `FrameRenderer::render` of ball_pit's frames, with
+// every overlay (`all`) and shapes only (`none`), both rendered at each frame's step, the
+// order swapped every frame.
+struct RenderPair {
+  double all = 0.0;
+  double none = 0.0;
+};
+
+RenderPair render_cpu_per_frame(const demos::Scene& scene) {
+  demos::SceneRun run(scene, demos::Params(scene.params));
+  const demos::FramePlan plan = demos::plan_frames(scene.view.frames, scene.view.steps);
+  FrameRenderer renderer(kWidth, kHeight);
+  const Camera camera = demos::run_camera(run, kWidth, kHeight);
+  DebugDrawOptions draw = scene.view.draw;
+  FrameOptions options[2] = {demos::view_frame_options(run, draw, Theme::Light),
+                             demos::view_frame_options(run, draw, Theme::Light)};
+  options[0].draw.flags = demos::parse_overlays("all");
+  options[1].draw.flags = demos::parse_overlays("none");
+  HudInfo hud;
+  hud.scene_name = demos::scene_title(scene);
+  Frame frame;
+  double cpu[2] = {0.0, 0.0};
+  for (std::size_t i = 0; i < plan.frames.size(); ++i) {
+    while (run.step_count() < plan.frames[i]) run.step();
+    hud.step = plan.frames[i];
+    hud.frame_index = static_cast<std::int64_t>(i);
+    for (int turn = 0; turn < 2; ++turn) {
+      const int which = (turn + static_cast<int>(i)) % 2;
+      demos::update_view_frame(run, options[which], hud);
+      const double cpu_start = process_cpu_milliseconds();
+      renderer.render(run.world(), demos::frame_camera(camera, run), options[which], hud, frame);
+      cpu[which] += process_cpu_milliseconds() - cpu_start;
+    }
+  }
+  const double frames = static_cast<double>(plan.frames.size());
+  return RenderPair{cpu[0] / frames, cpu[1] / frames};
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+// Prints one table row per pair and the ratios' median and range.
+void print_pairs(const char* what, const std::vector<RenderPair>& pairs) {
+  std::vector<double> all;
+  std::vector<double> none;
+  std::vector<double> ratios;
+  std::printf("\n%s, CPU of all threads, ms/frame\n\n| pair | every overlay | shapes only | ratio |\n|---|---|---|---|\n",
+              what);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    all.push_back(pairs[i].all);
+    none.push_back(pairs[i].none);
+    ratios.push_back(pairs[i].all / pairs[i].none);
+    std::printf("| %zu | %.2f | %.2f | %.2f |\n", i + 1, pairs[i].all, pairs[i].none, ratios.back());
+  }
+  std::printf("| median | %.2f | %.2f | **%.2f** [%.2f-%.2f] |\n", median(all), median(none), median(ratios),
+              *std::min_element(ratios.begin(), ratios.end()), *std::max_element(ratios.begin(), ratios.end()));
+}
+
+int run_ratio(const Arguments& args, const fs::path& out) {
+  const demos::Scene& scene = *demos::find_builtin_scene(kRatioScene);
+  std::printf("bench_render --ratio: %s, %dx%d, %s frames of %lld steps, %d pairs (order swapped every pair); "
+              "%u hardware threads, load average at start: ",
+              kRatioScene, kWidth, kHeight, scene.view.frames.c_str(), static_cast<long long>(scene.view.steps),
+              args.repeats, std::thread::hardware_concurrency());
+  double load[1] = {0.0};
+  if (getloadavg(load, 1) == 1) std::printf("%.2f\n", load[0]);
+  std::vector<RenderPair> end_to_end;
+  for (int pair = 0; pair < args.repeats; ++pair) {
+    RenderPair measured;
+    for (int turn = 0; turn < 2; ++turn) {
+      const bool all = (turn + pair) % 2 == 0;
+      (all ? measured.all : measured.none) = end_to_end_cpu_per_frame(scene, all ? "all" : "none", out);
+    }
+    end_to_end.push_back(measured);
+  }
+  print_pairs("End to end (simulate, render, PNG on 2 writer threads, as `impulse2d render ball_pit --size 800x600`)",
+              end_to_end);
+  std::vector<RenderPair> render_only;
+  for (int pair = 0; pair < args.repeats; ++pair) render_only.push_back(render_cpu_per_frame(scene));
+  print_pairs("Render alone (FrameRenderer::render)", render_only);
+  return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -240,6 +368,11 @@ int main(int argc, char** argv) {
                            ? fs::temp_directory_path() / ("impulse2d-bench-render-" + std::to_string(::getpid()))
                            : fs::path(args.out);
   fs::create_directories(out);
+  if (args.ratio) {
+    const int status = run_ratio(args, out);
+    if (temporary_output) fs::remove_all(out);
+    return status;
+  }
 
   World world = make_bin();
   for (int i = 0; i < args.warmup; ++i) world.step();
@@ -291,7 +424,7 @@ int main(int argc, char** argv) {
     m.render_ms /= args.frames;
     m.render_cpu_ms /= args.frames;
     if (!args.dump_frame.empty() && flags == draw_all) dump_frame(frames.back(), args.dump_frame);
-    m.stb = measure_encode(frames, image::PngCompression::Small);
+    m.small = measure_encode(frames, image::PngCompression::Small);
     m.fast = measure_encode(frames, image::PngCompression::Fast);
     m.baseline_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, image::PngCompression::Small);
     m.fast_sync_fps = end_to_end_synchronous(world, renderer, camera, options, args.frames, out, image::PngCompression::Fast);
@@ -310,18 +443,18 @@ int main(int argc, char** argv) {
   std::printf("| measure | all overlays | shapes only |\n|---|---|---|\n");
   std::printf("| render (draw + rasterise + read back), ms/frame | %.2f | %.2f |\n", all.render_ms, shapes.render_ms);
   std::printf("| render, CPU of all threads, ms/frame | %.2f | %.2f |\n", all.render_cpu_ms, shapes.render_cpu_ms);
-  std::printf("| PNG encode, stb default (baseline), ms/frame | %.2f (%.0f KB) | %.2f (%.0f KB) |\n",
-              all.stb.milliseconds, all.stb.kilobytes, shapes.stb.milliseconds, shapes.stb.kilobytes);
-  std::printf("| PNG encode, fast (libdeflate 1, no filter), ms/frame | %.2f (%.0f KB) | %.2f (%.0f KB) |\n",
+  std::printf("| PNG encode, small (libdeflate 12, baseline), ms/frame | %.2f (%.0f KB) | %.2f (%.0f KB) |\n",
+              all.small.milliseconds, all.small.kilobytes, shapes.small.milliseconds, shapes.small.kilobytes);
+  std::printf("| PNG encode, fast (libdeflate 1), ms/frame | %.2f (%.0f KB) | %.2f (%.0f KB) |\n",
               all.fast.milliseconds, all.fast.kilobytes, shapes.fast.milliseconds, shapes.fast.kilobytes);
-  std::printf("| fast vs stb: speed-up, size ratio | %.2fx, %.2f | %.2fx, %.2f |\n",
-              all.stb.milliseconds / all.fast.milliseconds, all.fast.kilobytes / all.stb.kilobytes,
-              shapes.stb.milliseconds / shapes.fast.milliseconds, shapes.fast.kilobytes / shapes.stb.kilobytes);
+  std::printf("| fast vs small: speed-up, size ratio | %.2fx, %.2f | %.2fx, %.2f |\n",
+              all.small.milliseconds / all.fast.milliseconds, all.fast.kilobytes / all.small.kilobytes,
+              shapes.small.milliseconds / shapes.fast.milliseconds, shapes.fast.kilobytes / shapes.small.kilobytes);
   const auto row = [](const char* name, double value_all, double base_all, double value_shapes, double base_shapes) {
     std::printf("| %s, frames/s | %.1f (%.2fx) | %.1f (%.2fx) |\n", name, value_all, value_all / base_all, value_shapes,
                 value_shapes / base_shapes);
   };
-  row("end to end, 1 thread, stb default (baseline)", all.baseline_fps, all.baseline_fps, shapes.baseline_fps,
+  row("end to end, 1 thread, small PNG (baseline)", all.baseline_fps, all.baseline_fps, shapes.baseline_fps,
       shapes.baseline_fps);
   row("end to end, 1 thread, fast PNG", all.fast_sync_fps, all.baseline_fps, shapes.fast_sync_fps, shapes.baseline_fps);
   row("end to end, fast PNG on 1 writer thread", all.async1.frames_per_second, all.baseline_fps,

@@ -2,10 +2,12 @@
 #include "render/software_raster.h"
 
 #include "render/easy_font.h"
+#include "render/float4.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 
 namespace impulse2d::render {
@@ -15,12 +17,14 @@ namespace {
 // Window rows per band: each band is one task of the pool, its pixels written by it alone.
 constexpr int band_rows = 16;
 
-// A premultiplied colour, as a fragment program outputs it.
+// A premultiplied colour, as a fragment program outputs it: of one pixel (T = float) or four
+// pixels of a row (T = Float4).
+template <typename T>
 struct Premultiplied {
-  float r = 0.0f;
-  float g = 0.0f;
-  float b = 0.0f;
-  float a = 0.0f;
+  T r = 0.0f;
+  T g = 0.0f;
+  T b = 0.0f;
+  T a = 0.0f;
 };
 
 // A colour byte as GL normalises it (c / 255), and the reverse conversion of the blended
@@ -49,31 +53,37 @@ Rgba normalised(const std::uint8_t (&color)[4]) {
               byte_scale.value[color[3]]};
 }
 
-float saturate(float value) { return std::min(std::max(value, 0.0f), 1.0f); }
+// The formulas below serve one pixel (float) and four (Float4) alike: `std::min`, `std::max`
+// and `std::abs` for floats, float4.h's for Float4s (found by argument-dependent lookup).
+using std::abs;
+using std::max;
+using std::min;
+using std::sqrt;
 
-// Coverage of the rectangle with half extents (hx, hy) centred on the origin at p.
-float rectangle(float px, float py, float hx, float hy) {
-  return saturate(hx + 0.5f - std::abs(px)) * saturate(hy + 0.5f - std::abs(py));
+template <typename T>
+T saturate(T value) {
+  return min(max(value, T(0.0f)), T(1.0f));
 }
 
-// The pixel centre in a shape vertex's frame (origin and unit x axis).
-vec2 in_frame(const ShapeVertex& shape, float x, float y) {
-  const float dx = x - shape.frame[0];
-  const float dy = y - shape.frame[1];
-  return vec2(dx * shape.frame[2] + dy * shape.frame[3], shape.frame[2] * dy - shape.frame[3] * dx);
+// Coverage of the rectangle with half extents (hx, hy) centred on the origin at p.
+template <typename T>
+T rectangle(T px, T py, float hx, float hy) {
+  return saturate(T(hx + 0.5f) - abs(px)) * saturate(T(hy + 0.5f) - abs(py));
 }
 
 // The fill under the line (a ring or outline), premultiplied: both alphas already include coverage.
-Premultiplied fill_under_line(const Rgba& fill, float fill_alpha, const Rgba& line, float line_alpha) {
-  const float under = fill_alpha * (1.0f - line_alpha);
-  return Premultiplied{line.r * line_alpha + fill.r * under, line.g * line_alpha + fill.g * under,
-                       line.b * line_alpha + fill.b * under, line_alpha + under};
+template <typename T>
+Premultiplied<T> fill_under_line(const Rgba& fill, T fill_alpha, const Rgba& line, T line_alpha) {
+  const T under = fill_alpha * (T(1.0f) - line_alpha);
+  return Premultiplied<T>{T(line.r) * line_alpha + T(fill.r) * under, T(line.g) * line_alpha + T(fill.g) * under,
+                          T(line.b) * line_alpha + T(fill.b) * under, line_alpha + under};
 }
 
 // `color` over `coverage` of the pixel, premultiplied.
-Premultiplied premultiplied(const Rgba& color, float coverage) {
-  const float alpha = color.a * coverage;
-  return Premultiplied{color.r * alpha, color.g * alpha, color.b * alpha, alpha};
+template <typename T>
+Premultiplied<T> premultiplied(const Rgba& color, T coverage) {
+  const T alpha = T(color.a) * coverage;
+  return Premultiplied<T>{T(color.r) * alpha, T(color.g) * alpha, T(color.b) * alpha, alpha};
 }
 
 // Whether the pixel centre p lies in triangle (a, b, c): inside all three edges, or on an
@@ -255,7 +265,7 @@ void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Fram
     for (int span = 0; span < spans.count; ++span) {
       std::uint8_t* pixel = row_pixels + static_cast<std::size_t>(spans.first[span]) * 4;
       for (int column = spans.first[span]; column <= spans.last[span]; ++column, pixel += 4) {
-        const Premultiplied source = shade(static_cast<float>(column) + 0.5f, y);
+        const Premultiplied<float> source = shade(static_cast<float>(column) + 0.5f, y);
         if (!(source.a > 0.0f)) continue;  // nothing over this pixel: it keeps its bytes
         // Alpha blends as source.a + 1 (1 - source.a) = 1 over an opaque frame: it stays 255.
         const float keep = 1.0f - source.a;
@@ -267,20 +277,64 @@ void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Fram
   }
 }
 
-// Blends `shade(p)` of the pixel centre p in the shape's frame (`in_frame`); for the
-// axis-aligned frame (axis (1, 0): discs, bounding boxes, panels) p is exactly
-// (x - ox, y - oy), computed without the rotation.
+// Blends `shade(x, y)` (four premultiplied colours at the window pixel centres x, the
+// centres of four neighbouring pixels of the row at y) over the pixels of `primitive` in window
+// rows [first_row, last_row], in each row those `columns(y)` gives: the same bytes as `blend`
+// with the same formulas one pixel at a time.
+template <typename Columns, typename Shade>
+void blend_four(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame, const Columns& columns,
+                const Shade& shade) {
+  const std::size_t stride = frame.stride();
+  for (int row = std::max(primitive.bottom, first_row); row <= std::min(primitive.top, last_row); ++row) {
+    const float y = static_cast<float>(row) + 0.5f;
+    const RowSpans spans = columns(y);
+    std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
+    for (int span = 0; span < spans.count; ++span) {
+      for (int column = spans.first[span]; column <= spans.last[span]; column += 4) {
+        std::uint8_t* const pixel = row_pixels + static_cast<std::size_t>(column) * 4;
+        // The last pixels of a span, fewer than four, take four pixels of the row that the lanes
+        // past them leave as they are (this band owns its rows), or near the row's end a copy.
+        const int count = std::min(4, spans.last[span] - column + 1);
+        const bool spills = column + 4 > frame.width;
+        std::uint8_t spill[16] = {};
+        std::uint8_t* const target = spills ? spill : pixel;
+        if (spills) std::memcpy(spill, pixel, static_cast<std::size_t>(count) * 4);
+        const Premultiplied<Float4> source = shade(ramp(static_cast<float>(column) + 0.5f), Float4(y));
+        const Pixels4 old = load_pixels(target);
+        // As `blend`: (source + byte / 255 (1 - alpha)), at most 1, times 255, rounded half
+        // up; alpha stays; pixels with nothing over them keep their bytes.
+        const Float4 keep = Float4(1.0f) - source.a;
+        const auto channel = [&](Float4 value, Float4 byte) {
+          return min(value + byte / Float4(255.0f) * keep, Float4(1.0f)) * Float4(255.0f) + Float4(0.5f);
+        };
+        store_pixels(target, Pixels4{channel(source.r, old.r), channel(source.g, old.g), channel(source.b, old.b), old.a},
+                     source.a * first_lanes(count), old);
+        if (spills) std::memcpy(pixel, spill, static_cast<std::size_t>(count) * 4);
+      }
+    }
+  }
+}
+
+// Blends `shade(px, py)` of four pixel centres p in the shape's frame (origin and unit x
+// axis), four at a time (`blend_four`); for the axis-aligned frame (axis (1, 0): discs,
+// bounding boxes, panels) p is exactly (x - ox, y - oy), computed without the rotation.
 template <typename Columns, typename Shade>
 void blend_in_frame(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame,
                     const Columns& columns, const ShapeVertex& shape, const Shade& shade) {
+  const Float4 origin_x(shape.frame[0]);
+  const Float4 origin_y(shape.frame[1]);
   if (shape.frame[2] == 1.0f && shape.frame[3] == 0.0f) {
-    const float origin_x = shape.frame[0];
-    const float origin_y = shape.frame[1];
-    blend(primitive, first_row, last_row, frame, columns,
-          [=](float x, float y) { return shade(vec2(x - origin_x, y - origin_y)); });
+    blend_four(primitive, first_row, last_row, frame, columns,
+               [=](Float4 x, Float4 y) { return shade(x - origin_x, y - origin_y); });
     return;
   }
-  blend(primitive, first_row, last_row, frame, columns, [=](float x, float y) { return shade(in_frame(shape, x, y)); });
+  const Float4 axis_x(shape.frame[2]);
+  const Float4 axis_y(shape.frame[3]);
+  blend_four(primitive, first_row, last_row, frame, columns, [=](Float4 x, Float4 y) {
+    const Float4 dx = x - origin_x;
+    const Float4 dy = y - origin_y;
+    return shade(dx * axis_x + dy * axis_y, axis_x * dy - axis_y * dx);
+  });
 }
 
 // The coverage formulas of primitive_shaders.cpp, kind by kind.
@@ -308,12 +362,12 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::solid: {
       const FillQuad quad = batch.fill_quads[primitive.index];
       const Rgba fill = normalised(quad.fill);
-      const Premultiplied color = premultiplied(fill, 1.0f);
+      const Premultiplied<float> color = premultiplied(fill, 1.0f);
       blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
         const vec2 p(x, y);
         const bool inside = inside_triangle(quad.corners[0], quad.corners[1], quad.corners[2], p) ||
                             inside_triangle(quad.corners[0], quad.corners[2], quad.corners[3], p);
-        return inside ? color : Premultiplied{};
+        return inside ? color : Premultiplied<float>{};
       });
       return;
     }
@@ -322,10 +376,10 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       const Rgba fill = normalised(shape.fill);
       const Rgba line = normalised(shape.line);
       const auto columns = [&](float y) { return disc_columns(primitive, shape, y); };
-      blend_in_frame(primitive, first_row, last_row, frame, columns, shape, [=](vec2 p) {
-        const float r = std::sqrt(p.x * p.x + p.y * p.y);
-        const float disc = saturate(shape.disc[0] + 0.5f - r);
-        const float ring = saturate(shape.disc[1] + 0.5f - r) * saturate(r - shape.disc[2] + 0.5f);
+      blend_in_frame(primitive, first_row, last_row, frame, columns, shape, [=](Float4 px, Float4 py) {
+        const Float4 r = sqrt(px * px + py * py);
+        const Float4 disc = saturate(Float4(shape.disc[0] + 0.5f) - r);
+        const Float4 ring = saturate(Float4(shape.disc[1] + 0.5f) - r) * saturate(r - shape.disc[2] + 0.5f);
         return fill_under_line(fill, fill.a * disc, line, line.a * ring);
       });
       return;
@@ -334,10 +388,11 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
       blend_in_frame(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, shape.box[3] > 0.0f), shape,
-                     [=](vec2 p) {
-                       float coverage = rectangle(p.x, p.y, shape.box[0], shape.box[1]);
+                     [=](Float4 px, Float4 py) {
+                       Float4 coverage = rectangle(px, py, shape.box[0], shape.box[1]);
                        if (shape.box[3] > 0.0f) {
-                         coverage -= rectangle(p.x, p.y, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
+                         coverage = coverage -
+                                    rectangle(px, py, shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
                        }
                        return premultiplied(fill, coverage);
                      });
@@ -346,11 +401,12 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::arrow: {
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend_in_frame(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, false), shape, [=](vec2 p) {
-        const float side = (p.x - shape.head[1]) * shape.head[2] + std::abs(p.y) * shape.head[3];
-        const float head = saturate(0.5f - std::max(std::max(shape.head[0] - p.x, p.x - shape.head[1]), side));
-        return premultiplied(fill, std::max(rectangle(p.x, p.y, shape.box[0], shape.box[1]), head));
-      });
+      blend_in_frame(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, false), shape,
+                     [=](Float4 px, Float4 py) {
+                       const Float4 side = (px - shape.head[1]) * shape.head[2] + abs(py) * shape.head[3];
+                       const Float4 head = saturate(Float4(0.5f) - max(max(shape.head[0] - px, px - shape.head[1]), side));
+                       return premultiplied(fill, max(rectangle(px, py, shape.box[0], shape.box[1]), head));
+                     });
       return;
     }
     case PrimitiveKind::text: {
@@ -365,7 +421,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
         const int column = std::min(static_cast<int>(qx * run.font_scale), 31);
         const int row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
         const int bit = std::min(std::max(column * font_glyph_rows + row, 0), 255);
-        if (((run.bits[bit >> 5] >> (bit & 31)) & 1u) == 0) return Premultiplied{};
+        if (((run.bits[bit >> 5] >> (bit & 31)) & 1u) == 0) return Premultiplied<float>{};
         const float inside = saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
         return premultiplied(fill, inside);
       });
