@@ -1,8 +1,8 @@
 /// @file terrain_chain.cpp
 /// A hill-climb track (issue 31): one open chain of 0.5 m links over smooth hills and a dip,
-/// a floating rock that is a closed loop (listed clockwise: solid inside), a car on wheel
-/// joints driving over the hills, and balls and boxes sliding and rolling down them. The track
-/// is one surface: nothing catches on the 120 seams between its links.
+/// a car on wheel joints driving over the hills, and behind it a floating rock that is a closed
+/// loop (listed clockwise: solid inside) with balls and boxes rolling and sliding off it and
+/// along the track. The track is one surface: nothing catches on the 120 seams of its links.
 #include "core/world.h"
 #include "demos/joint_helpers.h"
 #include "demos/scene_helpers.h"
@@ -67,23 +67,21 @@ void build(World& world, const Params& params) {
     track.push_back({x, track_height(x)});
   }
   world.create_chain(ground, track.data(), static_cast<int>(track.size()), false);
-  // A floating rock: a closed loop listed clockwise, so its front sides face out.
+  // A floating rock behind the car: a closed loop listed clockwise, so its front sides face out.
   const vec2 rock[] = {{-1.5f, 0.0f}, {-0.8f, 0.7f}, {0.9f, 0.6f}, {1.6f, -0.1f}, {0.6f, -0.6f}, {-0.9f, -0.5f}};
-  ground.position = {9.0f, 6.0f};
+  ground.position = {-17.0f, 3.0f};
   world.create_chain(ground, rock, 6, true);
   add_car(world, {-12.0f, 1.0f}, static_cast<float>(params.number("speed")));
-  // Balls and boxes dropped onto the rock and the hills: they roll and slide down across
-  // the seams.
-  for (int i = 0; i < 6; ++i) {
-    const float x = 2.0f + 3.2f * static_cast<float>(i);
-    const vec2 at(x, track_height(x) + 3.0f + 0.5f * static_cast<float>(i % 2));
+  // Balls and boxes dropped on the rock: they roll and slide off it and on along the track
+  // behind the car, across its seams.
+  for (int i = 0; i < 5; ++i) {
+    const vec2 at(-18.2f + 0.75f * static_cast<float>(i), 4.6f + 0.8f * static_cast<float>(i % 2));
     if (i % 2 == 0) {
-      add_body(world, BodyType::Dynamic, make_circle(0.35f), at, materials::rock());
+      add_body(world, BodyType::Dynamic, make_circle(0.3f), at, materials::rock());
     } else {
-      add_body(world, BodyType::Dynamic, make_oriented_box({0.3f, 0.3f}), at, materials::wood(), 0.3f);
+      add_body(world, BodyType::Dynamic, make_oriented_box({0.25f, 0.25f}), at, materials::wood(), 0.3f);
     }
   }
-  add_body(world, BodyType::Dynamic, make_circle(0.3f), {8.6f, 7.5f}, materials::rock());
 }
 
 }  // namespace
@@ -94,7 +92,7 @@ Scene terrain_chain() {
   scene.description =
       "a hill-climb track: one chain of 120 links over hills, a loop rock, a car driving over them and "
       "balls and boxes rolling and sliding down across the seams";
-  scene.params = {{"speed", "wheel motor speed, rad/s", 12, 0, 40, false}};
+  scene.params = {{"speed", "wheel motor speed, rad/s", 8, 0, 40, false}};
   scene.model.circles = true;
   scene.model.polygons = true;
   scene.model.segments = true;
@@ -102,7 +100,7 @@ Scene terrain_chain() {
   scene.view.camera.mode = CameraSpec::Mode::Follow;
   scene.view.camera.follow_body = track_links + 6;  // the chassis: after the track and the rock
   scene.view.camera.center = {-12.0f, 1.0f};
-  scene.view.camera.pixels_per_metre = 40.0f;
+  scene.view.camera.pixels_per_metre = 32.0f;
   scene.view.steps = 720;
   scene.view.draw.flags = draw_shapes | draw_joints;
   scene.build = build;
