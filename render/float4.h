@@ -30,9 +30,13 @@ struct Float4 {
 inline Float4 splat(float value) { return Float4(value); }
 /// Lanes `first`, `first` + 1, `first` + 2, `first` + 3 (exact for |first| < 2^24).
 inline Float4 ramp(float first) { return {_mm_add_ps(_mm_set1_ps(first), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f))}; }
+/// Lane-wise sum.
 inline Float4 operator+(Float4 a, Float4 b) { return {_mm_add_ps(a.v, b.v)}; }
+/// Lane-wise difference.
 inline Float4 operator-(Float4 a, Float4 b) { return {_mm_sub_ps(a.v, b.v)}; }
+/// Lane-wise product.
 inline Float4 operator*(Float4 a, Float4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+/// Lane-wise quotient.
 inline Float4 operator/(Float4 a, Float4 b) { return {_mm_div_ps(a.v, b.v)}; }
 /// 1 in the first `count` lanes (0..4), 0 in the others.
 inline Float4 first_lanes(int count) {
@@ -50,7 +54,10 @@ inline Float4 sqrt(Float4 a) { return {_mm_sqrt_ps(a.v)}; }
 
 /// The byte channels of four RGBA pixels as floats, one channel a `Float4`, and back.
 struct Pixels4 {
-  Float4 r, g, b, a;  ///< 0..255, integral
+  Float4 r;  ///< red, 0..255, integral
+  Float4 g;  ///< green, 0..255, integral
+  Float4 b;  ///< blue, 0..255, integral
+  Float4 a;  ///< alpha, 0..255, integral
 };
 
 /// Four RGBA pixels from `bytes` (16 bytes).
@@ -92,6 +99,7 @@ struct Float4 {
 };
 
 namespace float4_detail {
+/// The `Float4` whose lane i is `f(i)`.
 template <typename F>
 inline Float4 lanes(F f) {
   Float4 result;
@@ -104,9 +112,13 @@ inline Float4 lanes(F f) {
 inline Float4 splat(float value) { return Float4(value); }
 /// Lanes `first`, `first` + 1, `first` + 2, `first` + 3 (exact for |first| < 2^24).
 inline Float4 ramp(float first) { return float4_detail::lanes([&](int i) { return first + static_cast<float>(i); }); }
+/// Lane-wise sum.
 inline Float4 operator+(Float4 a, Float4 b) { return float4_detail::lanes([&](int i) { return a.v[i] + b.v[i]; }); }
+/// Lane-wise difference.
 inline Float4 operator-(Float4 a, Float4 b) { return float4_detail::lanes([&](int i) { return a.v[i] - b.v[i]; }); }
+/// Lane-wise product.
 inline Float4 operator*(Float4 a, Float4 b) { return float4_detail::lanes([&](int i) { return a.v[i] * b.v[i]; }); }
+/// Lane-wise quotient.
 inline Float4 operator/(Float4 a, Float4 b) { return float4_detail::lanes([&](int i) { return a.v[i] / b.v[i]; }); }
 /// 1 in the first `count` lanes (0..4), 0 in the others.
 inline Float4 first_lanes(int count) {
@@ -127,7 +139,10 @@ inline Float4 sqrt(Float4 a) { return float4_detail::lanes([&](int i) { return s
 
 /// The byte channels of four RGBA pixels as floats, one channel a `Float4`, and back.
 struct Pixels4 {
-  Float4 r, g, b, a;  ///< 0..255, integral
+  Float4 r;  ///< red, 0..255, integral
+  Float4 g;  ///< green, 0..255, integral
+  Float4 b;  ///< blue, 0..255, integral
+  Float4 a;  ///< alpha, 0..255, integral
 };
 
 /// Four RGBA pixels from `bytes` (16 bytes).
