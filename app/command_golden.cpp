@@ -1,10 +1,13 @@
 /// @file command_golden.cpp
 /// `impulse2d golden check|update|frame`: the golden images of JSON scene files.
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include "app/command.h"
+#include "app/state_file.h"
 #include "scene/usage_error.h"
 #include "golden/scenes/golden_command.h"
 
@@ -15,6 +18,7 @@ namespace {
 struct GoldenArguments {
   golden::GoldenCommandArguments command;  ///< what the golden command runs
   std::string frame_file;                  ///< `golden frame`'s scene file
+  std::string load_state;                  ///< `golden frame`: start from this saved world
 };
 
 }  // namespace
@@ -48,6 +52,9 @@ Command add_golden_command(CLI::App& program, const ProgramOptions&) {
   frame->add_option("file", golden->frame_file, "scene file (.json)")->required();
   frame->add_option("name", arguments.frame, "golden frame name")->required();
   frame->add_option("--out,-o", arguments.out, "PNG to write")->required();
+  frame->add_option("--load-state", golden->load_state,
+                    "start from a world saved by `trace --save-state` of the same scene file "
+                    "(the frame's step stays the golden's own; a state saved after it is refused)");
 
   Command result;
   result.parser = command;
@@ -57,6 +64,18 @@ Command add_golden_command(CLI::App& program, const ProgramOptions&) {
     golden::GoldenCommandArguments& arguments = golden->command;
     arguments.action = check->parsed() ? "check" : update->parsed() ? "update" : "frame";
     if (frame->parsed()) arguments.files = {golden->frame_file};
+    arguments.start_run = nullptr;
+    if (frame->parsed() && !golden->load_state.empty()) {
+      arguments.start_run = [file = golden->load_state](SceneRun& run, std::int64_t frame_step) {
+        load_state_file(file, run);
+        if (run.step_count() > frame_step) {
+          throw UsageError("--load-state " + file + ": saved after " +
+                           std::to_string(run.step_count()) + " steps, past the golden frame's " +
+                           std::to_string(frame_step) + " (save it at step " +
+                           std::to_string(frame_step) + " or earlier)");
+        }
+      };
+    }
     arguments.executable = "/proc/self/exe";  // this program, for the second process
     return arguments;
   };

@@ -71,7 +71,8 @@ int render_one_frame(const GoldenCommandArguments& arguments, const GoldenPlan& 
   for (const GoldenSpec& spec : plan.scenes[0].frames) {
     if (spec.name != arguments.frame) continue;
     Renderers renderers;
-    const ProducedFrame frame = produce_scene_frame(spec, renderers.of(spec.width, spec.height));
+    const ProducedFrame frame = produce_scene_frame(spec, renderers.of(spec.width, spec.height),
+                                                    nullptr, arguments.start_run);
     image::save_png(arguments.out, frame.image);
     image::write_text_file_atomically(arguments.out + ".hash", image::to_hex_hash(frame.state_hash));
   }
@@ -221,7 +222,16 @@ std::string nothing_changed(const GoldenCommandArguments& arguments) {
 }  // namespace
 
 void dry_run_golden_command(const GoldenCommandArguments& arguments, std::ostream& out) {
-  print_golden_plan(arguments, plan_golden_command(arguments), out);
+  const GoldenPlan plan = plan_golden_command(arguments);
+  if (arguments.action == "frame" && arguments.start_run) {
+    // The saved state is checked as the run checks it (nothing is stepped or rendered).
+    for (const GoldenSpec& spec : plan.scenes[0].frames) {
+      if (spec.name != arguments.frame) continue;
+      GoldenRun golden_run(spec);
+      start_golden_run(spec, golden_run, arguments.start_run);
+    }
+  }
+  print_golden_plan(arguments, plan, out);
 }
 
 int run_golden_command(const GoldenCommandArguments& arguments, std::ostream& out,

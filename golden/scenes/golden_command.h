@@ -9,7 +9,7 @@
 /// - `update FILE...` writes missing and failing goldens (`--all`: every one), each only after
 ///   a second process rendered the same frame, with its noise envelope; refused under CI.
 /// - `frame FILE NAME --out PNG` renders one golden frame (the second process of the other
-///   two) into PNG and its state hash into PNG.hash.
+///   two) into PNG and its state hash into PNG.hash; with `start_run`, from a saved state.
 /// Failures leave their artifacts and index.html in `--report DIR` (default
 /// golden_artifacts), which holds only this run's results; `--junit FILE` writes JUnit XML.
 /// Frames whose renderer has no baseline are checked by their physics only, and the run
@@ -18,9 +18,15 @@
 /// An update is a transaction (staged_update.h): an interrupted or failed one leaves the
 /// whole old set of goldens, a finished one the whole new set.
 
+#include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
+
+namespace impulse2d::demos {
+class SceneRun;
+}
 
 namespace impulse2d::golden {
 
@@ -37,6 +43,10 @@ struct GoldenCommandArguments {
   bool require_pixels = false;
   std::string frame;                ///< frame: the golden frame's name
   std::string out;                  ///< frame: the PNG to write
+  /// frame: continues the run before its first step to at most the golden's step (the CLI's
+  /// `--load-state`: a state saved by `trace --save-state`), `RunStart` of golden_run.h; the
+  /// frame's step stays the golden's own. Empty: the run starts from the scene.
+  std::function<void(demos::SceneRun& run, std::int64_t frame_step)> start_run;
   std::string executable;           ///< this program, for the second process
 };
 

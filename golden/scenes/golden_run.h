@@ -20,6 +20,11 @@ namespace impulse2d::golden {
 /// Changes a copy of a scene before it runs, e.g. a solver setting for sensitivity tests.
 using SceneVariant = std::function<void(demos::Scene&)>;
 
+/// Continues a golden's freshly built run before its first step, e.g. from a state saved by
+/// `impulse2d trace --save-state` (`impulse2d golden frame --load-state`), to at most
+/// `frame_step` (the golden's step); throws when it cannot.
+using RunStart = std::function<void(demos::SceneRun& run, std::int64_t frame_step)>;
+
 /// A golden's scene built and ready to step; owns the scene copy its run refers to.
 class GoldenRun {
  public:

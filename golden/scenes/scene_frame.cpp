@@ -12,6 +12,7 @@
 #include "golden/scenes/golden_run.h"
 #include "render/frame_renderer.h"
 #include "golden/error.h"
+#include "scene/usage_error.h"
 
 namespace impulse2d::golden {
 
@@ -31,18 +32,31 @@ render::FrameRenderer& shared_golden_renderer() {
   return renderer;
 }
 
+void start_golden_run(const GoldenSpec& spec, GoldenRun& golden_run, const RunStart& start) {
+  if (!start) return;
+  start(golden_run.run(), spec.step);
+  const std::int64_t step = golden_run.run().step_count();
+  if (step > spec.step) {
+    throw demos::UsageError("golden '" + spec.id() + "' is the world after " +
+                            std::to_string(spec.step) + " steps; the loaded state is after " +
+                            std::to_string(step) + " (save it at step " +
+                            std::to_string(spec.step) + " or earlier)");
+  }
+}
+
 ProducedFrame produce_scene_frame(const GoldenSpec& spec, render::FrameRenderer& renderer,
-                                  const SceneVariant& variant) {
+                                  const SceneVariant& variant, const RunStart& start) {
   if (renderer.width() != spec.width || renderer.height() != spec.height) {
     throw GoldenError("golden '" + spec.id() + "' is " + std::to_string(spec.width) + "x" +
                       std::to_string(spec.height) + ", the renderer draws " +
                       std::to_string(renderer.width()) + "x" + std::to_string(renderer.height()));
   }
   GoldenRun golden_run(spec, variant);
+  start_golden_run(spec, golden_run, start);
   const demos::Scene& scene = golden_run.scene();
   demos::SceneRun& run = golden_run.run();
-  const render::Camera camera =
-      demos::scene_camera(scene.view.camera, run.world(), renderer.width(), renderer.height());
+  // Fitted to the world the scene starts from, also when `start` restored a saved state.
+  const render::Camera camera = demos::run_camera(run, renderer.width(), renderer.height());
   ProducedFrame produced;
   for (const std::int64_t checkpoint : noise_checkpoint_steps(spec.step)) {
     while (run.step_count() < checkpoint) golden_run.step();

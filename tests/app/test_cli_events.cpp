@@ -275,3 +275,84 @@ TEST(TraceState, ACorruptScriptSectionOrOtherScriptParametersAreRefused) {
   EXPECT_EQ(run_cli(folder, "trace tutorial --steps 5 --load-state t.state").exit, 0);
   fs::remove_all(folder);
 }
+
+namespace {
+
+/// Three boxes stacked on static ground and a ball dropped beside them, with two goldens of
+/// 96x72: "start" (step 0) and "settled" (step 90).
+std::string stack_scene_with_goldens() {
+  return R"({"name": "stack", "settings": {"gravity": [0, -10], "time_step": 0.0166666675},
+    "bodies": [
+      {"name": "ground", "type": "static", "shape": {"type": "box", "half_extents": [6, 0.5]},
+       "position": [0, -0.5]},
+      {"name": "low", "shape": {"type": "box", "half_extents": [0.5, 0.5]}, "position": [0, 0.5]},
+      {"name": "middle", "shape": {"type": "box", "half_extents": [0.5, 0.5]}, "position": [0.1, 1.6]},
+      {"name": "top", "shape": {"type": "box", "half_extents": [0.5, 0.5]}, "position": [-0.1, 2.7]},
+      {"name": "ball", "shape": {"type": "circle", "radius": 0.4}, "position": [1.5, 4],
+       "material": "Rock"}],
+    "run": {"steps": 120},
+    "golden": {"size": [96, 72], "frames": [{"name": "start", "step": 0},
+                                            {"name": "settled", "step": 90}]}})";
+}
+
+}  // namespace
+
+// `golden frame --load-state`, as `render --load-state`: the golden's step stays its own, so a
+// state saved after N steps and resumed in a fresh process draws the golden at step S (N + M,
+// M = S - N steps after the saved one) exactly as a run from the start: the same PNG bytes
+// (pixels and metadata) and the same state hash in PNG.hash.
+TEST(GoldenFrameState, ResumedFromAStateSavedMidRunDrawsTheSameFrameAndHash) {
+  const fs::path folder = fresh_folder("golden");
+  std::ofstream(folder / "stack.json") << stack_scene_with_goldens();
+  const Output whole = run_cli(folder, "golden frame stack.json settled --out whole.png");
+  ASSERT_EQ(whole.exit, 0) << whole.err;
+  for (const int saved : {0, 40, 90}) {
+    const std::string state = "s" + std::to_string(saved) + ".state";
+    const Output save =
+        run_cli(folder, "trace stack.json --steps " + std::to_string(saved) + " --save-state " + state);
+    ASSERT_EQ(save.exit, 0) << save.err;
+    const std::string png = "resumed" + std::to_string(saved) + ".png";
+    const Output load =
+        run_cli(folder, "golden frame stack.json settled --load-state " + state + " --out " + png);
+    ASSERT_EQ(load.exit, 0) << saved << ": " << load.err;
+    const std::string expected = slurp(folder / "whole.png");
+    ASSERT_FALSE(expected.empty());
+    EXPECT_EQ(slurp(folder / png), expected) << "saved after " << saved << " steps";
+    const std::string hash = slurp(folder / "whole.png.hash");
+    ASSERT_FALSE(hash.empty());
+    EXPECT_EQ(slurp(folder / (png + ".hash")), hash) << "saved after " << saved << " steps";
+  }
+  fs::remove_all(folder);
+}
+
+// A state the golden cannot be drawn from is refused with exit 2 before anything is written,
+// by the run and by --dry-run alike: one of another scene, a corrupt one, one saved after the
+// golden's step.
+TEST(GoldenFrameState, AStateOfAnotherSceneCorruptOrSavedAfterTheFrameIsRefusedWithExitTwo) {
+  const fs::path folder = fresh_folder("golden_refuse");
+  std::ofstream(folder / "stack.json") << stack_scene_with_goldens();
+  std::ofstream(folder / "drop.json") << drop_scene(1.0);
+  ASSERT_EQ(run_cli(folder, "trace drop.json --steps 5 --save-state drop.state").exit, 0);
+  ASSERT_EQ(run_cli(folder, "trace stack.json --steps 30 --save-state late.state").exit, 0);
+  std::string bytes = slurp(folder / "late.state");
+  ASSERT_GT(bytes.size(), 100u);
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x5a);
+  std::ofstream(folder / "bad.state", std::ios::binary) << bytes;
+  struct Refusal {
+    std::string frame, state, says;
+  };
+  for (const Refusal& refusal : {Refusal{"settled", "drop.state", "'drop'"},
+                                 Refusal{"settled", "bad.state", "bad.state"},
+                                 Refusal{"start", "late.state", "saved after 30 steps"}}) {
+    for (const std::string dry_run : {"", "--dry-run "}) {
+      const Output refused = run_cli(folder, dry_run + "golden frame stack.json " + refusal.frame +
+                                                 " --load-state " + refusal.state + " --out f.png");
+      EXPECT_EQ(refused.exit, 2) << dry_run << refusal.state << ": " << refused.err;
+      EXPECT_NE(refused.err.find(refusal.state), std::string::npos) << refused.err;
+      EXPECT_NE(refused.err.find(refusal.says), std::string::npos) << refused.err;
+      EXPECT_FALSE(fs::exists(folder / "f.png")) << refusal.state;
+      EXPECT_FALSE(fs::exists(folder / "f.png.hash")) << refusal.state;
+    }
+  }
+  fs::remove_all(folder);
+}
