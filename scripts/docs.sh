@@ -31,7 +31,7 @@ run() {
 
 run "$cli" sheet tutorial --frames 0:900:128 --overlays normals,impulses,penetration \
   -o docs/contact_sheet_tutorial.png --quiet
-run "$cli" sheet shape_pairs --count 4 -o docs/contact_sheet_shape_pairs.png --quiet
+run "$cli" sheet shape_pairs --count 4 --tile 480x640 -o docs/contact_sheet_shape_pairs.png --quiet
 run "$cli" sheet bullet --count 4 --tile 400x260 -o docs/contact_sheet_bullet.png --quiet
 run "$cli" sheet shape_pairs --frames 24:24,60:60 --columns 2 --tile 640x480 \
   --overlays points,normals,normal_impulses,penetration,ids --arrow-scale 4 --highlight 4 \
