@@ -251,8 +251,8 @@ TEST(LabChainPeers, ChainLinksFaceTheSameWayInEveryEngine) {
     if (method.engine == Engine::Chipmunk) {
       EXPECT_GT(from_below, 1.0) << engine_name(method.engine);
     } else {
-      // Box2D's time of impact ignores one-sidedness: the ball is held at the link's back for
-      // one sub-step (2.1 cm behind the straight line), then passes.
+      // Box2D's time of impact ignores one-sidedness: the ball is stopped at the link's back at
+      // its time of impact (2.1 cm behind the straight line), then passes.
       EXPECT_LT(from_below, method.engine == Engine::Box2d ? 0.05 : 1e-4) << engine_name(method.engine);
     }
   }
