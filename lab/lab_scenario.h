@@ -14,7 +14,8 @@
 /// acceleration), `ground`, `apexes`, `rest_height` (bounce_apexes),
 /// `bodies` (collision_1d: two; cradle: the row in order; rest: optional, default every dynamic
 /// body); `joint` (pendulum_period, spring_frequency, rope_slack), `joints` (joint_drift:
-/// optional, default every revolute, weld and rigid distance joint). Bodies and joints are
+/// optional, default every revolute, weld and rigid distance joint), `after` (joint_drift,
+/// surface_ride's speeds: seconds before errors count). Bodies and joints are
 /// named by their `name` in the scene; a body named there stands for its creation index, in
 /// which a chain counts one body per link (a chain named as `surface` is its first link).
 
