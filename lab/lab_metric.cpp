@@ -129,6 +129,75 @@ class SlopeMotionTracker : public TrackerBase {
   double worst_ = 0.0;
 };
 
+/// The exact acceleration along a surface (m/s^2) of a body starting at `v0` with gravity
+/// components `along` and `normal` (into the surface): a rolling disc 2/3 along while
+/// mu_s >= |along| / (3 normal), else (and for a block) Coulomb sliding; a block at rest holds
+/// (0) while |along| <= mu_s normal. Valid until a decelerating block stops.
+double surface_acceleration(bool rolls, double v0, double along, double normal,
+                            const ContactCoefficients& coefficients) {
+  const double mu_s = coefficients.static_friction;
+  const double mu_d = coefficients.dynamic_friction;
+  if (rolls) {
+    if (std::fabs(along) <= 3.0 * mu_s * normal) return 2.0 / 3.0 * along;
+    return along - sign_of(along) * mu_d * normal;
+  }
+  if (std::fabs(v0) < 1e-9) {
+    if (std::fabs(along) <= mu_s * normal) return 0.0;
+    return along - sign_of(along) * mu_d * normal;
+  }
+  return along - sign_of(v0) * mu_d * normal;
+}
+
+/// A body riding a flat (chained) surface: see `MetricKind::SurfaceRide`.
+class SurfaceRideTracker : public TrackerBase {
+ public:
+  SurfaceRideTracker(const MetricSpec& spec, const LabSimulation& simulation,
+                     const std::vector<BodyState>& start)
+      : body_(spec.bodies.at(0)), measure_(spec.measure), after_(spec.after) {
+    const float angle = start.at(static_cast<std::size_t>(spec.surface)).angle;
+    tangent_ = {std::cos(angle), std::sin(angle)};
+    normal_ = {-std::sin(angle), std::cos(angle)};
+    const vec2 gravity = simulation.gravity();
+    const double along = dot(gravity, tangent_);
+    const double into = -dot(gravity, normal_);
+    v0_ = dot(start.at(static_cast<std::size_t>(body_)).velocity, tangent_);
+    exact_acceleration_ = surface_acceleration(spec.rolls, v0_, along, into,
+                                               simulation.coefficients(body_, spec.surface));
+  }
+  void observe_finite(double time, const std::vector<BodyState>& states) override {
+    const BodyState& state = states[static_cast<std::size_t>(body_)];
+    if (measure_ != RideMeasure::Acceleration && time < after_ - 1e-9) return;
+    switch (measure_) {
+      case RideMeasure::NormalSpeed:
+        worst_ = std::max(worst_, std::fabs(dot(state.velocity, normal_)));
+        break;
+      case RideMeasure::AngularSpeed:
+        worst_ = std::max(worst_, std::fabs(static_cast<double>(state.angular_velocity)));
+        break;
+      case RideMeasure::Acceleration: {
+        const double mean = time > 0.0 ? (dot(state.velocity, tangent_) - v0_) / time : 0.0;
+        worst_ = 100.0 * std::fabs(mean - exact_acceleration_) /
+                 std::max(std::fabs(exact_acceleration_), 1e-9);
+        break;
+      }
+    }
+  }
+  double finite_error() const override { return worst_; }
+
+ private:
+  static double dot(vec2 a, vec2 b) {
+    return static_cast<double>(a.x) * b.x + static_cast<double>(a.y) * b.y;
+  }
+  int body_;
+  RideMeasure measure_;
+  double after_ = 0.0;
+  vec2 tangent_{1.0f, 0.0f};
+  vec2 normal_{0.0f, 1.0f};
+  double v0_ = 0.0;
+  double exact_acceleration_ = 0.0;
+  double worst_ = 0.0;
+};
+
 class BounceApexTracker : public TrackerBase {
  public:
   BounceApexTracker(const MetricSpec& spec, const LabSimulation& simulation,
@@ -554,6 +623,8 @@ std::unique_ptr<MetricTracker> make_metric_tracker(const MetricSpec& spec,
       return std::make_unique<JointDriftTracker>(spec, simulation);
     case MetricKind::RopeSlack:
       return std::make_unique<RopeSlackTracker>(spec, simulation, start);
+    case MetricKind::SurfaceRide:
+      return std::make_unique<SurfaceRideTracker>(spec, simulation, start);
   }
   return nullptr;
 }

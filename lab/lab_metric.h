@@ -76,18 +76,40 @@ enum class MetricKind {
   /// g t^2 / 2 stays within L - 1 cm of A's anchor (and beyond min + 1 cm) the rope must not
   /// act. Error: the largest distance from p(t) over that time, m.
   RopeSlack,
+  /// A body riding a flat surface made of many pieces (a chain of one-sided segments: the
+  /// ghost-collision test): `body` slides or rolls along `surface` (its angle is the
+  /// surface's direction; for a chain, any link of it). On one flat surface nothing but the
+  /// motion along it happens; `measure` says which part of that exact answer is scored:
+  /// `normal_speed` the largest |v . n| (n the surface normal) over the run, m/s (exact 0: the
+  /// body never leaves the surface nor is kicked at a seam); `angular_speed` the largest |w|,
+  /// rad/s (exact 0 for a sliding block); `acceleration` the mean acceleration along the
+  /// surface, (v_t(T) - v_t(0)) / T at the end of the run, against the exact one of
+  /// `slope_motion`'s model (a block: g_t -+ mu_d g_n while sliding; a rolling disc (`rolls`):
+  /// 2/3 g_t when mu_s >= |g_t| / (3 g_n), g_t -+ mu_d g_n when it slips), percent of the
+  /// exact acceleration (semi-implicit Euler's velocities are exact for a constant one).
+  /// The two speeds count from `after` seconds on (a body placed touching first sinks into its
+  /// contact's slop: a settling, not a seam).
+  SurfaceRide,
+};
+
+/// Which part of `SurfaceRide`'s exact answer a scenario scores.
+enum class RideMeasure {
+  NormalSpeed,   ///< largest |velocity across the surface|, m/s (exact 0)
+  AngularSpeed,  ///< largest |angular velocity|, rad/s (exact 0 for a sliding block)
+  Acceleration,  ///< mean acceleration along the surface against the exact one, percent
 };
 
 /// A scenario's metric as declared in its file.
 struct MetricSpec {
   MetricKind kind = MetricKind::Rest;  ///< which exact answer
   std::vector<int> bodies;   ///< creation indices: the body (or bodies, in order) measured
-  int surface = -1;          ///< SlopeMotion: creation index of the static surface
-  bool rolls = false;        ///< SlopeMotion: the body is a disc rolling on the surface
+  int surface = -1;          ///< SlopeMotion, SurfaceRide: creation index of the static surface
+  bool rolls = false;        ///< SlopeMotion, SurfaceRide: the body is a disc rolling on it
   int apex_count = 3;        ///< BounceApexes: apexes compared
   float rest_height = 0.0f;  ///< BounceApexes: y of the ball's centre resting on the ground, m
   std::vector<int> joints;   ///< indices in the scene's `joints`: the joint(s) measured
-  double after = 0.0;        ///< JointDrift: seconds from the start before separations count
+  double after = 0.0;        ///< JointDrift, SurfaceRide: seconds from the start before errors count
+  RideMeasure measure = RideMeasure::NormalSpeed;  ///< SurfaceRide: what is scored
   std::string unit;          ///< unit of the error ("m", "%", "1" for fractions)
   double threshold = 0.0;    ///< a run passes iff its error <= threshold (same unit)
   std::string meaning;       ///< one line: what the error measures

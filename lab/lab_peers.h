@@ -12,7 +12,10 @@
 /// angles, lengths, limits, motors and springs (a spring of f Hz and damping ratio z becomes
 /// the stiffness m (2 pi f)^2 and damping 2 m z (2 pi f) of the bodies' reduced mass m, as
 /// Box2D's b2LinearStiffness computes them); a joint the peer lacks fails that scenario's run
-/// with "... not supported by <peer>", it is never dropped.
+/// with "... not supported by <peer>", it is never dropped. A chain link (a one-sided segment
+/// with ghost vertices) is a one-sided b2EdgeShape in Box2D (its points reversed: Box2D's edge
+/// faces the right of v1 -> v2, impulse2d's link the left of point1 -> point2) and a two-sided
+/// segment with cpSegmentShapeSetNeighbors in Chipmunk, which has no one-sided segment.
 
 #include <memory>
 #include <string>

@@ -14,14 +14,27 @@
 namespace impulse2d::lab {
 namespace {
 
-/// Creation index of the scene body called `name`.
+/// How many bodies the scene body `body` creates: one, or one per link of a chain shape (the
+/// scene loader validates the chain; here only its count matters).
+int created_bodies(const nlohmann::json& body) {
+  if (!body.is_object() || !body.contains("shape")) return 1;
+  const nlohmann::json& shape = body["shape"];
+  if (!shape.is_object() || shape.value("type", nlohmann::json()) != "chain") return 1;
+  const nlohmann::json points = shape.value("points", nlohmann::json::array());
+  const bool loop = shape.value("loop", nlohmann::json(false)) == true;
+  if (!points.is_array() || points.empty()) return 1;
+  return static_cast<int>(points.size()) - (loop ? 0 : 1);
+}
+
+/// Creation index of the scene body called `name` (a chain's links each count one body; a
+/// chain is named by its first link).
 int body_index(const demos::JsonCursor& reference, const nlohmann::json& scene_bodies) {
   const std::string name = reference.string();
+  int index = 0;
   for (std::size_t i = 0; i < scene_bodies.size(); ++i) {
     const nlohmann::json& body = scene_bodies[i];
-    if (body.is_object() && body.contains("name") && body["name"] == name) {
-      return static_cast<int>(i);
-    }
+    if (body.is_object() && body.contains("name") && body["name"] == name) return index;
+    index += created_bodies(body);
   }
   reference.fail("no body named \"" + name + "\" in scene.bodies");
 }
@@ -49,7 +62,8 @@ int joint_index(const demos::JsonCursor& reference, const nlohmann::json& scene_
 MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scene_bodies,
                        const nlohmann::json& scene_joints) {
   node.allow_only({"kind", "body", "bodies", "surface", "rolls", "ground", "apexes",
-                   "rest_height", "joint", "joints", "after", "unit", "threshold", "meaning"});
+                   "rest_height", "joint", "joints", "after", "measure", "unit", "threshold",
+                   "meaning"});
   MetricSpec spec;
   spec.kind = node.field("kind").choice<MetricKind>({{"free_flight", MetricKind::FreeFlight},
                                                      {"slope_motion", MetricKind::SlopeMotion},
@@ -63,7 +77,8 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
                                                      {"pendulum_period", MetricKind::PendulumPeriod},
                                                      {"spring_frequency", MetricKind::SpringFrequency},
                                                      {"joint_drift", MetricKind::JointDrift},
-                                                     {"rope_slack", MetricKind::RopeSlack}});
+                                                     {"rope_slack", MetricKind::RopeSlack},
+                                                     {"surface_ride", MetricKind::SurfaceRide}});
   if (auto field = node.optional_field("body")) spec.bodies.push_back(body_index(*field, scene_bodies));
   if (auto field = node.optional_field("bodies")) {
     for (std::size_t i = 0; i < field->size(); ++i)
@@ -76,8 +91,16 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
     spec.apex_count = static_cast<int>(field->integer(1, 100));
   if (auto field = node.optional_field("rest_height")) spec.rest_height = field->real();
   if (auto field = node.optional_field("after")) {
-    if (spec.kind != MetricKind::JointDrift) field->fail("only a joint_drift metric takes \"after\"");
+    if (spec.kind != MetricKind::JointDrift && spec.kind != MetricKind::SurfaceRide) {
+      field->fail("only a joint_drift or surface_ride metric takes \"after\"");
+    }
     spec.after = field->real();
+  }
+  if (auto field = node.optional_field("measure")) {
+    if (spec.kind != MetricKind::SurfaceRide) field->fail("only a surface_ride metric takes \"measure\"");
+    spec.measure = field->choice<RideMeasure>({{"normal_speed", RideMeasure::NormalSpeed},
+                                               {"angular_speed", RideMeasure::AngularSpeed},
+                                               {"acceleration", RideMeasure::Acceleration}});
   }
   std::vector<std::string> joint_types;
   if (spec.kind == MetricKind::PendulumPeriod) joint_types = {"revolute", "distance"};
@@ -100,6 +123,16 @@ MetricSpec read_metric(const demos::JsonCursor& node, const nlohmann::json& scen
     case MetricKind::SlopeMotion:
       need(1, "\"body\"");
       if (spec.surface < 0) node.fail("metric needs \"surface\"");
+      break;
+    case MetricKind::SurfaceRide:
+      need(1, "\"body\"");
+      if (spec.surface < 0) node.fail("metric needs \"surface\"");
+      if (!node.optional_field("measure")) {
+        node.fail("metric needs \"measure\" (normal_speed, angular_speed or acceleration)");
+      }
+      if (spec.measure == RideMeasure::Acceleration && spec.after > 0.0) {
+        node.field("after").fail("the acceleration measure is the mean over the whole run: no \"after\"");
+      }
       break;
     case MetricKind::BounceApexes: need(2, "\"body\" and \"ground\""); break;
     case MetricKind::Collision1d: need(2, "\"bodies\" with two names"); break;

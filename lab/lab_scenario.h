@@ -8,12 +8,16 @@
 ///                 "meaning": "largest distance from the exact trajectory"},
 ///      "scene": { ...a scene file, as `impulse2d render` reads... }}
 ///
-/// Metric fields by kind: `body` (free_flight, slope_motion, bounce_apexes, tunnel), `surface`
-/// (slope_motion, tunnel: the wall), `rolls` (slope_motion), `ground`, `apexes`, `rest_height` (bounce_apexes),
+/// Metric fields by kind: `body` (free_flight, slope_motion, bounce_apexes, tunnel,
+/// surface_ride), `surface` (slope_motion, surface_ride, tunnel: the wall), `rolls`
+/// (slope_motion, surface_ride), `measure` (surface_ride: normal_speed, angular_speed or
+/// acceleration), `ground`, `apexes`, `rest_height` (bounce_apexes),
 /// `bodies` (collision_1d: two; cradle: the row in order; rest: optional, default every dynamic
 /// body); `joint` (pendulum_period, spring_frequency, rope_slack), `joints` (joint_drift:
-/// optional, default every revolute, weld and rigid distance joint). Bodies and joints are
-/// named by their `name` in the scene.
+/// optional, default every revolute, weld and rigid distance joint), `after` (joint_drift,
+/// surface_ride's speeds: seconds before errors count). Bodies and joints are
+/// named by their `name` in the scene; a body named there stands for its creation index, in
+/// which a chain counts one body per link (a chain named as `surface` is its first link).
 
 #include <string>
 #include <vector>

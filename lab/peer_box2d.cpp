@@ -159,6 +159,19 @@ void create_box2d_joint(b2World& world, const LabJoint& joint, b2Body* a, b2Body
   }
 }
 
+/// A chain link (a one-sided segment with ghost vertices) as Box2D 2.4.1's one-sided edge:
+/// SetOneSided(v0, v1, v2, v3) collides on the RIGHT of v1 -> v2 with v0 before v1 and v3 after
+/// v2, where impulse2d's link collides on the LEFT of point1 -> point2; so the edge runs
+/// backwards: v1 = point2, v2 = point1, v0 = ghost2, v3 = ghost1. At an open chain's end
+/// impulse2d's ghost is the end point itself (a free corner); Box2D needs a vertex there that
+/// differs from the end (its smoothing normalises v1 - v0), so the link is extended straight on,
+/// which a body that stays on the chain never meets.
+void set_chain_link(b2EdgeShape& edge, const Segment& source) {
+  const vec2 ahead = source.ghost2 == source.point2 ? 2.0f * source.point2 - source.point1 : source.ghost2;
+  const vec2 behind = source.ghost1 == source.point1 ? 2.0f * source.point1 - source.point2 : source.ghost1;
+  edge.SetOneSided(to_b2(ahead), to_b2(source.point2), to_b2(source.point1), to_b2(behind));
+}
+
 class Box2dSimulation : public LabSimulation {
  public:
   Box2dSimulation(const World& initial, const std::vector<LabJoint>& joints,
@@ -224,7 +237,11 @@ class Box2dSimulation : public LabSimulation {
         }
         case ShapeType::Segment: {
           const Segment& source = body.shape->segment();
-          edge.SetTwoSided(b2Vec2(source.point1.x, source.point1.y), b2Vec2(source.point2.x, source.point2.y));
+          if (source.one_sided) {
+            set_chain_link(edge, source);
+          } else {
+            edge.SetTwoSided(to_b2(source.point1), to_b2(source.point2));
+          }
           fixture.shape = &edge;
           break;
         }

@@ -208,6 +208,11 @@ class ChipmunkSimulation : public LabSimulation {
           const Segment& segment = source.shape->segment();
           shape = cpSegmentShapeNew(body, cpv(segment.point1.x, segment.point1.y),
                                     cpv(segment.point2.x, segment.point2.y), 0.0);
+          // A chain link: Chipmunk 7's segments are two-sided; its neighbours only smooth the
+          // seams (a contact at an end cap whose normal leans towards the neighbour is dropped).
+          // At an open chain's end the ghost is the end itself: a zero tangent, a free corner,
+          // as in impulse2d.
+          if (segment.one_sided) cpSegmentShapeSetNeighbors(shape, to_cp(segment.ghost1), to_cp(segment.ghost2));
           break;
         }
       }

@@ -88,7 +88,7 @@ TEST(LabScenarios, BadFilesNameFilePathAndReason) {
       "metric": {"kind": "magic", "unit": "m", "threshold": 1, "meaning": "m"}, )" + scene + "}"),
             "bad.json: metric.kind: unknown value \"magic\" (expected one of: free_flight, "
             "slope_motion, bounce_apexes, collision_1d, cradle, energy, rest, tunnel, peak_speed, "
-            "pendulum_period, spring_frequency, joint_drift, rope_slack)");
+            "pendulum_period, spring_frequency, joint_drift, rope_slack, surface_ride)");
   EXPECT_EQ(failure_of(R"({"description": "d", "answer": "a", "duration": 1,
       "metric": {"kind": "free_flight", "body": "rock", "unit": "m", "threshold": 1, "meaning": "m"}, )" + scene + "}"),
             "bad.json: metric.body: no body named \"rock\" in scene.bodies");
