@@ -82,7 +82,8 @@ struct ContactPoint {
 
 /// Where a contact's bodies stood when its manifold was last computed, for contact recycling.
 struct ManifoldPose {
-  vec2 relative_position{0.0f, 0.0f};  ///< B's centre in A's frame, metres
+  /// B's centre in A's frame, metres (A's centre in B's frame when only B is static)
+  vec2 relative_position{0.0f, 0.0f};
   Rotation rotation_a;                 ///< A's rotation
   Rotation rotation_b;                 ///< B's rotation
 };

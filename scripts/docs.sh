@@ -33,7 +33,7 @@ run "$cli" sheet tutorial --frames 0:900:128 --overlays normals,impulses,penetra
   -o docs/contact_sheet_tutorial.png --quiet
 run "$cli" sheet shape_pairs --count 4 --tile 480x640 -o docs/contact_sheet_shape_pairs.png --quiet
 run "$cli" sheet bullet --count 4 --tile 400x260 -o docs/contact_sheet_bullet.png --quiet
-run "$cli" sheet shape_pairs --frames 24:24,60:60 --columns 2 --tile 640x480 \
+run "$cli" sheet shape_pairs -p rows=3 --frames 24:24,60:60 --columns 2 --tile 640x480 \
   --overlays points,normals,normal_impulses,penetration,ids --arrow-scale 4 --highlight 4 \
   -o docs/overlays_readable.png --quiet
 run "$cli" sheet --scenes pendulum,double_pendulum,rope_bridge,car,ragdolls,catapult,heavy_chain,mouse_drag \
@@ -42,7 +42,7 @@ run "$cli" sheet platformer -f 40,150,190,214,350,455,486,556,760,1000,1040,1100
   --tile 480x300 -o docs/images/platformer_contact_sheet.png --quiet
 run "$build_dir/bench/render_example" docs/overlays.png
 small_dir="$(mktemp -d)"
-run "$cli" render shape_pairs --size 320x240 --overlays all -f 180 -o "$small_dir" --quiet
+run "$cli" render shape_pairs -p rows=3 --size 320x240 --overlays all -f 180 -o "$small_dir" --quiet
 cp "$small_dir/shape_pairs_00000.png" docs/overlays_small.png
 rm -r "$small_dir"
 if [ "$quick" -eq 0 ]; then

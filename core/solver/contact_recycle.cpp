@@ -11,11 +11,17 @@ namespace {
 // (Box2D v3's 0.98: about 11.5 degrees).
 constexpr float min_turn_cosine = 0.98f;
 
-// Where the bodies stand now: B's centre in A's frame and both rotations.
+// Where the bodies stand now: B's centre in A's frame (A's centre in B's frame when only B is
+// static: measured in a turning body's frame, a fixed body's centre seems to stay put while the
+// body rolls over it) and both rotations.
 ManifoldPose pose_of(const Body& a, const Body& b) {
   const Rotation& qa = a.transform.rotation;
   ManifoldPose pose;
-  pose.relative_position = qa.inverse_rotate(b.transform.position - a.transform.position);
+  if (b.type == BodyType::Static && a.type != BodyType::Static) {
+    pose.relative_position = b.transform.rotation.inverse_rotate(a.transform.position - b.transform.position);
+  } else {
+    pose.relative_position = qa.inverse_rotate(b.transform.position - a.transform.position);
+  }
   pose.rotation_a = qa;
   pose.rotation_b = b.transform.rotation;
   return pose;
@@ -83,10 +89,16 @@ void recycle_manifold(const Body& a, const Body& b, Contact& contact) {
   const Transform xa = a.transform;
   const Transform xb = b.transform;
   const vec2 normal = contact.normal;
+  // A circle's point stays where it was relative to its centre as the circle turns (the normal
+  // is kept): its offset is turned by the rotation it was found at, not the current one.
+  const bool round_a = a.shape.type() == ShapeType::Circle;
+  const bool round_b = b.shape.type() == ShapeType::Circle;
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
-    const vec2 on_a = xa.apply(point.recycle_anchor_a);
-    const vec2 on_b = xb.apply(point.recycle_anchor_b);
+    const vec2 on_a = round_a ? xa.position + contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a)
+                              : xa.apply(point.recycle_anchor_a);
+    const vec2 on_b = round_b ? xb.position + contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b)
+                              : xb.apply(point.recycle_anchor_b);
     point.point = 0.5f * (on_a + on_b);
     point.depth = -(point.base_separation + glm::dot(on_b - on_a, normal));
   }

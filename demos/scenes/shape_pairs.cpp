@@ -80,12 +80,15 @@ void add_surface(World& world, Kind kind, vec2 origin, const Material& material)
   world.create_chain(def, points, 5, false);
 }
 
-void build(World& world, const Params&) {
+void build(World& world, const Params& params) {
   const Material pad = materials::static_ground();
-  for (int row = 0; row < row_count; ++row) {
+  // `rows` 3 is the tutorial's table alone (3 x 3); more rows bring all 5 columns.
+  const int rows = static_cast<int>(params.number("rows"));
+  const int columns = rows == 3 ? 3 : column_count;
+  for (int row = 0; row < rows; ++row) {
     const Kind a = row_kinds[row];
     const bool static_a = a == Kind::Segment || a == Kind::Chain;
-    for (int column = 0; column < column_count; ++column) {
+    for (int column = 0; column < columns; ++column) {
       const vec2 origin{cell_size * static_cast<float>(column),
                         -cell_size * static_cast<float>(row)};
       if (static_a) {
@@ -114,13 +117,15 @@ Scene shape_pairs() {
       "the whole collision jump table: in row A (circle, box, polygon: the tutorial's 3x3; then rounded "
       "polygon, capsule, static segment, static chain) a B (circle, box, polygon, rounded polygon, capsule) "
       "falls on an A created first, so the contact goes through collide[A][B]";
+  scene.params = {{"rows", "rows A drawn: 3 is the tutorial's 3x3 table alone, 7 the whole jump table",
+                   static_cast<double>(row_count), 3, static_cast<double>(row_count), true}};
   scene.model.circles = true;
   scene.model.boxes = true;
   scene.model.polygons = true;
   scene.model.capsules = true;
   scene.model.segments = true;
-  scene.view.camera.mode = CameraSpec::Mode::FitBounds;
-  scene.view.camera.bounds = make_bounds({-2.0f, -24.6f}, {18.0f, 3.8f});
+  // Fitted to the bodies as built (the grid of `rows`), 3.0 m of sky above the top row's B.
+  scene.view.camera.mode = CameraSpec::Mode::FitWorld;
   scene.view.steps = 240;
   scene.view.draw.flags = draw_shapes | draw_contact_points | draw_contact_normals;
   scene.view.caption =
