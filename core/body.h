@@ -67,6 +67,29 @@ struct BodyDef {
   bool enable_sensor_events = true;
 };
 
+/// One shape of a body made of several (a compound body), as the caller gives it: the shape in
+/// its own frame (as `make_circle`, `make_polygon`, ... return it) and where that frame lies in
+/// the body's, with its own material and collision layers.
+struct ShapeDef {
+  Shape shape;                        ///< in its own frame
+  vec2 position{0.0f, 0.0f};          ///< its frame's origin in the body's frame, metres
+  float angle = 0.0f;                 ///< its frame's turn in the body's frame, radians
+  Material material = materials::wood();  ///< density (mass), friction and restitution
+  std::uint32_t collision_layers = 1; ///< collides with shapes whose layers share a bit
+};
+
+/// Most shapes one body may have.
+constexpr int max_body_shapes = 256;
+
+/// One shape of a compound body as the world keeps it: placed in the body's frame, whose
+/// origin is the body's centre of mass (`World::create_body` with several shapes re-centres).
+struct BodyShape {
+  Shape shape;                        ///< in its own frame (a `Box` given is kept as a polygon)
+  Transform local;                    ///< its frame in the body's: metres and rotation
+  Material material;                  ///< what it is made of
+  std::uint32_t collision_layers = 1; ///< bitmask
+};
+
 /// What users read of a body, returned by `World::body(id)`: a copy of its state taken when
 /// asked (it does not follow the body as the world steps), plus pointers to its shape and
 /// material, which stay in the world and are valid until the world next creates or removes a
@@ -94,7 +117,12 @@ struct BodyView {
   std::uint32_t collision_layers = 1; ///< bitmask
   Aabb aabb;                          ///< world bounds after the last step, metres
   std::uint64_t user_data = 0;        ///< the caller's value
-  const Shape* shape = nullptr;       ///< in body-local coordinates, centroid at the origin
+  /// The body's one shape, in body-local coordinates with its centroid at the origin; for a
+  /// compound body (`shape_count > 0`) its first shape, in that shape's own frame.
+  const Shape* shape = nullptr;
+  /// A compound body's shapes (null for a body of one shape), `shape_count` of them.
+  const BodyShape* shapes = nullptr;
+  int shape_count = 0;                ///< number of `shapes`; 0 for a body of one shape
   const Material* material = nullptr; ///< what it is made of
   bool is_sensor = false;             ///< detects overlaps, never collides
 };

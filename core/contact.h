@@ -88,11 +88,15 @@ struct ManifoldPose {
   Rotation rotation_b;                 ///< B's rotation
 };
 
-/// A touching (or, with a speculative margin, nearly touching) pair of bodies. Body A has the
-/// smaller slot index.
+/// A touching (or, with a speculative margin, nearly touching) pair of bodies (of shapes, for
+/// compound bodies). Body A has the smaller slot index.
 struct Contact {
   BodyId body_a;   ///< first body (smaller index)
   BodyId body_b;   ///< second body
+  /// Which of A's shapes touches (0 unless A is a compound body): a pair of compound bodies
+  /// has a contact per pair of shapes, sorted after the bodies by (child_a, child_b).
+  std::uint16_t child_a = 0;
+  std::uint16_t child_b = 0;  ///< which of B's shapes touches (0 unless B is compound)
   vec2 normal{0.0f, 0.0f};  ///< unit, from A to B
   ContactPoint points[max_manifold_points];  ///< the first `point_count` are valid
   int point_count = 0;       ///< 1 or 2
@@ -128,5 +132,14 @@ struct Contact {
   /// through) and taken afresh once they are more than a millimetre apart.
   bool enabled = true;
 };
+
+/// True when `a` comes before `b` in the order contact lists keep: by A's slot, B's slot, then
+/// A's and B's shape.
+inline bool contact_less(const Contact& a, const Contact& b) {
+  if (a.body_a.index != b.body_a.index) return a.body_a.index < b.body_a.index;
+  if (a.body_b.index != b.body_b.index) return a.body_b.index < b.body_b.index;
+  if (a.child_a != b.child_a) return a.child_a < b.child_a;
+  return a.child_b < b.child_b;
+}
 
 }  // namespace impulse2d

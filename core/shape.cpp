@@ -774,4 +774,49 @@ bool raycast_shape(const Shape& shape, const Transform& transform, vec2 origin, 
   fail("raycast_shape", "unknown shape type " + std::to_string(static_cast<int>(shape.type())));
 }
 
+void validate_shape(const Shape& shape, const std::string& caller) {
+  switch (shape.type()) {
+    case ShapeType::Circle:
+      if (!(std::isfinite(shape.circle().radius) && shape.circle().radius > 0.0f)) {
+        throw Error(caller + ": circle radius must be finite and > 0");
+      }
+      return;
+    case ShapeType::Box:
+      if (!(is_finite(shape.box().half_extents) && shape.box().half_extents.x > 0.0f &&
+            shape.box().half_extents.y > 0.0f)) {
+        throw Error(caller + ": box half extents must be finite and > 0");
+      }
+      return;
+    case ShapeType::Polygon:
+      if (shape.polygon().count < 3 || shape.polygon().count > max_polygon_vertices) {
+        throw Error(caller + ": polygon needs 3..8 vertices (use make_polygon)");
+      }
+      if (!(std::isfinite(shape.polygon().rounding) && shape.polygon().rounding >= 0.0f)) {
+        throw Error(caller + ": polygon rounding radius must be finite and >= 0");
+      }
+      return;
+    case ShapeType::Capsule: {
+      const Capsule& capsule = shape.capsule();
+      if (!(std::isfinite(capsule.radius) && capsule.radius > 0.0f)) {
+        throw Error(caller + ": capsule radius must be finite and > 0");
+      }
+      if (!(is_finite(capsule.center1) && is_finite(capsule.center2)) || capsule.center1 == capsule.center2) {
+        throw Error(caller + ": capsule centres must be finite and differ (use make_capsule)");
+      }
+      return;
+    }
+    case ShapeType::Segment:
+      if (!(is_finite(shape.segment().point1) && is_finite(shape.segment().point2)) ||
+          shape.segment().point1 == shape.segment().point2) {
+        throw Error(caller + ": segment points must be finite and differ (use make_segment)");
+      }
+      if (shape.segment().one_sided &&
+          !(is_finite(shape.segment().ghost1) && is_finite(shape.segment().ghost2))) {
+        throw Error(caller + ": chain link ghost points must be finite (use make_chain)");
+      }
+      return;
+  }
+  throw Error(caller + ": unknown shape type");
+}
+
 }  // namespace impulse2d

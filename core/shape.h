@@ -11,6 +11,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace impulse2d {
@@ -141,6 +142,11 @@ class Shape {
     Segment segment_;
   };
 };
+
+/// Checks a shape built by hand (or converted from a kind's struct) as `World::create_body`
+/// does: throws `Error` prefixed by `caller` naming what is wrong (a radius <= 0, too few
+/// vertices, equal points, a non-finite value).
+void validate_shape(const Shape& shape, const std::string& caller);
 
 /// A circle of the given radius (metres). Throws `Error` unless 0 < radius < inf.
 Shape make_circle(float radius);

@@ -52,51 +52,6 @@ Body& checked_body(WorldState& world, BodyId id, const char* caller) {
   return world.bodies[id.index];
 }
 
-void validate_shape(const Shape& shape) {
-  switch (shape.type()) {
-    case ShapeType::Circle:
-      if (!(std::isfinite(shape.circle().radius) && shape.circle().radius > 0.0f)) {
-        throw Error("World::create_body: circle radius must be finite and > 0");
-      }
-      return;
-    case ShapeType::Box:
-      if (!(is_finite(shape.box().half_extents) && shape.box().half_extents.x > 0.0f &&
-            shape.box().half_extents.y > 0.0f)) {
-        throw Error("World::create_body: box half extents must be finite and > 0");
-      }
-      return;
-    case ShapeType::Polygon:
-      if (shape.polygon().count < 3 || shape.polygon().count > max_polygon_vertices) {
-        throw Error("World::create_body: polygon needs 3..8 vertices (use make_polygon)");
-      }
-      if (!(std::isfinite(shape.polygon().rounding) && shape.polygon().rounding >= 0.0f)) {
-        throw Error("World::create_body: polygon rounding radius must be finite and >= 0");
-      }
-      return;
-    case ShapeType::Capsule: {
-      const Capsule& capsule = shape.capsule();
-      if (!(std::isfinite(capsule.radius) && capsule.radius > 0.0f)) {
-        throw Error("World::create_body: capsule radius must be finite and > 0");
-      }
-      if (!(is_finite(capsule.center1) && is_finite(capsule.center2)) || capsule.center1 == capsule.center2) {
-        throw Error("World::create_body: capsule centres must be finite and differ (use make_capsule)");
-      }
-      return;
-    }
-    case ShapeType::Segment:
-      if (!(is_finite(shape.segment().point1) && is_finite(shape.segment().point2)) ||
-          shape.segment().point1 == shape.segment().point2) {
-        throw Error("World::create_body: segment points must be finite and differ (use make_segment)");
-      }
-      if (shape.segment().one_sided &&
-          !(is_finite(shape.segment().ghost1) && is_finite(shape.segment().ghost2))) {
-        throw Error("World::create_body: chain link ghost points must be finite (use make_chain)");
-      }
-      return;
-  }
-  throw Error("World::create_body: unknown shape type");
-}
-
 // One walk over the bodies after the solve: forces cleared, diverged bodies put back where the
 // step began (and reported), bounds refreshed and covered by the broad phase (queries search
 // its trees; the next step's contacts start from these bounds), awake bodies counted.
@@ -116,7 +71,7 @@ void finish_bodies(WorldState& world) {
       body.awake = false;
       world.diverged_bodies.push_back(body.id);
     }
-    body.aabb = compute_aabb(body.shape, body.transform);
+    body.aabb = body_aabb(body);
     world.broad_phase.cover(i, body.aabb);
     if (body.awake && body.type != BodyType::Static) ++world.stats.awake_body_count;
   }
@@ -203,7 +158,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
     throw Error("World::create_body: angular_damping must be finite and >= 0");
   }
   validate_material(def.material, "World::create_body: material");
-  validate_shape(shape);
+  validate_shape(shape, "World::create_body");
   if (def.type == BodyType::Dynamic && shape.type() == ShapeType::Segment) {
     throw Error("World::create_body: a segment has no area and so no mass: a dynamic body "
                 "cannot be only a segment (make it static or kinematic, or use a capsule)");
@@ -272,7 +227,7 @@ BodyId World::create_body(const BodyDef& def, const Shape& shape) {
   body.sensor_detects_static = def.sensor_detects_static;
   body.enable_sensor_events = def.enable_sensor_events;
   count_event_flags(state_->events, body, +1);
-  body.aabb = compute_aabb(body.shape, body.transform);
+  body.aabb = body_aabb(body);
   state_->bodies[index] = body;
   state_->alive[index] = 1;
   state_->broad_phase.add_body(index, body.type, body.aabb);
@@ -316,7 +271,7 @@ void World::set_transform(BodyId id, vec2 position, float angle) {
   body.angle = angle;
   body.previous_position = position;
   body.previous_angle = angle;
-  body.aabb = compute_aabb(body.shape, body.transform);
+  body.aabb = body_aabb(body);
   state_->broad_phase.cover(id.index, body.aabb);
   body.awake = true;
   erase_contacts_of(state_->sleeping_contacts, id);  // its set-aside contacts no longer describe where it is
@@ -346,7 +301,15 @@ void World::set_gravity_scale(BodyId id, float scale) {
 void World::set_material(BodyId id, const Material& material) {
   validate_material(material, "World::set_material: material");
   Body& body = checked_body(*state_, id, "World::set_material");
-  if (body.type == BodyType::Dynamic) {
+  if (body.compound) {
+    if (body.type == BodyType::Dynamic && !(material.density > 0.0f)) {
+      throw Error("World::set_material: a dynamic body needs material density > 0 (got " +
+                  std::to_string(material.density) + ")");
+    }
+    for (BodyShape& part : body.children) part.material = material;
+    recentre_compound(body);
+    state_->broad_phase.cover(id.index, body.aabb);
+  } else if (body.type == BodyType::Dynamic) {
     if (!(material.density > 0.0f)) {
       throw Error("World::set_material: a dynamic body needs material density > 0 (got " +
                   std::to_string(material.density) + ")");
@@ -421,15 +384,16 @@ bool World::set_contact_enabled(BodyId a, BodyId b, bool enabled) {
   checked_body(*state_, a, "World::set_contact_enabled");
   checked_body(*state_, b, "World::set_contact_enabled");
   if (b.index < a.index) std::swap(a, b);
+  bool found = false;  // every contact of the pair (one per pair of shapes of compound bodies)
   for (std::vector<Contact>* list : {&state_->contacts, &state_->sleeping_contacts}) {
     for (Contact& contact : *list) {
       if (contact.body_a == a && contact.body_b == b) {
         contact.enabled = enabled;  // the next step's narrow phase carries it over
-        return true;
+        found = true;
       }
     }
   }
-  return false;
+  return found;
 }
 
 // ---- the step ---------------------------------------------------------------------------

@@ -67,6 +67,15 @@ class World {
 
   /// Creates a body with one shape. Throws `Error` for non-finite or invalid definitions.
   BodyId create_body(const BodyDef& def, const Shape& shape);
+  /// Creates a body of `count` shapes (1..`max_body_shapes`), each placed in the body's frame
+  /// with its own material and layers (a compound body: an L-shaped crate, a hammer). The
+  /// shapes are placed around `def.position` as the body's origin; a dynamic body is then
+  /// re-centred on its centre of mass (`body(id).transform.position` is that point, and the
+  /// view's `shapes` are placed relative to it). Mass and inertia are the shapes' summed
+  /// (parallel axis); `def.material` is not used (each shape has its own). A `Box` is kept as
+  /// the polygon of its outline (it turns with the body). Throws `Error` naming the shape
+  /// (`shapes[i]`) for an invalid one, a chain link, or a dynamic body without area.
+  BodyId create_body(const BodyDef& def, const ShapeDef* shapes, int count);
   /// Creates a chain (see `make_chain`): one static body per link, each at its link's midpoint
   /// moved and turned by `def.position` and `def.angle`, the rest of `def` (material, layers,
   /// events) shared; returns their handles in link order. Throws `Error` for a `def` that is
@@ -94,7 +103,7 @@ class World {
   void set_gravity_scale(BodyId id, float scale);
   /// Replaces a body's material (validated; throws `Error` naming the field). A dynamic body's
   /// mass and inertia follow the new density (which must stay > 0); contacts mix the new
-  /// coefficients from the next step on.
+  /// coefficients from the next step on. A compound body's shapes all get `material`.
   void set_material(BodyId id, const Material& material);
   /// Adds a force (N) at a world point (metres) for the next step; it also makes a torque.
   void apply_force(BodyId id, vec2 force, vec2 world_point);

@@ -126,7 +126,10 @@ void World::draw(DebugDraw& draw, const DebugDrawOptions& options) const {
     for (std::size_t i = 0; i < state_->bodies.size(); ++i) {
       if (!state_->alive[i]) continue;
       const Body& body = state_->bodies[i];
-      draw_shape(draw, body.shape, drawn_transform(body, alpha), fill_of(body, options), palette.outline);
+      const Transform drawn = drawn_transform(body, alpha);
+      for (int k = 0; k < shape_count_of(body); ++k) {
+        draw_shape(draw, shape_of(body, k), shape_transform(body, k, drawn), fill_of(body, options), palette.outline);
+      }
     }
   }
   if (flags & draw_contact_normals) {

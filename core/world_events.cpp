@@ -12,7 +12,12 @@ namespace impulse2d {
 
 namespace {
 
-ShapeId shape_of(BodyId body) { return ShapeId{body, 0}; }
+ShapeId shape_a_of(const EventPair& pair) { return ShapeId{pair.a, pair.shape_a}; }
+ShapeId shape_b_of(const EventPair& pair) { return ShapeId{pair.b, pair.shape_b}; }
+
+EventPair pair_of(const Contact& contact) {
+  return EventPair{contact.body_a, contact.body_b, contact.child_a, contact.child_b};
+}
 
 bool key_less(const EventPair& a, const EventPair& b) { return a.key() < b.key(); }
 
@@ -86,20 +91,19 @@ void collect_contact_events(WorldState& world) {
   while (i < awake.size() || j < resting.size()) {
     const bool take_awake =
         j == resting.size() ||
-        (i < awake.size() && EventPair{awake[i].body_a, awake[i].body_b}.key() <
-                                 EventPair{resting[j].body_a, resting[j].body_b}.key());
+        (i < awake.size() && pair_of(awake[i]).key() < pair_of(resting[j]).key());
     const Contact& contact = take_awake ? awake[i++] : resting[j++];
-    if (wants(contact) && is_touching(events, contact, slop, dt)) next.push_back({contact.body_a, contact.body_b});
+    if (wants(contact) && is_touching(events, contact, slop, dt)) next.push_back(pair_of(contact));
   }
   reserve_at_least(events.contact.begin, next.capacity());
   reserve_at_least(events.contact.end, events.touching.capacity() + events.contact.end.size());
   compare_pairs(
       events.touching, next,
       [&events](const EventPair& pair) {
-        events.contact.begin.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+        events.contact.begin.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
       },
       [&events](const EventPair& pair) {
-        events.contact.end.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+        events.contact.end.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
       });
   std::swap(events.touching, next);
 }
@@ -129,7 +133,7 @@ void collect_hit_events(WorldState& world) {
       }
     }
     if (fastest < 0) continue;
-    events.contact.hit.push_back({shape_of(contact.body_a), shape_of(contact.body_b), contact.body_a,
+    events.contact.hit.push_back({shape_a_of(pair_of(contact)), shape_b_of(pair_of(contact)), contact.body_a,
                                   contact.body_b, contact.points[fastest].point, contact.normal,
                                   fastest_speed});
   }
@@ -149,8 +153,19 @@ void collect_sensor_events(WorldState& world) {
       if (other.type == BodyType::Static && !sensor.sensor_detects_static) continue;
       if ((other.collision_layers & sensor.collision_layers) == 0) continue;
       if (!other.aabb.overlaps(sensor.aabb)) continue;
-      if (collide(sensor.shape, sensor.transform, other.shape, other.transform).point_count == 0) continue;
-      next.push_back({sensor.id, other.id});
+      // Each pair of shapes (one pair unless a body is compound) whose layers meet and that
+      // overlap, in (sensor's shape, other's shape) order.
+      for (int i = 0; i < shape_count_of(sensor); ++i) {
+        const Transform sensor_at = shape_transform(sensor, i);
+        for (int k = 0; k < shape_count_of(other); ++k) {
+          if ((layers_of(sensor, i) & layers_of(other, k)) == 0) continue;
+          if (collide(shape_of(sensor, i), sensor_at, shape_of(other, k), shape_transform(other, k))
+                  .point_count == 0) {
+            continue;
+          }
+          next.push_back({sensor.id, other.id, static_cast<std::uint16_t>(i), static_cast<std::uint16_t>(k)});
+        }
+      }
     }
   }
   reserve_at_least(events.sensor.begin, next.capacity());
@@ -158,10 +173,10 @@ void collect_sensor_events(WorldState& world) {
   compare_pairs(
       events.sensor_overlaps, next,
       [&events](const EventPair& pair) {
-        events.sensor.begin.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+        events.sensor.begin.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
       },
       [&events](const EventPair& pair) {
-        events.sensor.end.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+        events.sensor.end.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
       });
   std::swap(events.sensor_overlaps, next);
 }
@@ -178,14 +193,14 @@ void begin_step_events(WorldState& world) {
   if (!events.removed_touches.empty()) {
     std::stable_sort(events.removed_touches.begin(), events.removed_touches.end(), key_less);
     for (const EventPair& pair : events.removed_touches) {
-      events.contact.end.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+      events.contact.end.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
     }
     events.removed_touches.clear();
   }
   if (!events.removed_overlaps.empty()) {
     std::stable_sort(events.removed_overlaps.begin(), events.removed_overlaps.end(), key_less);
     for (const EventPair& pair : events.removed_overlaps) {
-      events.sensor.end.push_back({shape_of(pair.a), shape_of(pair.b), pair.a, pair.b});
+      events.sensor.end.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
     }
     events.removed_overlaps.clear();
   }

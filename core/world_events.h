@@ -7,18 +7,25 @@
 #include "core/math.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace impulse2d {
 
 struct WorldState;
 
-/// Two bodies of a remembered touch or overlap, ordered by slot (sensor first for sensors).
+/// Two shapes of a remembered touch or overlap, ordered by slot (sensor first for sensors),
+/// then by shape (for compound bodies).
 struct EventPair {
   BodyId a;  ///< smaller slot (or the sensor)
   BodyId b;  ///< larger slot (or the visitor)
-  /// Slot key for ordering: a.index << 32 | b.index.
-  std::uint64_t key() const { return static_cast<std::uint64_t>(a.index) << 32 | b.index; }
+  std::uint16_t shape_a = 0;  ///< which of a's shapes (0 unless compound)
+  std::uint16_t shape_b = 0;  ///< which of b's shapes (0 unless compound)
+  /// Key for ordering: (a.index << 32 | b.index, shape_a << 16 | shape_b).
+  std::pair<std::uint64_t, std::uint32_t> key() const {
+    return {static_cast<std::uint64_t>(a.index) << 32 | b.index,
+            static_cast<std::uint32_t>(shape_a) << 16 | shape_b};
+  }
 };
 
 /// Event state of a world; copied with it and saved in snapshots.

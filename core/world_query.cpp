@@ -22,7 +22,7 @@ void World::query_aabb(const Aabb& box, const QueryCallback& callback) const {
   state_->broad_phase.query(box, nearby);
   for (const std::uint32_t i : nearby) {
     if (!state_->alive[i]) continue;  // the callback may have removed it
-    const Aabb bounds = compute_aabb(state_->bodies[i].shape, state_->bodies[i].transform);
+    const Aabb bounds = body_aabb(state_->bodies[i]);
     if (bounds.overlaps(box) && !callback(state_->bodies[i].id)) return;
   }
 }
@@ -33,7 +33,7 @@ void World::query_point(vec2 point, const QueryCallback& callback) const {
   state_->broad_phase.query(Aabb{point, point}, nearby);
   for (const std::uint32_t i : nearby) {
     if (!state_->alive[i]) continue;  // the callback may have removed it
-    if (shape_contains_point(state_->bodies[i].shape, state_->bodies[i].transform, point) &&
+    if (body_contains_point(state_->bodies[i], point) &&
         !callback(state_->bodies[i].id)) {
       return;
     }
@@ -50,7 +50,7 @@ std::vector<RayHit> World::raycast_all(vec2 origin, vec2 translation, std::uint3
     const Body& body = state_->bodies[i];
     if (!state_->alive[i] || (body.collision_layers & layers) == 0) continue;
     ShapeRayHit shape_hit;
-    if (raycast_shape(body.shape, body.transform, origin, translation, &shape_hit)) {
+    if (raycast_body(body, origin, translation, layers, &shape_hit)) {
       hits.push_back(
           RayHit{body.id, origin + translation * shape_hit.fraction, shape_hit.normal, shape_hit.fraction});
     }
@@ -71,7 +71,7 @@ std::optional<RayHit> World::raycast_closest(vec2 origin, vec2 translation, std:
     const Body& body = state_->bodies[i];
     if (!state_->alive[i] || (body.collision_layers & layers) == 0) continue;
     ShapeRayHit shape_hit;
-    if (raycast_shape(body.shape, body.transform, origin, translation, &shape_hit) &&
+    if (raycast_body(body, origin, translation, layers, &shape_hit) &&
         (!closest || shape_hit.fraction < closest->fraction)) {
       closest = RayHit{body.id, origin + translation * shape_hit.fraction, shape_hit.normal,
                        shape_hit.fraction};

@@ -257,7 +257,12 @@ int World::overlap_shape(const Shape& shape, const Transform& transform, BodyId*
     const Body& body = world.bodies[slot];
     if (!passes(world, slot, filter) || !body.aabb.overlaps(bounds)) return true;
     // The narrow phase's own test: overlapping shapes give manifold points at margin 0.
-    if (collide(placed, transform, body.shape, body.transform).point_count == 0) return true;
+    bool overlaps = false;
+    for (int i = 0; i < shape_count_of(body) && !overlaps; ++i) {
+      overlaps = (layers_of(body, i) & filter.layers) != 0 &&
+                 collide(placed, transform, shape_of(body, i), shape_transform(body, i)).point_count > 0;
+    }
+    if (!overlaps) return true;
     ++found;
     // Keep the `capacity` smallest slots, ascending (tree order is not slot order).
     int at = kept;
@@ -286,13 +291,11 @@ std::optional<ShapeCastHit> World::cast_shape(const Shape& shape, const Transfor
   // Conservative advancement along the translation stops this close (metres) to the surface.
   constexpr float touch_tolerance = 1.0e-6f;
   std::optional<ShapeCastHit> best;
-  world.broad_phase.visit_overlaps(swept, [&](std::uint32_t slot) {
-    const Body& body = world.bodies[slot];
-    if (!passes(world, slot, filter) || !body.aabb.overlaps(swept)) return true;
-    const Hull target = hull_of(body.shape, body.transform);
-    ShapeCastHit hit;
-    hit.body = body.id;
-    if (collide(placed, transform, body.shape, body.transform).point_count > 0) {
+  // The first meeting of the moving shape with `target_shape` at `target_at` (a compound body:
+  // one of its shapes), in `hit` (all but its body); false when they do not meet.
+  auto cast_against = [&](const Shape& target_shape, const Transform& target_at, ShapeCastHit& hit) {
+    const Hull target = hull_of(target_shape, target_at);
+    if (collide(placed, transform, target_shape, target_at).point_count > 0) {
       // Overlapping at the start.
       hit.fraction = 0.0f;
       hit.point = transform.position;
@@ -327,12 +330,25 @@ std::optional<ShapeCastHit> World::cast_shape(const Shape& shape, const Transfor
         hit.point = distance.point_b;
         hit.normal = -distance.normal;
       }
-      if (!reached) return true;
+      if (!reached) return false;
       hit.fraction = fraction;
     }
-    if (!best || hit.fraction < best->fraction ||
-        (hit.fraction == best->fraction && slot < best->body.index)) {
-      best = hit;
+    return true;
+  };
+  world.broad_phase.visit_overlaps(swept, [&](std::uint32_t slot) {
+    const Body& body = world.bodies[slot];
+    if (!passes(world, slot, filter) || !body.aabb.overlaps(swept)) return true;
+    for (int part = 0; part < shape_count_of(body); ++part) {
+      if ((layers_of(body, part) & filter.layers) == 0) continue;
+      const Shape& target_shape = shape_of(body, part);
+      const Transform target_at = shape_transform(body, part);
+      ShapeCastHit hit;
+      if (!cast_against(target_shape, target_at, hit)) continue;
+      hit.body = body.id;
+      if (!best || hit.fraction < best->fraction ||
+          (hit.fraction == best->fraction && slot < best->body.index)) {
+        best = hit;
+      }
     }
     return true;
   });
@@ -349,7 +365,7 @@ std::optional<RayHit> World::raycast_closest(vec2 origin, vec2 translation, cons
     if (!passes(world, slot, filter)) return true;
     const Body& body = world.bodies[slot];
     ShapeRayHit shape_hit;
-    if (raycast_shape(body.shape, body.transform, origin, translation, &shape_hit) &&
+    if (raycast_body(body, origin, translation, filter.layers, &shape_hit) &&
         (!closest || shape_hit.fraction < closest->fraction ||
          (shape_hit.fraction == closest->fraction && slot < closest->body.index))) {
       closest = RayHit{body.id, origin + translation * shape_hit.fraction, shape_hit.normal, shape_hit.fraction};

@@ -260,6 +260,37 @@ void io_body(IO& io, Body& b) {
   io.f32(b.material.static_friction);
   io.f32(b.material.dynamic_friction);
   io_shape(io, b.shape);
+  io_bool(io, b.compound);
+  const std::uint32_t children = io.count(b.children.size());
+  if (IO::reading) {
+    if (children > static_cast<std::uint32_t>(max_body_shapes) || b.compound != (children > 0)) {
+      throw Error("World::restore_snapshot: corrupt compound body shape count " + std::to_string(children));
+    }
+    b.children.assign(children, BodyShape{});
+  }
+  for (BodyShape& part : b.children) {
+    io_shape(io, part.shape);
+    io_transform(io, part.local);
+    io.string(part.material.name);
+    io.f32(part.material.density);
+    io.f32(part.material.restitution);
+    io.f32(part.material.static_friction);
+    io.f32(part.material.dynamic_friction);
+    io.u32(part.collision_layers);
+  }
+}
+
+// A shape index (0..max_body_shapes - 1) of a contact or event pair.
+template <class IO>
+void io_child(IO& io, std::uint16_t& child) {
+  std::uint32_t value = child;
+  io.u32(value);
+  if (IO::reading) {
+    if (value >= static_cast<std::uint32_t>(max_body_shapes)) {
+      throw Error("World::restore_snapshot: corrupt shape index " + std::to_string(value));
+    }
+    child = static_cast<std::uint16_t>(value);
+  }
 }
 
 template <class IO>
@@ -308,6 +339,8 @@ template <class IO>
 void io_contact(IO& io, Contact& c) {
   io_body_id(io, c.body_a);
   io_body_id(io, c.body_b);
+  io_child(io, c.child_a);
+  io_child(io, c.child_b);
   io_vec2(io, c.normal);
   io.i32(c.point_count);
   if (c.point_count < 0 || c.point_count > max_manifold_points) {
@@ -365,6 +398,8 @@ void io_pairs(IO& io, std::vector<EventPair>& pairs) {
   io_vector(io, pairs, [](IO& inner, EventPair& p) {
     io_body_id(inner, p.a);
     io_body_id(inner, p.b);
+    io_child(inner, p.shape_a);
+    io_child(inner, p.shape_b);
   });
 }
 

@@ -49,7 +49,7 @@ std::optional<JsonCursor> JsonCursor::optional_field(const std::string& key) con
   return field(key);
 }
 
-void JsonCursor::allow_only(std::initializer_list<const char*> known) const {
+void JsonCursor::allow_only(const std::vector<const char*>& known) const {
   expect_object();
   for (const auto& member : value_->items()) {
     bool found = false;

@@ -39,7 +39,7 @@ class JsonCursor {
   /// The member `key`, or nothing when it is absent (fails when this is not an object).
   std::optional<JsonCursor> optional_field(const std::string& key) const;
   /// Fails naming the first member whose key is not in `known` (catches misspellings).
-  void allow_only(std::initializer_list<const char*> known) const;
+  void allow_only(const std::vector<const char*>& known) const;
   /// Number of elements; fails unless this is an array.
   std::size_t size() const;
   /// Element `index` of this array.

@@ -5,18 +5,28 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/body.h"
 #include "core/shape.h"
+#include "core/world.h"
 #include "scene/scene_joint.h"
 
 namespace impulse2d::demos {
 
-/// A body to create: its definition and its shape.
+/// A body to create: its definition and its shape (or shapes).
 struct BodySpawn {
   BodyDef def;  ///< position, velocity, material, ...
-  Shape shape;  ///< validated shape (make_circle, make_box, make_polygon, ...)
+  Shape shape;  ///< validated shape (make_circle, make_box, make_polygon, ...); a compound's first
+  /// A compound body's shapes placed about `def.position` (empty: the body is `shape` alone).
+  std::vector<ShapeDef> shapes;
 };
+
+/// Creates `spawn` in `world`: a body of one shape, or a compound body.
+inline BodyId create_spawn(World& world, const BodySpawn& spawn) {
+  if (spawn.shapes.empty()) return world.create_body(spawn.def, spawn.shape);
+  return world.create_body(spawn.def, spawn.shapes.data(), static_cast<int>(spawn.shapes.size()));
+}
 
 /// What a scripted event does.
 enum class SceneEventKind {

@@ -118,7 +118,14 @@ vec2 read_axis(const JsonCursor& node) {
 
 // The body's bounds as declared, grown by its own size: an anchor outside this is "far".
 bool near_body(const BodySpawn& body, vec2 point) {
-  const Aabb box = compute_aabb(body.shape, Transform{body.def.position, Rotation::from_angle(body.def.angle)});
+  const Transform place{body.def.position, Rotation::from_angle(body.def.angle)};
+  Aabb box = compute_aabb(body.shape, place);
+  for (std::size_t i = 0; i < body.shapes.size(); ++i) {  // a compound body: all its shapes
+    const ShapeDef& part = body.shapes[i];
+    const Aabb each = compute_aabb(part.shape, Transform{place.apply(part.position),
+                                                         Rotation::from_angle(body.def.angle + part.angle)});
+    box = i == 0 ? each : Aabb{glm::min(box.lower, each.lower), glm::max(box.upper, each.upper)};
+  }
   const vec2 size = box.upper - box.lower;
   const float margin = std::max({size.x, size.y, 0.1f});
   return point.x >= box.lower.x - margin && point.x <= box.upper.x + margin && point.y >= box.lower.y - margin &&

@@ -279,16 +279,25 @@ std::vector<ChainLink> read_chain(const JsonCursor& node) {
   }
 }
 
-ReadShape read_shape(const JsonCursor& node) {
+/// The fields a shape object may have besides `own` (its kind's): a shape in a body's "shapes"
+/// list also has its placement, material and layers.
+std::vector<const char*> shape_fields(std::vector<const char*> own, bool placed) {
+  if (placed) own.insert(own.end(), {"position", "angle", "material", "layers"});
+  return own;
+}
+
+/// A shape object: `placed` for one of a body's "shapes" (which may also give "position",
+/// "angle", "material" and "layers", read by `read_placed_shapes`).
+ReadShape read_shape(const JsonCursor& node, bool placed = false) {
   const JsonCursor type = node.field("type");
   const std::string name = type.string();
   ReadShape result;
   if (name == "circle") {
-    node.allow_only({"type", "radius"});
+    node.allow_only(shape_fields({"type", "radius"}, placed));
     result.shape = make_circle(
         node.field("radius").in_range(limits::min_size, limits::max_size, limits::size_reason));
   } else if (name == "box" || name == "oriented_box") {
-    node.allow_only({"type", "half_extents"});
+    node.allow_only(shape_fields({"type", "half_extents"}, placed));
     const JsonCursor extents = node.field("half_extents");
     if (extents.size() != 2) extents.fail("expected [half width, half height]");
     const vec2 half(
@@ -296,7 +305,7 @@ ReadShape read_shape(const JsonCursor& node) {
         extents.element(1).in_range(limits::min_size, limits::max_size, limits::size_reason));
     result.shape = name == "box" ? make_box(half) : make_oriented_box(half);
   } else if (name == "capsule") {
-    node.allow_only({"type", "center1", "center2", "radius"});
+    node.allow_only(shape_fields({"type", "center1", "center2", "radius"}, placed));
     const JsonCursor first = node.field("center1");
     const JsonCursor second = node.field("center2");
     const vec2 center1 = first.vector_at_most(limits::max_size, limits::size_reason);
@@ -309,7 +318,7 @@ ReadShape read_shape(const JsonCursor& node) {
     }
     result.shape = make_capsule(center1, center2, radius, &result.centroid);
   } else if (name == "segment") {
-    node.allow_only({"type", "point1", "point2"});
+    node.allow_only(shape_fields({"type", "point1", "point2"}, placed));
     const JsonCursor first = node.field("point1");
     const JsonCursor second = node.field("point2");
     const vec2 point1 = first.vector_at_most(limits::max_size, limits::size_reason);
@@ -320,10 +329,11 @@ ReadShape read_shape(const JsonCursor& node) {
     }
     result.shape = make_segment(point1, point2, &result.centroid);
   } else if (name == "chain") {
+    if (placed) type.fail("a chain cannot be one of a body's shapes (give it its own body)");
     result.chain = read_chain(node);
     result.shape = result.chain.front().shape;
   } else if (name == "polygon") {
-    node.allow_only({"type", "vertices", "radius"});
+    node.allow_only(shape_fields({"type", "vertices", "radius"}, placed));
     const JsonCursor list = node.field("vertices");
     const std::size_t count = list.size();
     if (count < 3 || count > static_cast<std::size_t>(max_polygon_vertices)) {
@@ -359,11 +369,55 @@ ReadShape read_shape(const JsonCursor& node) {
   return result;
 }
 
+/// A compound body's "shapes": 1..max_body_shapes shape objects, each with an optional
+/// "position" and "angle" (of its frame in the body's; a polygon's or capsule's own centroid
+/// offset is kept), "material" and "layers" (the body's by default).
+std::vector<ShapeDef> read_placed_shapes(const JsonCursor& list, const BodyDef& def,
+                                         const MaterialTable& table) {
+  const std::size_t count = list.size();
+  if (count < 1 || count > static_cast<std::size_t>(max_body_shapes)) {
+    list.fail("a body takes 1.." + std::to_string(max_body_shapes) + " shapes, got " + std::to_string(count));
+  }
+  std::vector<ShapeDef> shapes;
+  bool has_area = false;
+  for (std::size_t i = 0; i < count; ++i) {
+    const JsonCursor node = list.element(i);
+    const ReadShape read = read_shape(node, true);
+    ShapeDef placed;
+    placed.shape = read.shape;
+    if (auto field = node.optional_field("angle")) placed.angle = field->magnitude_at_most(1e4f, "rad");
+    vec2 position(0.0f);
+    if (auto field = node.optional_field("position")) {
+      position = field->vector_at_most(limits::max_size, limits::size_reason);
+    }
+    placed.position = position + Rotation::from_angle(placed.angle).rotate(read.centroid);
+    placed.material = def.material;
+    if (auto field = node.optional_field("material")) placed.material = read_body_material(*field, table);
+    placed.collision_layers = def.collision_layers;
+    if (auto field = node.optional_field("layers")) {
+      placed.collision_layers = static_cast<std::uint32_t>(field->integer(0, 0xFFFFFFFFll));
+    }
+    const bool area = read.shape.type() != ShapeType::Segment;
+    if (def.type == BodyType::Dynamic && area && !(placed.material.density > 0.0f)) {
+      (node.has("material") ? node.field("material") : node)
+          .fail("a dynamic body's shapes need density > 0 (material " + placed.material.name +
+                " has density 0); make the body \"static\" or pick another material");
+    }
+    has_area = has_area || area;
+    shapes.push_back(placed);
+  }
+  if (def.type == BodyType::Dynamic && !has_area) {
+    list.fail("a dynamic body needs a shape with area (all its shapes are segments: give the body "
+              "\"type\": \"static\" or \"kinematic\", or add a capsule or polygon)");
+  }
+  return shapes;
+}
+
 /// A body object; a chain's links go to `chain` (one static body each, at their midpoints
 /// placed by the body's position and angle), or fail where `chain` is null (spawned bodies).
 BodySpawn read_body(const JsonCursor& node, const MaterialTable& table,
                     std::vector<ChainLink>* chain = nullptr) {
-  node.allow_only({"name", "type", "shape", "position", "angle", "velocity", "angular_velocity",
+  node.allow_only({"name", "type", "shape", "shapes", "position", "angle", "velocity", "angular_velocity",
                    "gravity_scale", "linear_damping", "angular_damping", "fixed_rotation", "bullet",
                    "layers", "material", "one_way", "sensor", "sensor_detects_static", "events"});
   BodySpawn body;
@@ -373,8 +427,16 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table,
                                         {"static", BodyType::Static},
                                         {"kinematic", BodyType::Kinematic}});
   }
-  const ReadShape shape = read_shape(node.field("shape"));
-  body.shape = shape.shape;
+  if (node.has("shape") == node.has("shapes")) {
+    node.fail("give a body either \"shape\" (one shape) or \"shapes\" (a list: a compound body)");
+  }
+  // A compound body's first shape stands for it in the checks below (its kinds are all
+  // read with `read_placed_shapes` once the body's material and layers are known).
+  const ReadShape shape = node.has("shape") ? read_shape(node.field("shape"))
+                                            : read_shape(node.field("shapes").element(0), true);
+  body.shape = shape.shape.type() == ShapeType::Box && node.has("shapes")
+                   ? make_oriented_box(shape.shape.box().half_extents)
+                   : shape.shape;
   if (!shape.chain.empty()) {
     if (chain == nullptr) {
       node.field("shape").field("type").fail(
@@ -386,7 +448,7 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table,
     }
     *chain = shape.chain;
   }
-  if (def.type == BodyType::Dynamic && body.shape.type() == ShapeType::Segment) {
+  if (def.type == BodyType::Dynamic && body.shape.type() == ShapeType::Segment && node.has("shape")) {
     node.field("shape").field("type").fail(
         "a segment has no area and so no mass: a dynamic body cannot be only a segment (give "
         "the body \"type\": \"static\" or \"kinematic\", or use a capsule)");
@@ -400,7 +462,8 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table,
                   "use \"type\": \"oriented_box\" for a rotated box");
     }
   }
-  def.position = origin + Rotation::from_angle(def.angle).rotate(shape.centroid);
+  // A compound body's origin is the given position: its shapes are placed about it.
+  def.position = node.has("shapes") ? origin : origin + Rotation::from_angle(def.angle).rotate(shape.centroid);
   if (auto field = node.optional_field("velocity")) {
     def.linear_velocity = field->vector_at_most(limits::max_speed, limits::speed_reason);
   }
@@ -441,6 +504,10 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table,
   def.material = table.at("Wood");
   if (auto field = node.optional_field("material"))
     def.material = read_body_material(*field, table);
+  if (auto list = node.optional_field("shapes")) {
+    body.shapes = read_placed_shapes(*list, def, table);
+    return body;
+  }
   if (def.type == BodyType::Dynamic && !(def.material.density > 0.0f)) {
     node.field("material")
         .fail("a dynamic body needs density > 0 (material " + def.material.name +
@@ -830,11 +897,19 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     scene.model.rotation = false;
     scene.model.ccd = false;
     auto cover = [&scene](const BodySpawn& body) {
-      scene.model.circles = scene.model.circles || body.shape.type() == ShapeType::Circle;
-      scene.model.boxes = scene.model.boxes || body.shape.type() == ShapeType::Box;
-      scene.model.polygons = scene.model.polygons || body.shape.type() == ShapeType::Polygon;
-      scene.model.capsules = scene.model.capsules || body.shape.type() == ShapeType::Capsule;
-      scene.model.segments = scene.model.segments || body.shape.type() == ShapeType::Segment;
+      auto cover_kind = [&scene](const Shape& shape) {
+        scene.model.circles = scene.model.circles || shape.type() == ShapeType::Circle;
+        scene.model.boxes = scene.model.boxes || shape.type() == ShapeType::Box;
+        scene.model.polygons = scene.model.polygons || shape.type() == ShapeType::Polygon;
+        scene.model.capsules = scene.model.capsules || shape.type() == ShapeType::Capsule;
+        scene.model.segments = scene.model.segments || shape.type() == ShapeType::Segment;
+      };
+      cover_kind(body.shape);
+      for (const ShapeDef& placed : body.shapes) {
+        // A compound keeps a box as the polygon of its outline.
+        cover_kind(placed.shape.type() == ShapeType::Box ? make_oriented_box(placed.shape.box().half_extents)
+                                                         : placed.shape);
+      }
       const bool spins = body.def.type == BodyType::Dynamic && body.shape.type() != ShapeType::Box &&
                          !body.def.fixed_rotation;
       scene.model.rotation = scene.model.rotation || spins;
@@ -893,7 +968,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   for (const auto& [name, index] : names) scene.body_names[index] = name;
   scene.build = [bodies, hit_event_speed](World& world, const Params&) {
     if (hit_event_speed) world.set_hit_event_threshold(*hit_event_speed);
-    for (const BodySpawn& body : bodies) world.create_body(body.def, body.shape);
+    for (const BodySpawn& body : bodies) create_spawn(world, body);
   };
   return scene;
 }

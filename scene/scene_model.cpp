@@ -54,7 +54,9 @@ void apply_model(const SceneModel& model, WorldSettings& settings) {
 void verify_shape_kinds(const SceneModel& model, const World& world,
                         const std::string& scene_name) {
   for (const BodyId id : world.body_ids()) {
-    const ShapeType type = world.body(id).shape->type();
+    const BodyView view = world.body(id);
+    ShapeType type = view.shape->type();
+    for (int i = 0; i < view.shape_count && model.allows(type); ++i) type = view.shapes[i].shape.type();
     if (model.allows(type)) continue;
     throw UsageError("scene " + scene_name + ": body " + std::to_string(id.index) + " is a " +
                      shape_kind_name(type) +

@@ -149,7 +149,7 @@ void SceneRun::apply_event(const SceneEvent& event) {
       break;
     }
     case SceneEventKind::Spawn:
-      created_.push_back(world_.create_body(event.spawn.def, event.spawn.shape));
+      created_.push_back(create_spawn(world_, event.spawn));
       break;
     case SceneEventKind::Remove:
       world_.remove_body(event_body(event));

@@ -24,7 +24,7 @@ bool overlaps_any(const Body& bullet, const Transform& pose, const std::vector<B
                   const std::vector<std::uint32_t>& candidates) {
   for (std::uint32_t index : candidates) {
     const Body& other = bodies[index];
-    if (collide(bullet.shape, pose, other.shape, other.transform).point_count > 0) return true;
+    if (bodies_overlap(bullet, pose, other)) return true;
   }
   return false;
 }
@@ -55,7 +55,13 @@ int BulletSweeper::sweep(std::vector<Body>& bodies, const std::vector<std::uint8
   for (std::uint32_t b = 0; b < bodies.size(); ++b) {
     Body& bullet = bodies[b];
     if (!alive[b] || !bullet.is_bullet || bullet.is_sensor || bullet.type != BodyType::Dynamic || !bullet.awake) continue;
-    const float spacing = 0.5f * smallest_extent(bullet.shape);
+    // A compound bullet samples at its thinnest shape with area (its segments have none).
+    float thinnest = smallest_extent(shape_of(bullet, 0));
+    for (int i = 1; i < shape_count_of(bullet); ++i) {
+      const float extent = smallest_extent(shape_of(bullet, i));
+      if (extent > 0.0f && (extent < thinnest || !(thinnest > 0.0f))) thinnest = extent;
+    }
+    const float spacing = 0.5f * thinnest;
     const Transform end = bullet.transform;
     const float end_angle = bullet.angle;
     const bool rotates = effective_inverse_inertia(bullet, settings) != 0.0f;
@@ -64,12 +70,12 @@ int BulletSweeper::sweep(std::vector<Body>& bodies, const std::vector<std::uint8
     const float distance = glm::length(end.position - start.position);
     if (!(distance > spacing) || !(spacing > 0.0f)) continue;
 
-    const Aabb swept = merge(compute_aabb(bullet.shape, start), compute_aabb(bullet.shape, end));
+    const Aabb swept = merge(body_aabb(bullet, start), body_aabb(bullet, end));
     if (!trees_cover_bodies) {
       // Bodies moved since the trees last covered them; bullets are never candidates.
       for (std::uint32_t o = 0; o < bodies.size(); ++o) {
         if (alive[o] && !bodies[o].is_bullet) {
-          broad_phase.cover(o, compute_aabb(bodies[o].shape, bodies[o].transform));
+          broad_phase.cover(o, body_aabb(bodies[o]));
         }
       }
       trees_cover_bodies = true;
@@ -80,9 +86,9 @@ int BulletSweeper::sweep(std::vector<Body>& bodies, const std::vector<std::uint8
       const Body& other = bodies[o];
       if (o == b || !alive[o] || other.is_bullet || other.is_sensor) continue;
       if ((other.collision_layers & bullet.collision_layers) == 0) continue;
-      if (!compute_aabb(other.shape, other.transform).overlaps(swept)) continue;
+      if (!body_aabb(other).overlaps(swept)) continue;
       // Already touching at the start: the ordinary contact handles that pair.
-      if (collide(bullet.shape, start, other.shape, other.transform).point_count > 0) continue;
+      if (bodies_overlap(bullet, start, other)) continue;
       candidates_.push_back(o);
     }
     if (candidates_.empty()) continue;

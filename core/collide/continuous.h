@@ -3,7 +3,7 @@
 /// Continuous collision for bullets: a fast body's motion over a step is swept against the
 /// bodies it could cross, so it cannot tunnel through a thin wall.
 
-#include "core/solver/body_state.h"
+#include "core/solver/body_shapes.h"
 #include "core/collide/broad_phase.h"
 #include "core/settings.h"
 

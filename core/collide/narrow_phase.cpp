@@ -30,19 +30,22 @@ float tangential_speed(const Body& a, const Body& b, const Contact& contact) {
   return glm::dot(velocity_b - velocity_a, right_perpendicular(contact.normal));
 }
 
-// The contact's coefficients from its bodies' materials by the world's mixing rules.
+// The contact's coefficients from its shapes' materials (its bodies', unless compound) by the
+// world's mixing rules.
 void mix_materials(const Body& a, const Body& b, const WorldSettings& settings, Contact& contact) {
-  contact.static_friction = mix_friction(a.material.static_friction, b.material.static_friction,
+  const Material& material_a = material_of(a, contact.child_a);
+  const Material& material_b = material_of(b, contact.child_b);
+  contact.static_friction = mix_friction(material_a.static_friction, material_b.static_friction,
                                          settings.friction_mixing);
-  contact.dynamic_friction = mix_friction(a.material.dynamic_friction,
-                                          b.material.dynamic_friction, settings.friction_mixing);
+  contact.dynamic_friction = mix_friction(material_a.dynamic_friction,
+                                          material_b.dynamic_friction, settings.friction_mixing);
   // Mixing can put dynamic above static (e.g. root-sum-squares never does, but a custom
   // rule might); Coulomb's model needs static >= dynamic.
   if (contact.dynamic_friction > contact.static_friction) {
     contact.dynamic_friction = contact.static_friction;
   }
   contact.restitution =
-      mix_restitution(a.material.restitution, b.material.restitution, settings.restitution_mixing);
+      mix_restitution(material_a.restitution, material_b.restitution, settings.restitution_mixing);
 }
 
 // A kept point that bounced or was caught last step drops its impulses: a collision's impulse
@@ -123,16 +126,19 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
   };
 
   int point_total = 0;
-  for (const BodyPair& pair : pairs) {
-    const Body& a = bodies[pair.first];
-    const Body& b = bodies[pair.second];
-    while (read < old_size() &&
-           (old_at(read).body_a.index < pair.first ||
-            (old_at(read).body_a.index == pair.first && old_at(read).body_b.index < pair.second))) {
-      ++read;
-    }
-    const bool touched_before =
-        read < old_size() && old_at(read).body_a == a.id && old_at(read).body_b == b.id;
+  // One pair of shapes: shape `child_a` of `a` against shape `child_b` of `b`.
+  auto update_pair = [&](const Body& a, const Body& b, std::uint16_t child_a, std::uint16_t child_b,
+                         float margin) {
+    auto before = [&](const Contact& old) {
+      if (old.body_a.index != a.id.index) return old.body_a.index < a.id.index;
+      if (old.body_b.index != b.id.index) return old.body_b.index < b.id.index;
+      if (old.child_a != child_a) return old.child_a < child_a;
+      return old.child_b < child_b;
+    };
+    while (read < old_size() && before(old_at(read))) ++read;
+    const bool touched_before = read < old_size() && old_at(read).body_a == a.id &&
+                                old_at(read).body_b == b.id && old_at(read).child_a == child_a &&
+                                old_at(read).child_b == child_b;
     if (touched_before && may_recycle(a, b, old_at(read), settings.contact_recycle_distance,
                                       settings.speculative_margin)) {
       const std::size_t old_index = read;
@@ -142,7 +148,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       if (is_ghost(a, b, contact, settings, dt)) {
         // Its slot is left to the next contact placed (or dropped when the list ends).
         if (spilled) contacts.pop_back();
-        continue;
+        return;
       }
       contact.recycled = true;
       forget_bounced_impulses(contact);
@@ -150,17 +156,19 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       point_total += contact.point_count;
       if (visitor) visitor->visit(write, contact);
       ++write;
-      continue;
+      return;
     }
-    const float margin = settings.speculative_margin > 0.0f && a.speculative && b.speculative
-                             ? settings.speculative_margin + reach[pair.first] + reach[pair.second]
-                             : 0.0f;
-    const Manifold manifold = collide(a.shape, a.transform, b.shape, b.transform, margin);
-    if (manifold.point_count == 0) continue;
+    const Manifold manifold = a.compound || b.compound
+                                  ? collide(shape_of(a, child_a), shape_transform(a, child_a),
+                                            shape_of(b, child_b), shape_transform(b, child_b), margin)
+                                  : collide(a.shape, a.transform, b.shape, b.transform, margin);
+    if (manifold.point_count == 0) return;
 
     Contact contact;
     contact.body_a = a.id;
     contact.body_b = b.id;
+    contact.child_a = child_a;
+    contact.child_b = child_b;
     contact.normal = manifold.normal;
     contact.point_count = manifold.point_count;
     for (int i = 0; i < manifold.point_count; ++i) {
@@ -168,7 +176,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       contact.points[i].depth = manifold.points[i].depth;
       contact.points[i].feature_id = manifold.points[i].feature_id;
     }
-    if (is_ghost(a, b, contact, settings, dt)) continue;
+    if (is_ghost(a, b, contact, settings, dt)) return;
     mix_materials(a, b, settings, contact);
     remember_manifold_pose(a, b, contact);
     if (touched_before) {
@@ -195,6 +203,33 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
     placed = contact;
     if (visitor) visitor->visit(write, placed);
     ++write;
+  };
+
+  for (const BodyPair& pair : pairs) {
+    const Body& a = bodies[pair.first];
+    const Body& b = bodies[pair.second];
+    const float margin = settings.speculative_margin > 0.0f && a.speculative && b.speculative
+                             ? settings.speculative_margin + reach[pair.first] + reach[pair.second]
+                             : 0.0f;
+    if (!a.compound && !b.compound) {
+      update_pair(a, b, 0, 0, margin);
+      continue;
+    }
+    // A compound body: every pair of shapes whose layers meet and whose bounds come within the
+    // margin, in (A's shape, B's shape) order.
+    const int count_a = shape_count_of(a);
+    const int count_b = shape_count_of(b);
+    for (int i = 0; i < count_a; ++i) {
+      const Aabb bounds_a = compute_aabb(shape_of(a, i), shape_transform(a, i));
+      for (int k = 0; k < count_b; ++k) {
+        if ((layers_of(a, i) & layers_of(b, k)) == 0) continue;
+        Aabb bounds_b = compute_aabb(shape_of(b, k), shape_transform(b, k));
+        bounds_b.lower -= vec2(margin);
+        bounds_b.upper += vec2(margin);
+        if (!bounds_a.overlaps(bounds_b)) continue;
+        update_pair(a, b, static_cast<std::uint16_t>(i), static_cast<std::uint16_t>(k), margin);
+      }
+    }
   }
   if (!spilled) contacts.resize(write);
   return point_total;

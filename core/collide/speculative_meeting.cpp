@@ -19,18 +19,17 @@ struct RoundedOutline {
   float radius = 0.0f;  // metres
 };
 
-RoundedOutline outline_of(const Body& body, vec2 origin) {
+RoundedOutline outline_of(const Shape& shape, const Transform& transform, vec2 origin) {
   RoundedOutline outline;
-  const Transform& transform = body.transform;
   const vec2 centre = transform.position - origin;
-  switch (body.shape.type()) {
+  switch (shape.type()) {
     case ShapeType::Circle:
       outline.vertices[0] = centre;
       outline.count = 1;
-      outline.radius = body.shape.circle().radius;
+      outline.radius = shape.circle().radius;
       break;
     case ShapeType::Box: {
-      const vec2 half = body.shape.box().half_extents;
+      const vec2 half = shape.box().half_extents;
       outline.vertices[0] = centre + vec2(-half.x, -half.y);
       outline.vertices[1] = centre + vec2(half.x, -half.y);
       outline.vertices[2] = centre + vec2(half.x, half.y);
@@ -39,21 +38,21 @@ RoundedOutline outline_of(const Body& body, vec2 origin) {
       break;
     }
     case ShapeType::Polygon:
-      outline.count = body.shape.polygon().count;
+      outline.count = shape.polygon().count;
       for (int i = 0; i < outline.count; ++i) {
-        outline.vertices[i] = centre + transform.rotation.rotate(body.shape.polygon().vertices[i]);
+        outline.vertices[i] = centre + transform.rotation.rotate(shape.polygon().vertices[i]);
       }
-      outline.radius = body.shape.polygon().rounding;
+      outline.radius = shape.polygon().rounding;
       break;
     case ShapeType::Capsule:
-      outline.vertices[0] = centre + transform.rotation.rotate(body.shape.capsule().center1);
-      outline.vertices[1] = centre + transform.rotation.rotate(body.shape.capsule().center2);
+      outline.vertices[0] = centre + transform.rotation.rotate(shape.capsule().center1);
+      outline.vertices[1] = centre + transform.rotation.rotate(shape.capsule().center2);
       outline.count = 2;
-      outline.radius = body.shape.capsule().radius;
+      outline.radius = shape.capsule().radius;
       break;
     case ShapeType::Segment:
-      outline.vertices[0] = centre + transform.rotation.rotate(body.shape.segment().point1);
-      outline.vertices[1] = centre + transform.rotation.rotate(body.shape.segment().point2);
+      outline.vertices[0] = centre + transform.rotation.rotate(shape.segment().point1);
+      outline.vertices[1] = centre + transform.rotation.rotate(shape.segment().point2);
       outline.count = 2;
       break;
   }
@@ -136,18 +135,22 @@ PredictedMotion predict_motion(const Body& body, const WorldSettings& settings, 
   }
   // Discs turn in place and boxes never turn: only a polygon's corners and a capsule's or
   // segment's ends sweep.
-  if (settings.enable_rotation && body.shape.type() != ShapeType::Circle &&
-      body.shape.type() != ShapeType::Box) {
+  if (settings.enable_rotation && body.compound) {
+    motion.turn_reach = std::fabs(body.angular_velocity) * body.extent * h;
+  } else if (settings.enable_rotation && body.shape.type() != ShapeType::Circle &&
+             body.shape.type() != ShapeType::Box) {
     motion.turn_reach = std::fabs(body.angular_velocity) * rotation_reach(body.shape) * h;
   }
   return motion;
 }
 
-float closest_approach(const Body& a, const PredictedMotion& motion_a, const Body& b,
-                       const PredictedMotion& motion_b, float h, float enough) {
-  const vec2 origin = a.transform.position;
-  const RoundedOutline outline_a = outline_of(a, origin);
-  const RoundedOutline outline_b = outline_of(b, origin);
+float closest_approach(const Shape& shape_a, const Transform& transform_a,
+                       const PredictedMotion& motion_a, const Shape& shape_b,
+                       const Transform& transform_b, const PredictedMotion& motion_b, float h,
+                       float enough) {
+  const vec2 origin = transform_a.position;
+  const RoundedOutline outline_a = outline_of(shape_a, transform_a, origin);
+  const RoundedOutline outline_b = outline_of(shape_b, transform_b, origin);
   const float radii = outline_a.radius + outline_b.radius;
   const vec2 relative_velocity = motion_b.velocity - motion_a.velocity;
   auto distance_at = [&](float t) {
@@ -201,7 +204,9 @@ bool is_ghost_contact(const Body& a, const PredictedMotion& motion_a, const Body
   }
   if (!closes_within_step) return false;
   const float reach = motion_a.turn_reach + motion_b.turn_reach;
-  return closest_approach(a, motion_a, b, motion_b, h, reach) > reach;
+  return closest_approach(shape_of(a, contact.child_a), shape_transform(a, contact.child_a), motion_a,
+                          shape_of(b, contact.child_b), shape_transform(b, contact.child_b), motion_b,
+                          h, reach) > reach;
 }
 
 }  // namespace impulse2d

@@ -15,7 +15,7 @@
 /// each rotating body's shape is grown by the distance its farthest point turns through
 /// (|w| r h), which can only make a meeting more likely.
 
-#include "core/solver/body_state.h"
+#include "core/solver/body_shapes.h"
 #include "core/contact.h"
 #include "core/settings.h"
 
@@ -32,12 +32,14 @@ struct PredictedMotion {
 /// (static, asleep).
 PredictedMotion predict_motion(const Body& body, const WorldSettings& settings, float h);
 
-/// Smallest distance (metres, 0 when they overlap) between the shapes of `a` and `b` while
-/// they translate at `motion_a.velocity` and `motion_b.velocity` for `h` seconds from their
-/// current transforms; the search stops as soon as it finds a distance at or below `enough`
-/// (metres), which it then returns.
-float closest_approach(const Body& a, const PredictedMotion& motion_a, const Body& b,
-                       const PredictedMotion& motion_b, float h, float enough = 0.0f);
+/// Smallest distance (metres, 0 when they overlap) between `shape_a` at `transform_a` and
+/// `shape_b` at `transform_b` while they translate at `motion_a.velocity` and
+/// `motion_b.velocity` for `h` seconds; the search stops as soon as it finds a distance at or
+/// below `enough` (metres), which it then returns.
+float closest_approach(const Shape& shape_a, const Transform& transform_a,
+                       const PredictedMotion& motion_a, const Shape& shape_b,
+                       const Transform& transform_b, const PredictedMotion& motion_b, float h,
+                       float enough = 0.0f);
 
 /// True when `contact` is a ghost: every point is apart (depth < 0), the linearised constraint
 /// would stop at least one point within `h` seconds (its gap closes at the predicted normal

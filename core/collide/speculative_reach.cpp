@@ -39,9 +39,10 @@ void compute_speculative_reach(const std::vector<Body>& bodies,
     const float gravity_speed =
         body.type == BodyType::Dynamic ? gravity * std::fabs(body.gravity_scale) * dt : 0.0f;
     const float speed = std::sqrt(length_squared(body.linear_velocity)) + gravity_speed;
-    const float turning = settings.enable_rotation
-                              ? std::fabs(body.angular_velocity) * rotation_reach(body.shape)
-                              : 0.0f;
+    const float turning =
+        settings.enable_rotation
+            ? std::fabs(body.angular_velocity) * (body.compound ? body.extent : rotation_reach(body.shape))
+            : 0.0f;
     reach[i] = (speed + turning) * dt;
   }
 }

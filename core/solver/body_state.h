@@ -4,6 +4,8 @@
 
 #include "core/body.h"
 
+#include <vector>
+
 namespace impulse2d {
 
 /// The state the world keeps for one body. Users read it through `World::body(id)`.
@@ -37,6 +39,7 @@ struct Body {
   /// `shape_rounding` of the shape (m): how far its surface lies outside its core, read when
   /// each contact is prepared.
   float rounding = 0.0f;
+  bool compound = false;         ///< its shapes are `children` (and not `shape`)
   bool speculative = true;       ///< its pairs get speculative contacts
   std::uint32_t collision_layers = 1;  ///< bitmask
   Aabb aabb;                     ///< world bounds, updated each step
@@ -47,15 +50,32 @@ struct Body {
   bool sensor_detects_static = false; ///< as a sensor: also reports static bodies
   bool enable_sensor_events = true;   ///< sensors see it
   Material material;          ///< what it is made of
-  Shape shape;                ///< in body-local coordinates, centroid at the origin
+  /// In body-local coordinates, centroid at the origin; a compound body's first shape (for
+  /// the rules that look at one shape's kind: never its geometry, which `children` holds).
+  Shape shape;
+  /// A compound body's shapes, placed in the body's frame; empty for a body of one shape.
+  std::vector<BodyShape> children;
 };
 
 /// `body`'s core point (body frame, metres) under its surface point `surface` (world metres),
 /// where `outward` (unit, world) is the surface's normal there: a circle's centre (exactly
-/// the origin), else the surface point moved in by the body's rounding.
-inline vec2 core_anchor(const Body& body, vec2 surface, vec2 outward) {
+/// the origin), else the surface point moved in by the body's rounding. For a compound body,
+/// that of its shape `child`.
+inline vec2 core_anchor(const Body& body, int child, vec2 surface, vec2 outward) {
+  if (body.compound) {
+    const BodyShape& part = body.children[static_cast<std::size_t>(child)];
+    if (part.shape.type() == ShapeType::Circle) return part.local.position;
+    return body.transform.apply_inverse(surface - outward * shape_rounding(part.shape));
+  }
   if (body.shape.type() == ShapeType::Circle) return vec2(0.0f, 0.0f);
   return body.transform.apply_inverse(surface - outward * body.rounding);
+}
+
+/// How far (m) the surface of `body`'s shape `child` (its one shape when not compound) lies
+/// outside its core (`shape_rounding`).
+inline float rounding_of(const Body& body, int child) {
+  return body.compound ? shape_rounding(body.children[static_cast<std::size_t>(child)].shape)
+                       : body.rounding;
 }
 
 /// The view of `body` that `World::body` hands out.
@@ -82,6 +102,10 @@ inline BodyView view_of(const Body& body) {
   view.aabb = body.aabb;
   view.user_data = body.user_data;
   view.shape = &body.shape;
+  if (body.compound) {
+    view.shapes = body.children.data();
+    view.shape_count = static_cast<int>(body.children.size());
+  }
   view.material = &body.material;
   view.is_sensor = body.is_sensor;
   return view;

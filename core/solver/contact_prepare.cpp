@@ -36,7 +36,7 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
   float fastest_slip = 0.0f;  // m/s
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
-    point.rounding = a.rounding + b.rounding;
+    point.rounding = rounding_of(a, contact.child_a) + rounding_of(b, contact.child_b);
     if (contact.recycled) {
       set_recycled_anchors(a, b, contact, point);
     } else {
@@ -45,8 +45,8 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
       // Surface points: A's lies depth/2 along +n from the midpoint, B's along -n; the core
       // points a further rounding in.
       const vec2 half_depth = normal * (0.5f * point.depth);
-      point.local_anchor_a = core_anchor(a, point.point + half_depth, normal);
-      point.local_anchor_b = core_anchor(b, point.point - half_depth, -normal);
+      point.local_anchor_a = core_anchor(a, contact.child_a, point.point + half_depth, normal);
+      point.local_anchor_b = core_anchor(b, contact.child_b, point.point - half_depth, -normal);
     }
     const vec2 velocity = relative_velocity(a, b, point);
     const float slip = glm::dot(velocity, tangent);

@@ -44,9 +44,10 @@ float sine_between(const Rotation& p, const Rotation& q) {
   return p.sine * q.cosine - p.cosine * q.sine;
 }
 
-// True when the body's contacts may keep their manifolds at all.
+// True when the body's contacts may keep their manifolds at all (a compound body's are
+// found afresh every step).
 bool allows_recycling(const Body& body) {
-  return body.speculative && !body.is_bullet;
+  return body.speculative && !body.is_bullet && !body.compound;
 }
 
 }  // namespace

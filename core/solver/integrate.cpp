@@ -61,7 +61,7 @@ void integrate_positions(std::vector<Body>& bodies, const std::vector<std::uint8
 
 void update_bounds(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (alive[i]) bodies[i].aabb = compute_aabb(bodies[i].shape, bodies[i].transform);
+    if (alive[i]) bodies[i].aabb = body_aabb(bodies[i]);
   }
 }
 

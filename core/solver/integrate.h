@@ -2,7 +2,7 @@
 /// @file integrate.h
 /// Moves bodies through time: velocities from forces and gravity, positions from velocities.
 
-#include "core/solver/body_state.h"
+#include "core/solver/body_shapes.h"
 #include "core/settings.h"
 
 #include <cstdint>

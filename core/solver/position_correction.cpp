@@ -50,8 +50,8 @@ float correct_positions_nonlinear(const std::vector<Contact>& contacts, std::vec
         const vec2 core_b = b.transform.apply(point.local_anchor_b);
         const float separation = glm::dot(core_b - core_a, normal) - point.rounding;
         // The surface points: each core point moved out by its body's rounding.
-        const vec2 surface_a = core_a + normal * a.rounding;
-        const vec2 surface_b = core_b - normal * b.rounding;
+        const vec2 surface_a = core_a + normal * rounding_of(a, contact.child_a);
+        const vec2 surface_b = core_b - normal * rounding_of(b, contact.child_b);
         deepest = std::max(deepest, -separation);
         const float error = std::clamp(settings.correction_percent * (separation + settings.slop),
                                        -settings.max_correction, 0.0f);

@@ -22,11 +22,6 @@ double elapsed_ms(Clock::time_point since) {
 
 bool is_moving(const Body& body) { return body.type != BodyType::Static && body.awake; }
 
-bool pair_less(const Contact& a, const Contact& b) {
-  return a.body_a.index < b.body_a.index ||
-         (a.body_a.index == b.body_a.index && a.body_b.index < b.body_b.index);
-}
-
 // Moves the contacts of `from` that `leaves` selects into `into`, both lists staying in pair
 // order (a merge through `scratch`); the others stay in `from`, in order.
 template <class Leaves>
@@ -41,7 +36,7 @@ void move_contacts(std::vector<Contact>& from, std::vector<Contact>& into,
       ++stayed;
       continue;
     }
-    while (merged < into.size() && pair_less(into[merged], from[i])) scratch.push_back(into[merged++]);
+    while (merged < into.size() && contact_less(into[merged], from[i])) scratch.push_back(into[merged++]);
     scratch.push_back(from[i]);
   }
   if (stayed == from.size()) return;

@@ -7,7 +7,7 @@
 #include "core/collide/continuous.h"
 #include "core/contact.h"
 #include "core/settings.h"
-#include "core/solver/body_state.h"
+#include "core/solver/body_shapes.h"
 #include "core/solver/joint_solver.h"
 #include "core/solver/shock_propagation.h"
 #include "core/solver/sleep.h"

@@ -27,6 +27,7 @@ constexpr SceneFrames kSceneFrames[] = {
     {"newtons_cradle", 60, 180},   {"bullet", 20, 90},        {"ball_pit", 120, 600},
     {"random_polygons", 120, 600}, {"platformer", 470, 1110}, {"push", 60, 120},
     {"heavy_on_light", 30, 300},   {"capsules", 60, 480},     {"terrain_chain", 90, 720},
+    {"compound", 60, 480},
 };
 
 /// The scenes with joints (issue 30): the same frames, their motion overlays with the joints'.
