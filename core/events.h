@@ -17,11 +17,11 @@
 
 namespace impulse2d {
 
-/// A shape: its body and its index on the body. A body has one shape today, so `index` is
-/// always 0; events name shapes so that they stay right when bodies get several.
+/// A shape: its body and its index on the body (0 for a body of one shape; for a compound
+/// body, its place in the list given to `World::create_body`).
 struct ShapeId {
   BodyId body;              ///< the body the shape belongs to
-  std::uint32_t index = 0;  ///< the shape's index on its body (0)
+  std::uint32_t index = 0;  ///< the shape's index on its body
   /// Shapes are equal when they are the same shape of the same body.
   bool operator==(const ShapeId& other) const { return body == other.body && index == other.index; }
   /// Opposite of ==.

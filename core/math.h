@@ -65,4 +65,13 @@ struct Transform {
   vec2 apply_inverse(vec2 world_point) const { return rotation.inverse_rotate(world_point - position); }
 };
 
+/// `outer` after `inner`: the frame `inner` (given in `outer`'s frame) in `outer`'s parent's
+/// coordinates (a compound body's shape placed in the world).
+inline Transform compose(const Transform& outer, const Transform& inner) {
+  const Rotation& p = outer.rotation;
+  const Rotation& q = inner.rotation;
+  return Transform{outer.apply(inner.position),
+                   Rotation{p.cosine * q.cosine - p.sine * q.sine, p.sine * q.cosine + p.cosine * q.sine}};
+}
+
 }  // namespace impulse2d

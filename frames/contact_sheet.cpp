@@ -67,7 +67,8 @@ std::optional<std::pair<float, float>> visible_extent(const World& world,
   std::optional<std::pair<float, float>> extent;
   for (const BodyId id : world.body_ids()) {
     const BodyView body = world.body(id);
-    const Aabb box = compute_aabb(*body.shape, body.transform);
+    // A compound body's bounds cover all its shapes (kept by the world).
+    const Aabb box = body.shape_count > 0 ? body.aabb : compute_aabb(*body.shape, body.transform);
     if (box.upper.x < low.x || box.lower.x > high.x || box.upper.y < low.y || box.lower.y > high.y) {
       continue;
     }

@@ -98,7 +98,8 @@ Aabb world_bounds(const World& world) {
   Aabb total{vec2(-1.0f, -1.0f), vec2(1.0f, 1.0f)};
   for (const BodyId id : world.body_ids()) {
     const BodyView body = world.body(id);
-    const Aabb box = compute_aabb(*body.shape, body.transform);
+    // A compound body's bounds cover all its shapes (kept by the world).
+    const Aabb box = body.shape_count > 0 ? body.aabb : compute_aabb(*body.shape, body.transform);
     if (!any) {
       total = box;
       any = true;

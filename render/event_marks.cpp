@@ -6,6 +6,7 @@
 #include "render/primitive_renderer.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace impulse2d::render {
 namespace {
@@ -23,18 +24,32 @@ bool contact_point(const Contact& contact, vec2& point) {
   return true;
 }
 
-// Where the pair (a, b) touches: the mean of its contact points, awake or asleep; without a
+// Shape `index` of `body` and where it lies in the world (a compound body's shape is placed by
+// its local transform).
+std::pair<const Shape*, Transform> placed_shape(const BodyView& body, std::uint32_t index) {
+  if (body.shape_count == 0 || index >= static_cast<std::uint32_t>(body.shape_count)) {
+    return {body.shape, body.transform};
+  }
+  return {&body.shapes[index].shape, compose(body.transform, body.shapes[index].local)};
+}
+
+// Where shapes a and b touch: the mean of their contact's points, awake or asleep; without a
 // contact, midway between the closest points of the two shapes. Nothing when a body is gone.
-bool touch_point(const World& world, BodyId a, BodyId b, vec2& point) {
+bool touch_point(const World& world, ShapeId a, ShapeId b, vec2& point) {
   for (const std::vector<Contact>* contacts : {&world.contacts(), &world.sleeping_contacts()}) {
     for (const Contact& contact : *contacts) {
-      if (contact.body_a == a && contact.body_b == b && contact_point(contact, point)) return true;
+      if (contact.body_a == a.body && contact.body_b == b.body && contact.child_a == a.index &&
+          contact.child_b == b.index && contact_point(contact, point)) {
+        return true;
+      }
     }
   }
-  if (!world.is_valid(a) || !world.is_valid(b)) return false;
-  const BodyView body_a = world.body(a);
-  const BodyView body_b = world.body(b);
-  const ShapeDistance distance = shape_distance(*body_a.shape, body_a.transform, *body_b.shape, body_b.transform);
+  if (!world.is_valid(a.body) || !world.is_valid(b.body)) return false;
+  const BodyView body_a = world.body(a.body);
+  const BodyView body_b = world.body(b.body);
+  const auto [shape_a, at_a] = placed_shape(body_a, a.index);
+  const auto [shape_b, at_b] = placed_shape(body_b, b.index);
+  const ShapeDistance distance = shape_distance(*shape_a, at_a, *shape_b, at_b);
   point = distance.distance > 0.0f ? 0.5f * (distance.point_a + distance.point_b)
                                    : 0.5f * (body_a.transform.position + body_b.transform.position);
   return true;
@@ -71,10 +86,10 @@ std::vector<EventMark> last_step_event_marks(const World& world, std::int64_t st
   const SensorEvents& sensor = world.sensor_events();
   vec2 point;
   for (const ContactBeginTouchEvent& event : contact.begin) {
-    if (touch_point(world, event.body_a, event.body_b, point)) marks.push_back({EventKind::touch_begin, point, 0.0f, step});
+    if (touch_point(world, event.shape_a, event.shape_b, point)) marks.push_back({EventKind::touch_begin, point, 0.0f, step});
   }
   for (const ContactEndTouchEvent& event : contact.end) {
-    if (touch_point(world, event.body_a, event.body_b, point)) marks.push_back({EventKind::touch_end, point, 0.0f, step});
+    if (touch_point(world, event.shape_a, event.shape_b, point)) marks.push_back({EventKind::touch_end, point, 0.0f, step});
   }
   for (const ContactHitEvent& event : contact.hit) {
     marks.push_back({EventKind::hit, event.point, event.approach_speed, step});

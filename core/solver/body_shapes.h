@@ -10,14 +10,6 @@
 
 namespace impulse2d {
 
-/// `outer` after `inner`: the frame `inner` (given in `outer`'s frame) in world coordinates.
-inline Transform compose(const Transform& outer, const Transform& inner) {
-  const Rotation& p = outer.rotation;
-  const Rotation& q = inner.rotation;
-  return Transform{outer.apply(inner.position),
-                   Rotation{p.cosine * q.cosine - p.sine * q.sine, p.sine * q.cosine + p.cosine * q.sine}};
-}
-
 /// Number of shapes `body` has (1 unless compound).
 inline int shape_count_of(const Body& body) {
   return body.compound ? static_cast<int>(body.children.size()) : 1;

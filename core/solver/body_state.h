@@ -71,6 +71,18 @@ inline vec2 core_anchor(const Body& body, int child, vec2 surface, vec2 outward)
   return body.transform.apply_inverse(surface - outward * body.rounding);
 }
 
+/// True when `body`'s shape `child` (its one shape when not compound) is a circle.
+inline bool is_circle(const Body& body, int child) {
+  return (body.compound ? body.children[static_cast<std::size_t>(child)].shape : body.shape).type() ==
+         ShapeType::Circle;
+}
+
+/// Where the centre of `body`'s shape `child` lies in the body's frame (metres): the origin
+/// unless the body is compound.
+inline vec2 local_centre(const Body& body, int child) {
+  return body.compound ? body.children[static_cast<std::size_t>(child)].local.position : vec2(0.0f, 0.0f);
+}
+
 /// How far (m) the surface of `body`'s shape `child` (its one shape when not compound) lies
 /// outside its core (`shape_rounding`).
 inline float rounding_of(const Body& body, int child) {

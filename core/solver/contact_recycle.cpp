@@ -44,10 +44,9 @@ float sine_between(const Rotation& p, const Rotation& q) {
   return p.sine * q.cosine - p.cosine * q.sine;
 }
 
-// True when the body's contacts may keep their manifolds at all (a compound body's are
-// found afresh every step).
+// True when the body's contacts may keep their manifolds at all.
 bool allows_recycling(const Body& body) {
-  return body.speculative && !body.is_bullet && !body.compound;
+  return body.speculative && !body.is_bullet;
 }
 
 }  // namespace
@@ -92,14 +91,22 @@ void recycle_manifold(const Body& a, const Body& b, Contact& contact) {
   const vec2 normal = contact.normal;
   // A circle's point stays where it was relative to its centre as the circle turns (the normal
   // is kept): its offset is turned by the rotation it was found at, not the current one.
-  const bool round_a = a.shape.type() == ShapeType::Circle;
-  const bool round_b = b.shape.type() == ShapeType::Circle;
+  // (A compound's circle: its centre moves with the body, the point is kept where it was
+  // relative to that centre.)
+  const bool round_a = is_circle(a, contact.child_a);
+  const bool round_b = is_circle(b, contact.child_b);
+  const vec2 centre_a = local_centre(a, contact.child_a);
+  const vec2 centre_b = local_centre(b, contact.child_b);
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
-    const vec2 on_a = round_a ? xa.position + contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a)
-                              : xa.apply(point.recycle_anchor_a);
-    const vec2 on_b = round_b ? xb.position + contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b)
-                              : xb.apply(point.recycle_anchor_b);
+    const vec2 on_a =
+        !round_a ? xa.apply(point.recycle_anchor_a)
+        : a.compound ? xa.apply(centre_a) + contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a - centre_a)
+                     : xa.position + contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a);
+    const vec2 on_b =
+        !round_b ? xb.apply(point.recycle_anchor_b)
+        : b.compound ? xb.apply(centre_b) + contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b - centre_b)
+                     : xb.position + contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
     point.point = 0.5f * (on_a + on_b);
     point.depth = -(point.base_separation + glm::dot(on_b - on_a, normal));
   }

@@ -49,11 +49,16 @@ inline void set_recycled_anchors(const Body& a, const Body& b, const Contact& co
   point.anchor_a = contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a);
   point.anchor_b = contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
   const vec2 normal = contact.normal;
-  const bool round_a = a.shape.type() == ShapeType::Circle;
-  const bool round_b = b.shape.type() == ShapeType::Circle;
-  // The core points (see `core_anchor`) under the ends of the offsets.
-  vec2 core_a = round_a ? a.transform.position : a.transform.position + point.anchor_a - normal * a.rounding;
-  vec2 core_b = round_b ? b.transform.position : b.transform.position + point.anchor_b + normal * b.rounding;
+  const bool round_a = is_circle(a, contact.child_a);
+  const bool round_b = is_circle(b, contact.child_b);
+  // The core points (see `core_anchor`) under the ends of the offsets: a circle's centre.
+  auto centre_of = [](const Body& body, int child) {
+    return body.compound ? body.transform.apply(local_centre(body, child)) : body.transform.position;
+  };
+  vec2 core_a = round_a ? centre_of(a, contact.child_a)
+                        : a.transform.position + point.anchor_a - normal * rounding_of(a, contact.child_a);
+  vec2 core_b = round_b ? centre_of(b, contact.child_b)
+                        : b.transform.position + point.anchor_b + normal * rounding_of(b, contact.child_b);
   // B's core (or, for a circle B, A's) moves along the normal so that the separation starts
   // the step at the recycled depth; two circles' centres give their separation exactly.
   const float excess = glm::dot(core_b - core_a, normal) - point.rounding + point.depth;
@@ -62,8 +67,8 @@ inline void set_recycled_anchors(const Body& a, const Body& b, const Contact& co
   } else if (!round_a) {
     core_a += normal * excess;
   }
-  point.local_anchor_a = round_a ? vec2(0.0f, 0.0f) : a.transform.apply_inverse(core_a);
-  point.local_anchor_b = round_b ? vec2(0.0f, 0.0f) : b.transform.apply_inverse(core_b);
+  point.local_anchor_a = round_a ? local_centre(a, contact.child_a) : a.transform.apply_inverse(core_a);
+  point.local_anchor_b = round_b ? local_centre(b, contact.child_b) : b.transform.apply_inverse(core_b);
 }
 
 }  // namespace impulse2d

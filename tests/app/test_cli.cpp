@@ -294,7 +294,7 @@ INSTANTIATE_TEST_SUITE_P(
             "render bad.json", 2,
             "bad.json: bodies[0].shape.radius: expected a number, got an array"},
         BadInput{"MissingField", R"({"bodies": [{"position": [0, 0]}]})", "render bad.json", 2,
-                 "bad.json: bodies[0]: missing field \"shape\""},
+                 "bad.json: bodies[0]: give a body either \"shape\" (one shape) or \"shapes\""},
         BadInput{
             "NegativeRadius",
             R"({"bodies": [{"shape": {"type": "circle", "radius": -0.5}, "position": [0, 0]}]})",

@@ -177,14 +177,14 @@ TEST(Snapshot, CorruptBuffersAreErrors) {
     refused(std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(length)), "truncated");
   }
   std::vector<std::uint8_t> version = bytes;
-  version[4] = 4;
-  refused(version, "version 4");
-  // Versions 1 (before capsules, segments and rounded polygons) and 2 (before chain links) are
-  // refused cleanly too.
-  for (std::uint8_t old : {1, 2}) {
+  version[4] = 5;
+  refused(version, "version 5");
+  // Versions 1 (before capsules, segments and rounded polygons), 2 (before chain links) and 3
+  // (before compound bodies) are refused cleanly too.
+  for (std::uint8_t old : {1, 2, 3}) {
     std::vector<std::uint8_t> old_version = bytes;
     old_version[4] = old;
-    refused(old_version, ("snapshot version " + std::to_string(old) + ", this build reads version 3").c_str());
+    refused(old_version, ("snapshot version " + std::to_string(old) + ", this build reads version 4").c_str());
   }
   std::vector<std::uint8_t> magic = bytes;
   magic[0] ^= 0xFF;

@@ -214,8 +214,72 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"FollowAndBounds",
                 R"({"bodies": [], "camera": {"follow": 0, "pixels_per_metre": 40,
                                              "bounds": [[0, 0], [1, 1]]}})",
-                "camera: give one of \"bounds\""}),
+                "camera: give one of \"bounds\""},
+        BadFile{"ShapeAndShapes",
+                scene_with_body(R"({"position": [0, 0], "shape": {"type": "circle", "radius": 1},
+                                    "shapes": [{"type": "circle", "radius": 1}]})"),
+                "bodies[0]: give a body either \"shape\""},
+        BadFile{"EmptyShapes", scene_with_body(R"({"position": [0, 0], "shapes": []})"),
+                "bodies[0].shapes"},
+        BadFile{"CompoundChain",
+                scene_with_body(R"({"type": "static", "position": [0, 0], "shapes": [
+                    {"type": "circle", "radius": 1},
+                    {"type": "chain", "points": [[0, 0], [1, 0]]}]})"),
+                "bodies[0].shapes[1].type: a chain cannot be one of a body's shapes"},
+        BadFile{"CompoundBadRadius",
+                scene_with_body(R"({"position": [0, 0], "shapes": [
+                    {"type": "circle", "radius": 1}, {"type": "circle", "radius": -1}]})"),
+                "bodies[0].shapes[1].radius"},
+        BadFile{"CompoundOnlySegments",
+                scene_with_body(R"({"position": [0, 0], "shapes": [
+                    {"type": "segment", "point1": [0, 0], "point2": [1, 0]}]})"),
+                "bodies[0].shapes: a dynamic body needs a shape with area"},
+        BadFile{"CompoundWeightlessShape",
+                scene_with_body(R"({"position": [0, 0], "shapes": [
+                    {"type": "circle", "radius": 1},
+                    {"type": "circle", "radius": 1, "position": [2, 0], "material": "Static"}]})"),
+                "bodies[0].shapes[1].material: a dynamic body's shapes need density > 0"},
+        BadFile{"CompoundUnknownField",
+                scene_with_body(R"({"position": [0, 0], "shapes": [
+                    {"type": "circle", "radius": 1, "offset": [1, 0]}]})"),
+                "bodies[0].shapes[0]: unknown field \"offset\""}),
     [](const auto& test) { return std::string(test.param.name); });
+
+TEST(SceneFile, CompoundBodiesOfTheManualLand) {
+  // The manual's example (docs/scene_files.md#shapes) on a floor: the hammer's centre of mass
+  // lies towards its metal head, the ledge is one static body of two shapes, and the keel on
+  // layer 2 passes through the floor while the rest of its body lands.
+  const Scene scene = parse_scene(R"({"bodies": [
+    {"name": "hammer", "position": [0, 3],
+     "shapes": [{"type": "oriented_box", "half_extents": [0.06, 0.55], "material": "Wood"},
+                {"type": "oriented_box", "half_extents": [0.3, 0.12], "position": [0, 0.6], "material": "Metal"}]},
+    {"name": "ledge", "type": "static", "position": [4, 0],
+     "shapes": [{"type": "oriented_box", "half_extents": [2, 0.1]},
+                {"type": "oriented_box", "half_extents": [0.1, 1], "position": [1.9, 1]}]},
+    {"name": "ghost_keel", "position": [-4, 2],
+     "shapes": [{"type": "oriented_box", "half_extents": [0.5, 0.25], "position": [0, 0.25]},
+                {"type": "capsule", "center1": [-0.4, 0], "center2": [0.4, 0], "radius": 0.1, "position": [0, -0.2], "layers": 2}]},
+    {"type": "static", "shape": {"type": "box", "half_extents": [20, 0.5]}, "position": [0, -0.5], "material": "Static"}
+  ]})", "compound.json");
+  EXPECT_TRUE(scene.model.polygons);
+  EXPECT_TRUE(scene.model.capsules);
+  SceneRun run(scene, Params{});
+  const std::vector<BodyId> ids = run.world().body_ids();
+  ASSERT_EQ(ids.size(), 4u);
+  const BodyView hammer = run.world().body(ids[0]);
+  // Handle 0.12 x 1.1 of wood (0.3), head 0.6 x 0.24 of metal (1.2) at 0.6: the centre of mass
+  // at 0.6 m_head / (m_handle + m_head) above the handle's centre.
+  const float handle = 0.3f * 0.12f * 1.1f;
+  const float head = 1.2f * 0.6f * 0.24f;
+  EXPECT_NEAR(hammer.transform.position.y, 3.0f + 0.6f * head / (handle + head), 1e-5f);
+  EXPECT_EQ(hammer.shape_count, 2);
+  EXPECT_EQ(run.world().body(ids[1]).shape_count, 2);
+  for (int i = 0; i < 180; ++i) run.step();
+  // The keel's box rests on the floor (its bottom at y = 0); its capsule hangs through it.
+  const BodyView keel = run.world().body(ids[2]);
+  EXPECT_NEAR(keel.aabb.lower.y, -0.3f, 0.02f);
+  EXPECT_GT(keel.transform.position.y, 0.0f);
+}
 
 TEST(SceneFile, ButtonsTheSceneDoesNotHaveAreRejectedBeforeTheRun) {
   const Scene scene =
