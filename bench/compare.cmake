@@ -6,6 +6,7 @@ add_executable(bench_compare
   ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_chart.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_report.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_run.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_scale.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/compare/compare_scene.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/compare/stability.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/compare/world_simulation.cpp)

@@ -28,7 +28,10 @@ std::string write_scaling_chart(const std::string& directory,
     most = std::max(most, result.bodies);
     steps = std::to_string(result.steps);
     data << result.bodies;
-    for (const Outcome& outcome : result.outcomes) data << "," << outcome.ms_per_step;
+    for (const Outcome& outcome : result.outcomes) {
+      data << ",";
+      if (outcome.ran) data << outcome.ms_per_step;  // an empty field: left out at this size
+    }
     data << "\n";
   }
   if (points == 0) {
@@ -49,6 +52,7 @@ std::string write_scaling_chart(const std::string& directory,
   gp << "set terminal pngcairo size 900,620 noenhanced font ',11'\n"
      << "set output OUTPUT\n"
      << "set datafile separator ','\n"
+     << "set datafile missing ''\n"
      << "set logscale xy\nset format x '%g'\nset format y '%g'\n"
      << "set xrange [" << 0.7 * fewest << ":" << 1.4 * most << "]\n"
      << "set grid xtics ytics mxtics mytics lc rgb '#e6e6e6'\n"

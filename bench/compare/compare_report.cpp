@@ -21,7 +21,7 @@ std::string format(const char* pattern, double value) {
 }
 
 std::string ratio(double ours, double theirs) {
-  return theirs > 0.0 ? format("%.2f", ours / theirs) : "-";
+  return ours > 0.0 && theirs > 0.0 ? format("%.2f", ours / theirs) : "-";
 }
 
 // The stability figures as text: sag, side, moved, depth, out ("-" where they do not apply).
@@ -55,6 +55,12 @@ void print_scene_table(std::ostream& out, const std::vector<Contender>& contende
   out << line;
   for (std::size_t e = 0; e < contenders.size(); ++e) {
     const Outcome& outcome = result.outcomes[e];
+    if (!outcome.ran) {
+      std::snprintf(line, sizeof line, "%-24s %9s (left out at this size: --peers-max)\n",
+                    contenders[e].label.c_str(), "skipped");
+      out << line;
+      continue;
+    }
     std::snprintf(line, sizeof line, "%-24s %9.3f", contenders[e].label.c_str(), outcome.ms_per_step);
     out << line;
     for (std::size_t p = 0; p < contenders.size(); ++p) {
@@ -108,6 +114,7 @@ void write_csv(std::ostream& out, const std::vector<Contender>& contenders,
   for (const SceneResult& result : results) {
     for (std::size_t e = 0; e < contenders.size(); ++e) {
       const Outcome& o = result.outcomes[e];
+      if (!o.ran) continue;  // left out at this size
       const Stability& s = o.stability;
       out << result.name << "," << result.bodies << "," << result.steps << ","
           << contenders[e].label << "," << format("%.4f", o.ms_per_step) << ","
@@ -131,6 +138,15 @@ void write_markdown(std::ostream& out, const std::vector<Contender>& contenders,
   for (const SceneResult& result : results) {
     for (std::size_t e = 0; e < contenders.size(); ++e) {
       const Outcome& outcome = result.outcomes[e];
+      if (!outcome.ran) {
+        out << "| " << (e == 0 ? result.name : "") << " | | | " << contenders[e].label
+            << " | skipped (too slow at this size) |";
+        for (const Contender& peer : contenders) {
+          if (is_peer(peer)) out << " |";
+        }
+        out << " | | | | |\n";
+        continue;
+      }
       out << "| " << (e == 0 ? result.name : "") << " | " << (e == 0 ? std::to_string(result.bodies) : "")
           << " | " << (e == 0 ? std::to_string(result.steps) : "") << " | " << contenders[e].label
           << " | " << format("%.3f", outcome.ms_per_step) << " |";

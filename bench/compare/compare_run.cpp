@@ -1,10 +1,13 @@
 /// @file compare_run.cpp
 #include "bench/compare/compare_run.h"
 
+#include <malloc.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <memory>
 
 #include "bench/compare/world_simulation.h"
@@ -83,6 +86,22 @@ void recycle(const CompareScene& scene, lab::LabSimulation& run, long step,
   }
 }
 
+// Bytes malloc has handed out and not taken back: in the arenas plus mmapped blocks.
+double heap_in_use() {
+  const struct mallinfo2 info = mallinfo2();
+  return static_cast<double>(info.uordblks) + static_cast<double>(info.hblkhd);
+}
+
+// The process's resident set, bytes (the second field of /proc/self/statm, in pages); -1 when
+// it cannot be read.
+double resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  long total_pages = 0;
+  long resident_pages = 0;
+  if (!(statm >> total_pages >> resident_pages)) return -1.0;
+  return static_cast<double>(resident_pages) * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   const auto middle = values.begin() + static_cast<long>(values.size() / 2);
@@ -113,11 +132,13 @@ std::vector<Contender> contenders(std::vector<std::string>& notes) {
 }
 
 std::vector<Outcome> run_interleaved(const CompareScene& scene,
-                                     const std::vector<Contender>& contenders, int steps,
-                                     int block) {
+                                     const std::vector<Contender>& contenders,
+                                     const std::vector<bool>& included, int steps, int block) {
   const std::size_t count = contenders.size();
   std::vector<std::unique_ptr<lab::LabSimulation>> runs;
-  for (const Contender& contender : contenders) runs.push_back(make_run(scene, contender.method));
+  for (std::size_t e = 0; e < count; ++e) {
+    runs.push_back(included[e] ? make_run(scene, contenders[e].method) : nullptr);
+  }
   std::vector<std::vector<double>> times(count);
   for (std::vector<double>& list : times) list.reserve(static_cast<std::size_t>(steps));
   std::vector<Outcome> outcomes(count);
@@ -129,6 +150,7 @@ std::vector<Outcome> run_interleaved(const CompareScene& scene,
     const int block_steps = std::min(block, steps - b * block);
     const bool sample = (b + 1) % sample_every == 0 || b + 1 == blocks;
     for (std::size_t e = 0; e < count; ++e) {
+      if (!runs[e]) continue;
       lab::LabSimulation& run = *runs[e];
       for (int s = 0; s < block_steps; ++s) {
         const double start = thread_cpu_ms();
@@ -146,11 +168,32 @@ std::vector<Outcome> run_interleaved(const CompareScene& scene,
     }
   }
   for (std::size_t e = 0; e < count; ++e) {
+    if (!runs[e]) {
+      outcomes[e].ran = false;
+      continue;
+    }
     outcomes[e].ms_per_step = median(times[e]);
     runs[e]->read_states(states);
     judge_final_states(scene, states, outcomes[e].stability);
   }
   return outcomes;
+}
+
+MemoryUse measure_memory(const CompareScene& scene, const Contender& contender, int steps) {
+  malloc_trim(0);
+  const double heap_before = heap_in_use();
+  const double resident_before = resident_bytes();
+  MemoryUse use;
+  {
+    std::unique_ptr<lab::LabSimulation> run = make_run(scene, contender.method);
+    for (int s = 0; s < steps; ++s) run->step();
+    use.heap_bytes = heap_in_use() - heap_before;
+    malloc_trim(0);
+    const double resident_after = resident_bytes();
+    if (resident_before >= 0.0 && resident_after >= 0.0) use.resident_bytes = resident_after - resident_before;
+  }
+  malloc_trim(0);
+  return use;
 }
 
 }  // namespace impulse2d::compare

@@ -26,17 +26,34 @@ struct Contender {
 /// as Chipmunk's debug build).
 std::vector<Contender> contenders(std::vector<std::string>& notes);
 
-/// One engine's result on one scene.
-struct Outcome {
-  double ms_per_step = 0.0;  ///< median CPU time of a step, milliseconds
-  Stability stability;       ///< what the run left standing
+/// The memory one engine's world holds once built and stepped, bytes (negative: not measured).
+struct MemoryUse {
+  /// Growth of the bytes malloc has handed out and not taken back (glibc `mallinfo2`: in use
+  /// in the arenas plus mmapped blocks): the world, its buffers' whole capacity, the adapter.
+  double heap_bytes = -1.0;
+  /// Growth of the process's resident set (`/proc/self/statm`, after `malloc_trim(0)` before
+  /// and after): the pages actually touched.
+  double resident_bytes = -1.0;
 };
 
-/// Runs `scene` for `steps` steps in every contender, interleaved in blocks of `block` steps;
-/// samples the deepest overlap about five times in the run and at its end. One outcome per
-/// contender, in order.
+/// One engine's result on one scene.
+struct Outcome {
+  bool ran = true;           ///< false when the engine was left out of the scene (`--peers-max`)
+  double ms_per_step = 0.0;  ///< median CPU time of a step, milliseconds
+  Stability stability;       ///< what the run left standing
+  MemoryUse memory;          ///< measured for the scaling series only (`measure_memory`)
+};
+
+/// Runs `scene` for `steps` steps in every contender whose `included` entry is true,
+/// interleaved in blocks of `block` steps; samples the deepest overlap about five times in the
+/// run and at its end. One outcome per contender, in order (`ran` false for those left out).
 std::vector<Outcome> run_interleaved(const CompareScene& scene,
-                                     const std::vector<Contender>& contenders, int steps,
-                                     int block);
+                                     const std::vector<Contender>& contenders,
+                                     const std::vector<bool>& included, int steps, int block);
+
+/// Builds `scene` in `contender`'s engine alone, steps it `steps` times, and returns how much
+/// the heap in use and the resident set grew from before it was built (then frees it). The
+/// scene's own body list exists before and is not counted.
+MemoryUse measure_memory(const CompareScene& scene, const Contender& contender, int steps);
 
 }  // namespace impulse2d::compare

@@ -148,6 +148,16 @@ inline bool BroadPhase::fat_boxes_overlap(const BodyPair& pair) const {
       trees_[static_cast<std::size_t>(second.type)].box(second.node));
 }
 
+// `bodies_can_collide` of the pair's bodies, read from their filters.
+inline bool BroadPhase::filters_can_collide(const BodyPair& pair) const {
+  const PairFilter& a = filters_[pair.first];
+  const PairFilter& b = filters_[pair.second];
+  if (!a.moving && !b.moving) return false;
+  if (a.type != BodyType::Dynamic && b.type != BodyType::Dynamic) return false;
+  if (a.sensor || b.sensor) return false;
+  return (a.collision_layers & b.collision_layers) != 0;
+}
+
 // The persistent pairs are every pair of proxies whose fat boxes overlap, except pairs of a
 // proxy still queued in `moved_`. Each call first lets every living slot's proxy cover its
 // bounds, queries the trees with each moved proxy's fat box, merges what it found into the
@@ -157,8 +167,15 @@ void BroadPhase::find_tree_pairs(const std::vector<Body>& bodies,
                                  const std::vector<std::uint8_t>& alive,
                                  const std::vector<Aabb>& bounds, std::vector<BodyPair>& pairs) {
   const auto slot_count = static_cast<std::uint32_t>(bodies.size());
+  // One pass in slot order: each proxy covers its bounds and each slot's filter is copied, so
+  // that the pair loop below touches no `Body` (at 100k bodies its reads of three cache lines
+  // per body missed the cache; issue 33).
+  if (filters_.size() < slot_count) filters_.resize(slot_count);
   for (std::uint32_t i = 0; i < slot_count; ++i) {
-    if (alive[i]) cover(i, bounds[i]);
+    if (!alive[i]) continue;
+    cover(i, bounds[i]);
+    const Body& body = bodies[i];
+    filters_[i] = PairFilter{body.collision_layers, body.type, is_moving(body), body.is_sensor};
   }
 
   found_.clear();
@@ -196,8 +213,7 @@ void BroadPhase::find_tree_pairs(const std::vector<Body>& bodies,
     }
     if (!unchanged && !fat_boxes_overlap(pair)) continue;
     merged_.push_back(pair);
-    if (bounds[pair.first].overlaps(bounds[pair.second]) &&
-        bodies_can_collide(bodies[pair.first], bodies[pair.second])) {
+    if (bounds[pair.first].overlaps(bounds[pair.second]) && filters_can_collide(pair)) {
       pairs.push_back(pair);
     }
   }

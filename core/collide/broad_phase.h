@@ -84,6 +84,14 @@ class BroadPhase {
     /// proxies that did not change since the last pairing still overlaps.
     std::uint32_t changed_epoch = 0;
   };
+  /// What `bodies_can_collide` reads of a body, copied once a step in slot order so that the
+  /// pair loop reads 8 bytes per slot instead of three cache lines of a `Body` (issue 33).
+  struct PairFilter {
+    std::uint32_t collision_layers = 0;  ///< the body's layers
+    BodyType type = BodyType::Static;    ///< the body's type
+    bool moving = false;                 ///< awake and not static
+    bool sensor = false;                 ///< a sensor: pairs with nothing
+  };
   /// A living slot's bounds, copied so that the sweep reads one contiguous array.
   struct SweepEntry {
     Aabb bounds;         ///< the slot's box, metres
@@ -96,6 +104,7 @@ class BroadPhase {
   void find_tree_pairs(const std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
                        const std::vector<Aabb>& bounds, std::vector<BodyPair>& pairs);
   bool fat_boxes_overlap(const BodyPair& pair) const;
+  bool filters_can_collide(const BodyPair& pair) const;
 
   std::array<DynamicTree, 3> trees_;        // indexed by BodyType
   std::vector<Proxy> proxies_;              // per slot
@@ -105,6 +114,7 @@ class BroadPhase {
   std::vector<BodyPair> found_;             // new pairs of moved proxies (reused)
   std::vector<BodyPair> merged_;            // next tree_pairs_ (reused)
   std::vector<SweepEntry> sorted_;          // living slots ordered by (bounds.lower.x, slot)
+  std::vector<PairFilter> filters_;         // per slot, refreshed by each tree pairing
   std::uint32_t pairing_epoch_ = 0;         // tree pairings done (wraps; see Proxy)
 };
 
