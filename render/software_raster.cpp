@@ -171,23 +171,34 @@ RowLimit row_limit(float slope_x, float slope_y, float offset, float low, float 
   return limit;
 }
 
+// Whether the row at y passes the row test of a `limit` that is not `along_row`.
+bool row_passes(const RowLimit& limit, float y) {
+  const float value = limit.slope_y * y + limit.offset;
+  return !(value < limit.low || value > limit.high);
+}
+
 // Narrows [from, to] to the x that `limit` allows on the row at y.
 void apply(const RowLimit& limit, float y, float& from, float& to) {
   if (limit.along_row) {
     from = std::max(from, limit.from_base + limit.from_slope * y);
     to = std::min(to, limit.to_base + limit.to_slope * y);
-  } else {
-    const float value = limit.slope_y * y + limit.offset;
-    if (value < limit.low || value > limit.high) {  // empty, and stays so
-      from = std::numeric_limits<float>::max();
-      to = std::numeric_limits<float>::lowest();
-    }
+  } else if (!row_passes(limit, y)) {  // empty, and stays so
+    from = std::numeric_limits<float>::max();
+    to = std::numeric_limits<float>::lowest();
   }
+}
+
+// Whether `limit` bounds x alike on every row (an axis-aligned frame's x limit): its ends do
+// not move with y, so `apply` gives them exactly (x + 0 y = x).
+bool same_every_row(const RowLimit& limit) {
+  return limit.along_row && limit.from_slope == 0.0f && limit.to_slope == 0.0f;
 }
 
 // The columns of each row that a disc, box or arrow may cover: its frame rectangle
 // [lower, upper] (p.x = ax x + ay y - (ax ox + ay oy), p.y = -ay x + ax y + (ay ox - ax oy)),
-// without a box outline's hole (where its coverage is exactly 1 - 1 = 0).
+// without a box outline's hole (where its coverage is exactly 1 - 1 = 0). In an axis-aligned
+// frame (bounding boxes, panels) the columns are the same on every row the rectangle (or the
+// hole) spans, so they are found once and each row only tests y.
 class FrameColumns {
  public:
   FrameColumns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, bool outline)
@@ -197,9 +208,25 @@ class FrameColumns {
                     shape.box[1] - shape.box[3] - 0.5f - 2.0f * span_slack);
     has_hole_ = outline && hole.x > 0.0f && hole.y > 0.0f;
     if (has_hole_) limits(shape, -hole, hole, hole_);
+    fixed_ = same_every_row(outer_[0]) && !outer_[1].along_row &&
+             (!has_hole_ || (same_every_row(hole_[0]) && !hole_[1].along_row));
+    if (!fixed_) return;
+    // What `operator()` computes on a row inside the rectangle, outside and inside the hole.
+    fixed_spans_ = columns_between(std::max(std::numeric_limits<float>::lowest(), outer_[0].from_base) - span_slack,
+                                   std::min(std::numeric_limits<float>::max(), outer_[0].to_base) + span_slack, left_,
+                                   right_);
+    fixed_sides_ = fixed_spans_;
+    if (has_hole_ && fixed_spans_.count != 0) {
+      fixed_sides_ = beside_hole(fixed_spans_, std::max(std::numeric_limits<float>::lowest(), hole_[0].from_base),
+                                 std::min(std::numeric_limits<float>::max(), hole_[0].to_base));
+    }
   }
 
   RowSpans operator()(float y) const {
+    if (fixed_) {
+      if (!row_passes(outer_[1], y)) return RowSpans{};
+      return has_hole_ && row_passes(hole_[1], y) ? fixed_sides_ : fixed_spans_;
+    }
     float from = std::numeric_limits<float>::lowest();
     float to = std::numeric_limits<float>::max();
     apply(outer_[0], y, from, to);
@@ -210,18 +237,7 @@ class FrameColumns {
     float hole_to = std::numeric_limits<float>::max();
     apply(hole_[0], y, hole_from, hole_to);
     apply(hole_[1], y, hole_from, hole_to);
-    const RowSpans inside = columns_between(hole_from, hole_to, spans.first[0], spans.last[0]);
-    if (inside.count == 0) return spans;
-    RowSpans sides;  // the columns left and right of the hole
-    if (inside.first[0] > spans.first[0]) {
-      sides.first[sides.count] = spans.first[0];
-      sides.last[sides.count++] = inside.first[0] - 1;
-    }
-    if (inside.last[0] < spans.last[0]) {
-      sides.first[sides.count] = inside.last[0] + 1;
-      sides.last[sides.count++] = spans.last[0];
-    }
-    return sides;
+    return beside_hole(spans, hole_from, hole_to);
   }
 
  private:
@@ -234,11 +250,30 @@ class FrameColumns {
     out[1] = row_limit(-ay, ax, ay * ox - ax * oy, lower.y, upper.y);
   }
 
+  // The columns of the one span `spans` left and right of the hole's [hole_from, hole_to].
+  static RowSpans beside_hole(const RowSpans& spans, float hole_from, float hole_to) {
+    const RowSpans inside = columns_between(hole_from, hole_to, spans.first[0], spans.last[0]);
+    if (inside.count == 0) return spans;
+    RowSpans sides;
+    if (inside.first[0] > spans.first[0]) {
+      sides.first[sides.count] = spans.first[0];
+      sides.last[sides.count++] = inside.first[0] - 1;
+    }
+    if (inside.last[0] < spans.last[0]) {
+      sides.first[sides.count] = inside.last[0] + 1;
+      sides.last[sides.count++] = spans.last[0];
+    }
+    return sides;
+  }
+
   int left_;
   int right_;
   RowLimit outer_[2];
   RowLimit hole_[2];
   bool has_hole_ = false;
+  bool fixed_ = false;     // the columns are `fixed_spans_` / `fixed_sides_` on rows that pass
+  RowSpans fixed_spans_;   // on a row inside the rectangle and outside the hole
+  RowSpans fixed_sides_;   // on a row inside the hole
 };
 
 // The columns of row centre `y` within the disc's reach (`frame_upper.x`) of its centre.
@@ -249,6 +284,17 @@ RowSpans disc_columns(const SoftwarePrimitive& primitive, const ShapeVertex& sha
   if (!(squared > 0.0f)) return RowSpans{};
   const float half_width = std::sqrt(squared);
   return columns_between(shape.frame[0] - half_width, shape.frame[0] + half_width, primitive.left, primitive.right);
+}
+
+// Blends the premultiplied `source` over the opaque `pixel`; a pixel with nothing over it keeps
+// its bytes.
+void blend_pixel(std::uint8_t* pixel, const Premultiplied<float>& source) {
+  if (!(source.a > 0.0f)) return;
+  // Alpha blends as source.a + 1 (1 - source.a) = 1 over an opaque frame: it stays 255.
+  const float keep = 1.0f - source.a;
+  pixel[0] = to_byte(source.r + byte_scale.value[pixel[0]] * keep);
+  pixel[1] = to_byte(source.g + byte_scale.value[pixel[1]] * keep);
+  pixel[2] = to_byte(source.b + byte_scale.value[pixel[2]] * keep);
 }
 
 // Blends `shade(x, y)` (a premultiplied colour at the window pixel centre) over the pixels
@@ -265,13 +311,7 @@ void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Fram
     for (int span = 0; span < spans.count; ++span) {
       std::uint8_t* pixel = row_pixels + static_cast<std::size_t>(spans.first[span]) * 4;
       for (int column = spans.first[span]; column <= spans.last[span]; ++column, pixel += 4) {
-        const Premultiplied<float> source = shade(static_cast<float>(column) + 0.5f, y);
-        if (!(source.a > 0.0f)) continue;  // nothing over this pixel: it keeps its bytes
-        // Alpha blends as source.a + 1 (1 - source.a) = 1 over an opaque frame: it stays 255.
-        const float keep = 1.0f - source.a;
-        pixel[0] = to_byte(source.r + byte_scale.value[pixel[0]] * keep);
-        pixel[1] = to_byte(source.g + byte_scale.value[pixel[1]] * keep);
-        pixel[2] = to_byte(source.b + byte_scale.value[pixel[2]] * keep);
+        blend_pixel(pixel, shade(static_cast<float>(column) + 0.5f, y));
       }
     }
   }
@@ -335,6 +375,44 @@ void blend_in_frame(const SoftwarePrimitive& primitive, int first_row, int last_
     const Float4 dy = y - origin_y;
     return shade(dx * axis_x + dy * axis_y, axis_x * dy - axis_y * dx);
   });
+}
+
+// A text run in window rows [first_row, last_row]: ink where the font pixel under the pixel
+// centre is set, within the run (the text fragment program's formula). The font column under
+// each pixel column is found once per call and the font row once per row, with the same
+// conversions as pixel by pixel, so a pixel without ink costs a bit test.
+void draw_text_run(const SoftwarePrimitive& primitive, const TextVertex& run, int first_row, int last_row,
+                   Frame& frame) {
+  const Rgba fill = normalised(run.fill);
+  const std::size_t stride = frame.stride();
+  const int bottom = std::max(primitive.bottom, first_row);
+  const int top = std::min(primitive.top, last_row);
+  constexpr int chunk = 64;  // pixel columns whose font columns are held at once
+  int bit_columns[chunk];    // font column times font_glyph_rows, the column's first bit
+  for (int first_column = primitive.left; first_column <= primitive.right; first_column += chunk) {
+    const int last_column = std::min(first_column + chunk - 1, primitive.right);
+    for (int column = first_column; column <= last_column; ++column) {
+      // The pixel centre from the run's left edge, and the font column under it. (The pixel
+      // lies within a pixel of the run, so the conversions are in range.)
+      const float qx = static_cast<float>(column) + 0.5f - run.run[0];
+      bit_columns[column - first_column] = std::min(static_cast<int>(qx * run.font_scale), 31) * font_glyph_rows;
+    }
+    for (int row = bottom; row <= top; ++row) {
+      // The pixel centre below the run's top (y down), and the font row under it.
+      const float qy = run.run[1] - (static_cast<float>(row) + 0.5f);
+      const int font_row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
+      // GL's rows count from the bottom; the frame's from the top.
+      std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
+      for (int column = first_column; column <= last_column; ++column) {
+        const int bit = std::min(std::max(bit_columns[column - first_column] + font_row, 0), 255);
+        if (((run.bits[bit >> 5] >> (bit & 31)) & 1u) == 0) continue;
+        const float qx = static_cast<float>(column) + 0.5f - run.run[0];
+        const float inside =
+            saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
+        blend_pixel(row_pixels + static_cast<std::size_t>(column) * 4, premultiplied(fill, inside));
+      }
+    }
+  }
 }
 
 // The coverage formulas of primitive_shaders.cpp, kind by kind.
@@ -409,24 +487,9 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
                      });
       return;
     }
-    case PrimitiveKind::text: {
-      const TextVertex run = batch.texts[primitive.index];
-      const Rgba fill = normalised(run.fill);
-      blend(primitive, first_row, last_row, frame, whole_rows, [=](float x, float y) {
-        // The pixel centre from the run's top-left corner (y down), and the font pixel under it.
-        const float qx = x - run.run[0];
-        const float qy = run.run[1] - y;
-        // The ink test first: most of a run's pixels have none. (The pixel lies within a pixel
-        // of the run, so the conversions are in range.)
-        const int column = std::min(static_cast<int>(qx * run.font_scale), 31);
-        const int row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
-        const int bit = std::min(std::max(column * font_glyph_rows + row, 0), 255);
-        if (((run.bits[bit >> 5] >> (bit & 31)) & 1u) == 0) return Premultiplied<float>{};
-        const float inside = saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
-        return premultiplied(fill, inside);
-      });
+    case PrimitiveKind::text:
+      draw_text_run(primitive, batch.texts[primitive.index], first_row, last_row, frame);
       return;
-    }
   }
 }
 
