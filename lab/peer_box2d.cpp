@@ -198,6 +198,9 @@ class Box2dSimulation : public LabSimulation {
       def.fixedRotation = body.inverse_inertia == 0.0f;
       def.bullet = body.is_bullet && settings.enable_continuous;
       def.allowSleep = settings.enable_sleeping;
+      if (body.shape_count > 0) {
+        throw std::runtime_error("peer box2d: compound bodies (several shapes) are not copied to the peers");
+      }
       b2Body* created = world_.CreateBody(&def);
 
       b2CircleShape circle;

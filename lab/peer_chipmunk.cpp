@@ -165,6 +165,9 @@ class ChipmunkSimulation : public LabSimulation {
     restitution_on_ = settings.enable_restitution;
     for (const BodyId id : initial.body_ids()) {
       const BodyView source = initial.body(id);
+      if (source.shape_count > 0) {
+        throw std::runtime_error("peer chipmunk: compound bodies (several shapes) are not copied to the peers");
+      }
       cpBody* body = nullptr;
       if (source.type == BodyType::Static) {
         body = cpBodyNewStatic();
