@@ -61,7 +61,7 @@ struct BodyDef {
   /// non-sensor body whose collision layers share a bit with its own that begins or stops
   /// overlapping it (`World::sensor_events`).
   bool is_sensor = false;
-  /// For a sensor: also report static bodies (off by default).
+  /// For a sensor (or a body with sensor shapes): also report static bodies (off by default).
   bool sensor_detects_static = false;
   /// Sensors see this body (on by default; a sensor itself is never seen).
   bool enable_sensor_events = true;
@@ -76,6 +76,9 @@ struct ShapeDef {
   float angle = 0.0f;                 ///< its frame's turn in the body's frame, radians
   Material material = materials::wood();  ///< density (mass), friction and restitution
   std::uint32_t collision_layers = 1; ///< collides with shapes whose layers share a bit
+  /// A sensor shape: no contacts, but it reports the shapes of other bodies that begin or stop
+  /// overlapping it (`World::sensor_events`, as a sensor body does); it still has mass.
+  bool is_sensor = false;
 };
 
 /// Most shapes one body may have.
@@ -88,6 +91,7 @@ struct BodyShape {
   Transform local;                    ///< its frame in the body's: metres and rotation
   Material material;                  ///< what it is made of
   std::uint32_t collision_layers = 1; ///< bitmask
+  bool is_sensor = false;             ///< senses overlaps, never collides
 };
 
 /// What users read of a body, returned by `World::body(id)`: a copy of its state taken when

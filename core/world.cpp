@@ -123,7 +123,7 @@ namespace {
 void count_event_flags(WorldEvents& events, const Body& body, int sign) {
   if (body.enable_contact_events) events.contact_event_bodies += sign;
   if (body.enable_hit_events) events.hit_event_bodies += sign;
-  if (body.is_sensor) events.sensor_bodies += sign;
+  if (body.is_sensor || body.has_sensor_shapes) events.sensor_bodies += sign;
 }
 }  // namespace
 

@@ -96,6 +96,7 @@ BodyId World::create_body(const BodyDef& def, const ShapeDef* shapes, int count)
     part.local = Transform{given.position, Rotation::from_angle(given.angle)};
     part.material = given.material;
     part.collision_layers = given.collision_layers;
+    part.is_sensor = given.is_sensor;
   }
   if (def.type == BodyType::Dynamic && !has_area) {
     throw Error("World::create_body: a dynamic body needs a shape with area (all its shapes are "
@@ -114,6 +115,9 @@ BodyId World::create_body(const BodyDef& def, const ShapeDef* shapes, int count)
   body.compound = true;
   body.children = std::move(parts);
   recentre_compound(body);
+  for (const BodyShape& part : body.children) body.has_sensor_shapes = body.has_sensor_shapes || part.is_sensor;
+  // Counted as a sensor (its events are collected) once; the body was counted without its shapes.
+  if (body.has_sensor_shapes && !body.is_sensor) ++state_->events.sensor_bodies;
   state_->broad_phase.cover(id.index, body.aabb);
   return id;
 }

@@ -128,7 +128,8 @@ void World::draw(DebugDraw& draw, const DebugDrawOptions& options) const {
       const Body& body = state_->bodies[i];
       const Transform drawn = drawn_transform(body, alpha);
       for (int k = 0; k < shape_count_of(body); ++k) {
-        draw_shape(draw, shape_of(body, k), shape_transform(body, k, drawn), fill_of(body, options), palette.outline);
+        const Color fill = is_sensor_shape(body, k) ? palette.sensor_fill : fill_of(body, options);
+        draw_shape(draw, shape_of(body, k), shape_transform(body, k, drawn), fill, palette.outline);
       }
     }
   }

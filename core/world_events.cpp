@@ -145,7 +145,7 @@ void collect_sensor_events(WorldState& world) {
   next.clear();
   for (std::uint32_t s = 0; s < world.bodies.size(); ++s) {
     const Body& sensor = world.bodies[s];
-    if (!world.alive[s] || !sensor.is_sensor) continue;
+    if (!world.alive[s] || !(sensor.is_sensor || sensor.has_sensor_shapes)) continue;
     world.broad_phase.query(sensor.aabb, events.nearby);  // ascending slots
     for (const std::uint32_t o : events.nearby) {
       const Body& other = world.bodies[o];
@@ -154,11 +154,13 @@ void collect_sensor_events(WorldState& world) {
       if ((other.collision_layers & sensor.collision_layers) == 0) continue;
       if (!other.aabb.overlaps(sensor.aabb)) continue;
       // Each pair of shapes (one pair unless a body is compound) whose layers meet and that
-      // overlap, in (sensor's shape, other's shape) order.
+      // overlap, in (sensor's shape, other's shape) order. A sensor body's shapes all sense; a
+      // compound body's sensor shapes sense, and its other shapes are seen like any body's.
       for (int i = 0; i < shape_count_of(sensor); ++i) {
+        if (!sensor.is_sensor && !is_sensor_shape(sensor, i)) continue;
         const Transform sensor_at = shape_transform(sensor, i);
         for (int k = 0; k < shape_count_of(other); ++k) {
-          if ((layers_of(sensor, i) & layers_of(other, k)) == 0) continue;
+          if ((layers_of(sensor, i) & layers_of(other, k)) == 0 || is_sensor_shape(other, k)) continue;
           if (collide(shape_of(sensor, i), sensor_at, shape_of(other, k), shape_transform(other, k))
                   .point_count == 0) {
             continue;

@@ -50,7 +50,7 @@ std::vector<RayHit> World::raycast_all(vec2 origin, vec2 translation, std::uint3
     const Body& body = state_->bodies[i];
     if (!state_->alive[i] || (body.collision_layers & layers) == 0) continue;
     ShapeRayHit shape_hit;
-    if (raycast_body(body, origin, translation, layers, &shape_hit)) {
+    if (raycast_body(body, origin, translation, layers, true, &shape_hit)) {
       hits.push_back(
           RayHit{body.id, origin + translation * shape_hit.fraction, shape_hit.normal, shape_hit.fraction});
     }
@@ -71,7 +71,7 @@ std::optional<RayHit> World::raycast_closest(vec2 origin, vec2 translation, std:
     const Body& body = state_->bodies[i];
     if (!state_->alive[i] || (body.collision_layers & layers) == 0) continue;
     ShapeRayHit shape_hit;
-    if (raycast_body(body, origin, translation, layers, &shape_hit) &&
+    if (raycast_body(body, origin, translation, layers, true, &shape_hit) &&
         (!closest || shape_hit.fraction < closest->fraction)) {
       closest = RayHit{body.id, origin + translation * shape_hit.fraction, shape_hit.normal,
                        shape_hit.fraction};

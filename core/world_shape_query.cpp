@@ -259,7 +259,7 @@ int World::overlap_shape(const Shape& shape, const Transform& transform, BodyId*
     // The narrow phase's own test: overlapping shapes give manifold points at margin 0.
     bool overlaps = false;
     for (int i = 0; i < shape_count_of(body) && !overlaps; ++i) {
-      overlaps = (layers_of(body, i) & filter.layers) != 0 &&
+      overlaps = (layers_of(body, i) & filter.layers) != 0 && (filter.include_sensors || !is_sensor_shape(body, i)) &&
                  collide(placed, transform, shape_of(body, i), shape_transform(body, i)).point_count > 0;
     }
     if (!overlaps) return true;
@@ -339,7 +339,9 @@ std::optional<ShapeCastHit> World::cast_shape(const Shape& shape, const Transfor
     const Body& body = world.bodies[slot];
     if (!passes(world, slot, filter) || !body.aabb.overlaps(swept)) return true;
     for (int part = 0; part < shape_count_of(body); ++part) {
-      if ((layers_of(body, part) & filter.layers) == 0) continue;
+      if ((layers_of(body, part) & filter.layers) == 0 || (!filter.include_sensors && is_sensor_shape(body, part))) {
+        continue;
+      }
       const Shape& target_shape = shape_of(body, part);
       const Transform target_at = shape_transform(body, part);
       ShapeCastHit hit;
@@ -365,7 +367,7 @@ std::optional<RayHit> World::raycast_closest(vec2 origin, vec2 translation, cons
     if (!passes(world, slot, filter)) return true;
     const Body& body = world.bodies[slot];
     ShapeRayHit shape_hit;
-    if (raycast_body(body, origin, translation, filter.layers, &shape_hit) &&
+    if (raycast_body(body, origin, translation, filter.layers, filter.include_sensors, &shape_hit) &&
         (!closest || shape_hit.fraction < closest->fraction ||
          (shape_hit.fraction == closest->fraction && slot < closest->body.index))) {
       closest = RayHit{body.id, origin + translation * shape_hit.fraction, shape_hit.normal, shape_hit.fraction};

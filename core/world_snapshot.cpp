@@ -277,7 +277,9 @@ void io_body(IO& io, Body& b) {
     io.f32(part.material.static_friction);
     io.f32(part.material.dynamic_friction);
     io.u32(part.collision_layers);
+    io_bool(io, part.is_sensor);
   }
+  io_bool(io, b.has_sensor_shapes);
 }
 
 // A shape index (0..max_body_shapes - 1) of a contact or event pair.

@@ -280,14 +280,14 @@ std::vector<ChainLink> read_chain(const JsonCursor& node) {
 }
 
 /// The fields a shape object may have besides `own` (its kind's): a shape in a body's "shapes"
-/// list also has its placement, material and layers.
+/// list also has its placement, material, layers and sensor switch.
 std::vector<const char*> shape_fields(std::vector<const char*> own, bool placed) {
-  if (placed) own.insert(own.end(), {"position", "angle", "material", "layers"});
+  if (placed) own.insert(own.end(), {"position", "angle", "material", "layers", "sensor"});
   return own;
 }
 
 /// A shape object: `placed` for one of a body's "shapes" (which may also give "position",
-/// "angle", "material" and "layers", read by `read_placed_shapes`).
+/// "angle", "material", "layers" and "sensor", read by `read_placed_shapes`).
 ReadShape read_shape(const JsonCursor& node, bool placed = false) {
   const JsonCursor type = node.field("type");
   const std::string name = type.string();
@@ -371,7 +371,7 @@ ReadShape read_shape(const JsonCursor& node, bool placed = false) {
 
 /// A compound body's "shapes": 1..max_body_shapes shape objects, each with an optional
 /// "position" and "angle" (of its frame in the body's; a polygon's or capsule's own centroid
-/// offset is kept), "material" and "layers" (the body's by default).
+/// offset is kept), "material" and "layers" (the body's by default) and "sensor" (false).
 std::vector<ShapeDef> read_placed_shapes(const JsonCursor& list, const BodyDef& def,
                                          const MaterialTable& table) {
   const std::size_t count = list.size();
@@ -397,6 +397,7 @@ std::vector<ShapeDef> read_placed_shapes(const JsonCursor& list, const BodyDef& 
     if (auto field = node.optional_field("layers")) {
       placed.collision_layers = static_cast<std::uint32_t>(field->integer(0, 0xFFFFFFFFll));
     }
+    if (auto field = node.optional_field("sensor")) placed.is_sensor = field->boolean();
     const bool area = read.shape.type() != ShapeType::Segment;
     if (def.type == BodyType::Dynamic && area && !(placed.material.density > 0.0f)) {
       (node.has("material") ? node.field("material") : node)
@@ -491,7 +492,16 @@ BodySpawn read_body(const JsonCursor& node, const MaterialTable& table,
   }
   if (auto field = node.optional_field("sensor")) def.is_sensor = field->boolean();
   if (auto field = node.optional_field("sensor_detects_static")) {
-    if (!def.is_sensor) field->fail("only a sensor detects bodies: add \"sensor\": true");
+    bool sensor_shape = false;  // a compound body's shape with "sensor": true
+    if (auto list = node.optional_field("shapes")) {
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        const JsonCursor each = list->element(i);
+        sensor_shape = sensor_shape || (each.has("sensor") && each.field("sensor").boolean());
+      }
+    }
+    if (!def.is_sensor && !sensor_shape) {
+      field->fail("only a sensor detects bodies: add \"sensor\": true (to the body or one of its shapes)");
+    }
     def.sensor_detects_static = field->boolean();
   }
   if (auto events = node.optional_field("events")) {

@@ -215,14 +215,15 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       update_pair(a, b, 0, 0, margin);
       continue;
     }
-    // A compound body: every pair of shapes whose layers meet and whose bounds come within the
-    // margin, in (A's shape, B's shape) order.
+    // A compound body: every pair of solid shapes whose layers meet and whose bounds come
+    // within the margin, in (A's shape, B's shape) order.
     const int count_a = shape_count_of(a);
     const int count_b = shape_count_of(b);
     for (int i = 0; i < count_a; ++i) {
+      if (is_sensor_shape(a, i)) continue;  // a sensor shape makes no contacts
       const Aabb bounds_a = compute_aabb(shape_of(a, i), shape_transform(a, i));
       for (int k = 0; k < count_b; ++k) {
-        if ((layers_of(a, i) & layers_of(b, k)) == 0) continue;
+        if ((layers_of(a, i) & layers_of(b, k)) == 0 || is_sensor_shape(b, k)) continue;
         Aabb bounds_b = compute_aabb(shape_of(b, k), shape_transform(b, k));
         bounds_b.lower -= vec2(margin);
         bounds_b.upper += vec2(margin);

@@ -37,6 +37,12 @@ inline std::uint32_t layers_of(const Body& body, int child) {
                        : body.collision_layers;
 }
 
+/// True when `body`'s shape `child` is a sensor shape of a compound body (a sensor body's
+/// shapes are sensors through `Body::is_sensor`).
+inline bool is_sensor_shape(const Body& body, int child) {
+  return body.compound && body.children[static_cast<std::size_t>(child)].is_sensor;
+}
+
 /// The material of `body`'s shape `child` (the body's when not compound).
 inline const Material& material_of(const Body& body, int child) {
   return body.compound ? body.children[static_cast<std::size_t>(child)].material : body.material;
@@ -63,8 +69,9 @@ inline bool bodies_overlap(const Body& a, const Transform& at_a, const Body& b) 
   if (!a.compound && !b.compound) return collide(a.shape, at_a, b.shape, b.transform).point_count > 0;
   for (int i = 0; i < shape_count_of(a); ++i) {
     const Transform placed_a = shape_transform(a, i, at_a);
+    if (is_sensor_shape(a, i)) continue;
     for (int k = 0; k < shape_count_of(b); ++k) {
-      if ((layers_of(a, i) & layers_of(b, k)) == 0) continue;
+      if ((layers_of(a, i) & layers_of(b, k)) == 0 || is_sensor_shape(b, k)) continue;
       if (collide(shape_of(a, i), placed_a, shape_of(b, k), shape_transform(b, k)).point_count > 0) return true;
     }
   }
@@ -80,12 +87,13 @@ inline bool body_contains_point(const Body& body, vec2 point) {
 }
 
 /// Casts the segment `origin` -> `origin + translation` against those of `body`'s shapes whose
-/// layers share a bit with `layers`; true with the first entry of any of them in `hit`.
+/// layers share a bit with `layers` (its sensor shapes only with `sensors`); true with the
+/// first entry of any of them in `hit`.
 inline bool raycast_body(const Body& body, vec2 origin, vec2 translation, std::uint32_t layers,
-                         ShapeRayHit* hit) {
+                         bool sensors, ShapeRayHit* hit) {
   bool found = false;
   for (int i = 0; i < shape_count_of(body); ++i) {
-    if ((layers_of(body, i) & layers) == 0) continue;
+    if ((layers_of(body, i) & layers) == 0 || (!sensors && is_sensor_shape(body, i))) continue;
     ShapeRayHit part;
     if (raycast_shape(shape_of(body, i), shape_transform(body, i), origin, translation, &part) &&
         (!found || part.fraction < hit->fraction)) {

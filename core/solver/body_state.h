@@ -49,6 +49,7 @@ struct Body {
   bool is_sensor = false;             ///< no contacts; reports overlaps instead
   bool sensor_detects_static = false; ///< as a sensor: also reports static bodies
   bool enable_sensor_events = true;   ///< sensors see it
+  bool has_sensor_shapes = false;     ///< a compound body with a sensor among its shapes
   Material material;          ///< what it is made of
   /// In body-local coordinates, centroid at the origin; a compound body's first shape (for
   /// the rules that look at one shape's kind: never its geometry, which `children` holds).

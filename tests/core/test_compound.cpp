@@ -250,6 +250,46 @@ TEST(Compound, ContactEventsNameTheShapeThatTouches) {
   EXPECT_LT(std::fabs(world.body(bell).angle), 1e-4f);
 }
 
+TEST(Compound, ASensorShapeSensesAndNeverTouches) {
+  // A box with a foot sensor below it (as a character's ground sensor): the body lands on its
+  // box; the foot overlaps the ground, which it reports (shape 1) and never pushes.
+  ShapeDef foot = part(make_circle(0.2f), {0.0f, -0.4f});
+  foot.is_sensor = true;
+  const ShapeDef shapes[] = {part(make_oriented_box({0.5f, 0.25f}), {0.0f, 0.0f}), foot};
+  World world;
+  const BodyId ground = add_ground(world);
+  BodyDef def;
+  def.position = {0.0f, 1.0f};
+  def.sensor_detects_static = true;
+  const BodyId body = world.create_body(def, shapes, 2);
+  int began = 0;
+  for (int i = 0; i < 120; ++i) {
+    world.step();
+    for (const SensorBeginTouchEvent& event : world.sensor_events().begin) {
+      EXPECT_EQ(event.sensor_shape.body, body);
+      EXPECT_EQ(event.sensor_shape.index, 1u);
+      EXPECT_EQ(event.visitor_shape.body, ground);
+      ++began;
+    }
+    for (const Contact& contact : world.contacts()) EXPECT_EQ(contact.child_b, 0);
+  }
+  EXPECT_EQ(began, 1);
+  // Resting on the box's bottom face (at y = 0, within the 5 mm slop), so the foot's lowest
+  // point is 0.6 below the box's centre: 0.35 deep in the ground.
+  EXPECT_NEAR(world.body(body).aabb.lower.y, -0.35f, world.settings().slop);
+  EXPECT_LT(std::fabs(world.body(body).angle), 1e-4f);
+  // Queries skip a sensor shape unless asked.
+  QueryFilter solid;
+  EXPECT_EQ(world.overlap_shape(make_circle(0.05f), Transform{world.body(body).transform.apply({0.0f, -0.4f}), Rotation{}},
+                                nullptr, 0, solid),
+            1);  // the ground only
+  QueryFilter with_sensors;
+  with_sensors.include_sensors = true;
+  EXPECT_EQ(world.overlap_shape(make_circle(0.05f), Transform{world.body(body).transform.apply({0.0f, -0.4f}), Rotation{}},
+                                nullptr, 0, with_sensors),
+            2);
+}
+
 TEST(Compound, QueriesSeeEveryShape) {
   const ShapeDef shapes[] = {part(make_oriented_box({0.5f, 0.5f}), {0.0f, 0.0f}),
                              part(make_circle(0.5f), {3.0f, 0.0f})};
