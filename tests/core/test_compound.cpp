@@ -177,6 +177,40 @@ TEST(Compound, ATStandsOnItsStemForTenSeconds) {
   EXPECT_GT(lowest_foot, -world.settings().slop - 1e-3f);
 }
 
+TEST(Compound, MirroredDropsStayMirrored) {
+  // An L crate and its mirror image, dropped turned by opposite angles at x = -3 and x = +3:
+  // each pose stays the other's mirror image through the landing, tumbling and rest.
+  const Shape square = make_oriented_box({0.5f, 0.5f});
+  World world;
+  add_ground(world);
+  BodyDef left;
+  left.position = {-3.0f, 2.0f};
+  left.angle = 0.3f;
+  left.angular_velocity = 1.0f;
+  BodyDef right = left;
+  right.position.x = 3.0f;
+  right.angle = -0.3f;
+  right.angular_velocity = -1.0f;
+  const ShapeDef shapes_left[] = {part(square, {0, 0}), part(square, {1, 0}), part(square, {0, 1})};
+  const ShapeDef shapes_right[] = {part(square, {0, 0}), part(square, {-1, 0}), part(square, {0, 1})};
+  const BodyId a = world.create_body(left, shapes_left, 3);
+  const BodyId b = world.create_body(right, shapes_right, 3);
+  float worst = 0.0f;
+  for (int i = 0; i < 240; ++i) {
+    world.step();
+    const BodyView va = world.body(a);
+    const BodyView vb = world.body(b);
+    worst = std::max({worst, std::fabs(va.transform.position.x + vb.transform.position.x),
+                      std::fabs(va.transform.position.y - vb.transform.position.y), std::fabs(va.angle + vb.angle)});
+  }
+  std::printf("[measured] mirrored L crates: largest asymmetry %.3g (m or rad)\n", worst);
+  // Measured 0 with GCC 12 (the narrow phase and the solver are mirror-exact). The bound allows
+  // rounding of a few ulps of 3 m, should a compiler order the mirrored sums differently; an
+  // asymmetry of the method (a corner picked by index, a shape order that matters) shows
+  // millimetres within the first bounce.
+  EXPECT_LT(worst, 1e-5f);
+}
+
 TEST(Compound, EachShapeSlidesOnItsOwnMaterial) {
   // A slope of 20 degrees (tan = 0.36): a body whose lower shape is rough (mu_s 0.8) holds; the
   // same body with an icy lower shape slides, though its upper shape is rough.
