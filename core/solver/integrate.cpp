@@ -22,10 +22,16 @@ vec2 clamp_speed(vec2 velocity, float speed_squared, float max_speed) {
   return direction * (max_speed / std::sqrt(length_squared(direction)));
 }
 
+namespace {
+// Body slots a worker takes at least at a time.
+constexpr std::size_t min_bodies_per_chunk = 128;
+}  // namespace
+
 void integrate_velocities(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                          const WorldSettings& settings, float dt) {
+                          const WorldSettings& settings, float dt, WorkerPool* pool) {
   const float max_speed_squared = settings.max_linear_speed * settings.max_linear_speed;
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
+  parallel_for(pool, bodies.size(), min_bodies_per_chunk, [&](std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i) {
     Body& body = bodies[i];
     if (!alive[i] || body.type != BodyType::Dynamic || !body.awake) continue;
     const vec2 acceleration = body.force * body.inverse_mass + settings.gravity * body.gravity_scale;
@@ -41,11 +47,13 @@ void integrate_velocities(std::vector<Body>& bodies, const std::vector<std::uint
                                          settings.max_linear_speed);
     }
   }
+  });
 }
 
 void integrate_positions(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                         const WorldSettings& settings, float dt) {
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
+                         const WorldSettings& settings, float dt, WorkerPool* pool) {
+  parallel_for(pool, bodies.size(), min_bodies_per_chunk, [&](std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i) {
     Body& body = bodies[i];
     if (!alive[i] || !is_integrated(body)) continue;
     body.transform.position += body.linear_velocity * dt;
@@ -57,12 +65,16 @@ void integrate_positions(std::vector<Body>& bodies, const std::vector<std::uint8
       body.transform.rotation = Rotation::from_angle(body.angle);
     }
   }
+  });
 }
 
-void update_bounds(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive) {
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (alive[i]) bodies[i].aabb = body_aabb(bodies[i]);
-  }
+void update_bounds(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
+                   WorkerPool* pool) {
+  parallel_for(pool, bodies.size(), min_bodies_per_chunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (alive[i]) bodies[i].aabb = body_aabb(bodies[i]);
+    }
+  });
 }
 
 }  // namespace impulse2d

@@ -59,13 +59,13 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
       wide.load_points(contacts);
     }
     if (joints && context.warm_starting) warm_start_joints(joint_list, states.states());
-    if (context.warm_starting) wide.warm_start(states.states());
+    if (context.warm_starting) wide.warm_start(states.states(), stages.workers());
     joint_pass.use_bias = true;
     for (int i = 0; i < context.velocity_iterations; ++i) {
       for (int pass = 0; joints && pass < kJointPasses; ++pass) {
         solve_joints(joint_list, states.states(), joint_pass);
       }
-      wide.solve(context, /*use_bias=*/true, states.states());
+      wide.solve(context, /*use_bias=*/true, states.states(), stages.workers());
     }
     if (shock) {
       wide.store_impulses(contacts);
@@ -81,7 +81,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
       for (int pass = 0; joints && pass < kJointPasses; ++pass) {
         solve_joints(joint_list, states.states(), joint_pass);
       }
-      wide.solve(context, /*use_bias=*/false, states.states());  // relax
+      wide.solve(context, /*use_bias=*/false, states.states(), stages.workers());  // relax
     }
     if (may_bounce) {
       wide.store_impulses(contacts);

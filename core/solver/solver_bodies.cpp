@@ -44,9 +44,24 @@ void SolverBodies::begin_step(const std::vector<Body>& bodies,
   }
 }
 
-void SolverBodies::integrate_velocities(float dt) {
+namespace {
+// Body slots a worker takes at least at a time.
+constexpr std::size_t min_slots_per_chunk = 256;
+}  // namespace
+
+void SolverBodies::integrate_velocities(float dt, WorkerPool* pool) {
+  parallel_for(pool, states_.size(), min_slots_per_chunk,
+               [&](std::size_t begin, std::size_t end) { integrate_velocities_of(dt, begin, end); });
+}
+
+void SolverBodies::integrate_positions(float dt, WorkerPool* pool) {
+  parallel_for(pool, states_.size(), min_slots_per_chunk,
+               [&](std::size_t begin, std::size_t end) { integrate_positions_of(dt, begin, end); });
+}
+
+void SolverBodies::integrate_velocities_of(float dt, std::size_t begin, std::size_t end) {
   const float max_speed_squared = max_linear_speed_ * max_linear_speed_;
-  for (std::size_t i = 0; i < states_.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const BodyIntegration& integration = integration_[i];
     if ((integration.flags & flag_accelerates) == 0) continue;
     SolverBody& state = states_[i];
@@ -68,7 +83,7 @@ void SolverBodies::integrate_velocities(float dt) {
   }
 }
 
-void SolverBodies::integrate_positions(float dt) {
+void SolverBodies::integrate_positions_of(float dt, std::size_t begin, std::size_t end) {
   // Turned bodies get their cosine and sine four at a time (`cos_sin_4`, bit for bit as
   // `Rotation::from_angle`).
   std::size_t turned[4];
@@ -83,7 +98,7 @@ void SolverBodies::integrate_positions(float dt) {
     }
     pending = 0;
   };
-  for (std::size_t i = 0; i < states_.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const std::uint32_t flags = integration_[i].flags;
     if ((flags & flag_moves) == 0) continue;
     SolverBody& state = states_[i];

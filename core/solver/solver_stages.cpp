@@ -94,7 +94,7 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
   // Bounds are current after a step, `create_body` and `set_transform`; from here to the end
   // of the step the stages move bodies, so they count as stale (a sub-step's next call
   // remakes them).
-  if (!world_.bounds_current) update_bounds(world_.bodies, world_.alive);
+  if (!world_.bounds_current) update_bounds(world_.bodies, world_.alive, pool_);
   world_.bounds_current = false;
   compute_speculative_reach(world_.bodies, world_.alive, world_.settings, dt,
                             world_.speculative_reach);
@@ -108,7 +108,8 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
   stage = Clock::now();
   world_.stats.contact_point_count =
       update_contacts(world_.bodies, world_.pairs, world_.speculative_reach, world_.settings, dt,
-                      world_.contact_filter, world_.contacts, world_.spilled_contacts, visitor);
+                      world_.contact_filter, world_.contacts, world_.spilled_contacts, visitor, pool_,
+                      &world_.narrow_jobs);
   world_.stats.pairs_tested = static_cast<int>(world_.pairs.size());
   world_.stats.contact_count = static_cast<int>(world_.contacts.size());
   world_.stats.sleeping_contact_count = static_cast<int>(world_.sleeping_contacts.size());
@@ -117,13 +118,13 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
 
 void SolverStages::integrate_velocities(float dt) {
   const Clock::time_point stage = Clock::now();
-  impulse2d::integrate_velocities(world_.bodies, world_.alive, world_.settings, dt);
+  impulse2d::integrate_velocities(world_.bodies, world_.alive, world_.settings, dt, pool_);
   world_.stats.integrate_ms += elapsed_ms(stage);
 }
 
 void SolverStages::integrate_positions(float dt) {
   const Clock::time_point stage = Clock::now();
-  impulse2d::integrate_positions(world_.bodies, world_.alive, world_.settings, dt);
+  impulse2d::integrate_positions(world_.bodies, world_.alive, world_.settings, dt, pool_);
   if (world_.settings.enable_continuous) {
     world_.stats.bullets_moved_back += world_.bullet_sweeper.sweep(
         world_.bodies, world_.alive, world_.settings, dt, world_.broad_phase);  // no tunnelling
@@ -144,13 +145,13 @@ void SolverStages::begin_solver_bodies() {
 
 void SolverStages::integrate_solver_velocities(float dt) {
   const Clock::time_point stage = Clock::now();
-  world_.solver_body_states.integrate_velocities(dt);
+  world_.solver_body_states.integrate_velocities(dt, pool_);
   world_.stats.integrate_ms += elapsed_ms(stage);
 }
 
 void SolverStages::integrate_solver_positions(float dt) {
   const Clock::time_point stage = Clock::now();
-  world_.solver_body_states.integrate_positions(dt);
+  world_.solver_body_states.integrate_positions(dt, pool_);
   world_.stats.integrate_ms += elapsed_ms(stage);
 }
 

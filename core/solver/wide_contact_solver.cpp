@@ -248,6 +248,10 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
   }
   first_block[overflow] = block_count;
   block_count += colouring_.count(overflow);
+  for (int colour = 0; colour < colours; ++colour) colour_first_block_[colour] = first_block[colour];
+  colour_first_block_[colours] = first_block[overflow];
+  colour_first_block_[colours + 1] = block_count;
+  packed_colours_ = colours;
   BlockStorage<Lanes>& packed = storage<Lanes>();
   // Every lane is written below: packed or cleared.
   packed.blocks.resize(block_count);
@@ -275,6 +279,11 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
     const std::size_t last = first_block[colour] + colouring_.count(colour) / Lanes;
     for (int lane = used; lane < Lanes; ++lane) {
       clear_lane(packed.blocks[last], packed.solves[last], lane);
+      // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
+      // other block of the colour touches, so workers sharing the colour never read a body
+      // another one is writing.
+      packed.blocks[last].body_a[lane] = packed.blocks[last].body_a[0];
+      packed.blocks[last].body_b[lane] = packed.blocks[last].body_b[0];
     }
   }
   for (std::size_t block = first_block[overflow]; block < block_count; ++block) {
@@ -334,7 +343,49 @@ void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
   }
 }
 
-void WideContactSolver::warm_start(SolverBody* bodies) {
+namespace {
+
+// Blocks a worker takes at least at a time (a block is a few dozen nanoseconds of work).
+constexpr std::size_t min_blocks_per_chunk = 16;
+
+// The blocks [first, first + count) of `arrays`.
+template <int Lanes>
+ContactBlockArrays<Lanes> block_range(const ContactBlockArrays<Lanes>& arrays, std::size_t first,
+                                      std::size_t count) {
+  return {arrays.blocks + first, arrays.solves + first, arrays.sticks + first, count};
+}
+
+}  // namespace
+
+template <class Pass>
+void WideContactSolver::for_each_colour(WorkerPool* pool, Pass pass) const {
+  for (int colour = 0; colour < packed_colours_; ++colour) {
+    const std::size_t first = colour_first_block_[colour];
+    const std::size_t count = colour_first_block_[colour + 1] - first;
+    parallel_for(pool, count, min_blocks_per_chunk, [&](std::size_t begin, std::size_t end) {
+      pass(first + begin, end - begin);
+    });
+  }
+  // The overflow's contacts may share bodies: one after another.
+  const std::size_t first = colour_first_block_[packed_colours_];
+  pass(first, colour_first_block_[packed_colours_ + 1] - first);
+}
+
+void WideContactSolver::warm_start(SolverBody* bodies, WorkerPool* pool) {
+  if (pool != nullptr) {
+#if defined(__x86_64__)
+    if (lanes_ == 8) {
+      for_each_colour(pool, [&](std::size_t first, std::size_t count) {
+        warm_start_contact_blocks_8(storage_8_.blocks.data() + first, count, bodies);
+      });
+      return;
+    }
+#endif
+    for_each_colour(pool, [&](std::size_t first, std::size_t count) {
+      warm_start_contact_blocks_4(storage_4_.blocks.data() + first, count, bodies);
+    });
+    return;
+  }
 #if defined(__x86_64__)
   if (lanes_ == 8) {
     warm_start_contact_blocks_8(storage_8_.blocks.data(), storage_8_.blocks.size(), bodies);
@@ -344,7 +395,8 @@ void WideContactSolver::warm_start(SolverBody* bodies) {
   warm_start_contact_blocks_4(storage_4_.blocks.data(), storage_4_.blocks.size(), bodies);
 }
 
-void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies) {
+void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies,
+                              WorkerPool* pool) {
   WidePassSettings pass;
   pass.inverse_substep = 1.0f / context.substep;
   pass.static_softness = context.static_softness;
@@ -352,6 +404,22 @@ void WideContactSolver::solve(const SolverContext& context, bool use_bias, Solve
   pass.push_max_speed = context.push_max_speed;
   pass.use_bias = use_bias;
   pass.friction = context.friction;
+  if (pool != nullptr) {
+#if defined(__x86_64__)
+    if (lanes_ == 8) {
+      const ContactBlockArrays<8> arrays = storage_8_.arrays();
+      for_each_colour(pool, [&](std::size_t first, std::size_t count) {
+        solve_contact_blocks_8(block_range(arrays, first, count), bodies, pass);
+      });
+      return;
+    }
+#endif
+    const ContactBlockArrays<4> arrays = storage_4_.arrays();
+    for_each_colour(pool, [&](std::size_t first, std::size_t count) {
+      solve_contact_blocks_4(block_range(arrays, first, count), bodies, pass);
+    });
+    return;
+  }
 #if defined(__x86_64__)
   if (lanes_ == 8) {
     solve_contact_blocks_8(storage_8_.arrays(), bodies, pass);

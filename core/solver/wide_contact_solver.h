@@ -14,6 +14,7 @@
 #include "core/contact.h"
 #include "core/solver/contact_block.h"
 #include "core/solver/contact_colouring.h"
+#include "core/solver/worker_pool.h"
 #include "core/solver/contact_visitor.h"
 #include "core/solver/solver_body.h"
 #include "core/solver/solver_context.h"
@@ -55,9 +56,13 @@ class WideContactSolver final : public ContactVisitor {
   }
 
   /// Applies the accumulated impulses to `bodies` (one state per body slot: warm starting).
-  void warm_start(SolverBody* bodies);
-  /// One soft (`use_bias`) or relax pass over every block, colour by colour, on `bodies`.
-  void solve(const SolverContext& context, bool use_bias, SolverBody* bodies);
+  /// With a `pool`, the blocks of each colour are shared among its workers (they move
+  /// disjoint bodies), colour after colour, the overflow last on this thread: the same bits.
+  void warm_start(SolverBody* bodies, WorkerPool* pool = nullptr);
+  /// One soft (`use_bias`) or relax pass over every block, colour by colour, on `bodies`
+  /// (with a `pool`, as `warm_start`).
+  void solve(const SolverContext& context, bool use_bias, SolverBody* bodies,
+             WorkerPool* pool = nullptr);
 
   /// True when some contact of this step has restitution > 0: without one (and so in any
   /// resting pile) the bounce stages change nothing and are skipped.
@@ -102,7 +107,15 @@ class WideContactSolver final : public ContactVisitor {
   template <int Lanes, class Then>
   void store_impulses_in_order(std::vector<Contact>& contacts, Then then) const;
 
+  /// Runs `pass(first block, block count)` over each colour's blocks in turn, shared among
+  /// `pool`'s workers, then over the overflow blocks on this thread.
+  template <class Pass>
+  void for_each_colour(WorkerPool* pool, Pass pass) const;
+
   int lanes_ = 4;
+  /// First block of each colour (then the overflow's, then the end), of the last `pack`.
+  std::size_t colour_first_block_[ContactColouring::max_colours + 2] = {};
+  int packed_colours_ = 0;  ///< colours of the last `pack`
   bool has_elastic_contacts_ = false;
   const std::vector<Body>* bodies_ = nullptr;  // between begin_step and finish_step
   const SolverContext* context_ = nullptr;     // between begin_step and finish_step
