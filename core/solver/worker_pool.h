@@ -21,7 +21,10 @@
 namespace impulse2d {
 
 /// `worker_count - 1` threads that, with the thread calling `run`, share the chunks of one
-/// job at a time. Between jobs the threads spin briefly (a step's stages follow each other by
+/// job at a time. A thread claims a chunk by advancing the job's chunk counter (one atomic word
+/// with the job's number, so a thread late for a job can never claim a chunk of the next);
+/// `run` returns once every chunk is done, without waiting for threads that came too late to
+/// get one. Between jobs the threads spin briefly (a step's jobs follow each other within
 /// microseconds), then yield, then sleep until the next job. Not copyable: a copied world makes
 /// its own (`WorkerPoolSlot`).
 class WorkerPool {
@@ -43,26 +46,32 @@ class WorkerPool {
   std::size_t smallest_chunk() const { return smallest_chunk_; }
   /// Sets `smallest_chunk()`.
   void set_smallest_chunk(std::size_t elements) { smallest_chunk_ = elements; }
-  /// Runs `function` over [0, count) in chunks of `chunk` elements (the last may be shorter),
-  /// on the threads and the calling one; returns when every chunk is done.
+  /// Runs `function` over [0, count) in chunks of `chunk` elements (the last may be shorter;
+  /// `chunk` is raised so that there are at most 65535 chunks), on the threads and the calling
+  /// one; returns when every chunk is done.
   void run(std::size_t count, std::size_t chunk, ChunkFunction function, void* context);
 
  private:
-  void run_chunks();
+  // The job word: job number (32 bits) | chunk count (16) | next chunk to claim (16).
+  static std::uint64_t job_of(std::uint64_t word) { return word >> 32; }
+  // Claims and runs chunks of the job numbered `job` until none is left; false at once when
+  // the word has moved on to another job.
+  void run_chunks(std::uint64_t job);
   void worker_loop();
 
   int worker_count_;
   std::size_t smallest_chunk_ = 0;
   std::vector<std::thread> threads_;
-  std::atomic<std::uint64_t> generation_{0};  // bumped once per job (and to stop)
-  std::atomic<std::size_t> next_chunk_{0};
-  std::atomic<int> busy_threads_{0};  // threads still in the current job
+  std::atomic<std::uint64_t> job_word_{0};
+  std::atomic<std::size_t> done_chunks_{0};  // chunks of the current job finished
+  std::atomic<int> sleepers_{0};             // threads asleep or about to be
+  std::atomic<bool> stopping_{false};
+  // The current job; written by `run` before it publishes the job word, read by a thread
+  // only after it claimed a chunk of that job (so never while being written).
   std::size_t count_ = 0;
   std::size_t chunk_ = 1;
-  std::size_t chunk_count_ = 0;
   ChunkFunction function_ = nullptr;
   void* context_ = nullptr;
-  std::atomic<bool> stopping_{false};
   std::mutex mutex_;
   std::condition_variable wake_;
 };
