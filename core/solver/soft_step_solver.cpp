@@ -28,7 +28,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   WideContactSolver& wide = stages.solver_wide_contacts();
   // Once: the sub-steps track each point's separation through its anchors. Each contact is
   // prepared and coloured as the narrow phase finishes it, while it is in the cache.
-  wide.begin_step(bodies, context, context.solver_lanes);
+  wide.begin_step(bodies, context, context.solver_lanes, stages.workers());
   stages.find_contacts(context.time_step, &wide);
   std::vector<Contact>& contacts = stages.solver_contacts();
   wide.finish_step(contacts);
@@ -91,7 +91,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
       wide.load_points(contacts);
     }
   }
-  states.store(bodies);
+  states.store(bodies, stages.workers());
   if (states.has_bullets()) stages.sweep_bullets(context.time_step);
   // One walk in the list's order writes the impulses back and then, with friction, switches
   // each contact between sticking and sliding (the switch reads them).

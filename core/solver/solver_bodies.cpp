@@ -117,8 +117,9 @@ void SolverBodies::integrate_positions_of(float dt, std::size_t begin, std::size
   rotate_pending();
 }
 
-void SolverBodies::store(std::vector<Body>& bodies) const {
-  for (std::size_t i = 0; i < states_.size(); ++i) {
+void SolverBodies::store(std::vector<Body>& bodies, WorkerPool* pool) const {
+  parallel_for(pool, states_.size(), min_slots_per_chunk, [&](std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i) {
     const std::uint32_t flags = integration_[i].flags;
     const SolverBody& state = states_[i];
     Body& body = bodies[i];
@@ -131,6 +132,7 @@ void SolverBodies::store(std::vector<Body>& bodies) const {
     body.transform.position = vec2(state.position_x, state.position_y);
     body.transform.rotation = Rotation{state.cosine, state.sine};
   }
+  });
 }
 
 void SolverBodies::load(const std::vector<Body>& bodies) {

@@ -53,8 +53,8 @@ class SolverBodies {
   /// `pool`, as `integrate_velocities`).
   void integrate_positions(float dt, WorkerPool* pool = nullptr);
   /// Writes the velocity back to every slot the contacts may change, pose and angle to every
-  /// slot that moves.
-  void store(std::vector<Body>& bodies) const;
+  /// slot that moves (with a `pool`, the slots shared among its workers).
+  void store(std::vector<Body>& bodies, WorkerPool* pool = nullptr) const;
   /// Reads what `store` writes back in (after a stage that works
   /// on the `Body`s changed them: bounces, bullet sweeps).
   void load(const std::vector<Body>& bodies);

@@ -31,14 +31,17 @@ class WideContactSolver final : public ContactVisitor {
 
   /// Starts a step between `bodies` in blocks of `lanes` (4 or 8, 8 only where
   /// `widest_lanes()` is 8; 0: the widest). `bodies` and `context` are kept by reference until
-  /// `finish_step`.
-  void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes);
+  /// `finish_step`. With a `pool`, `visit` only colours each contact (from its `PairMass`) and
+  /// `finish_step` prepares and packs them on the pool's workers (each contact is its own
+  /// work: the same bits).
+  void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes,
+                  WorkerPool* pool = nullptr);
   /// Prepares the step's next contact (as `prepare_contacts` does, if enabled) and colours it;
   /// called for every contact of the list, in order, between `begin_step` and `finish_step`
   /// (by the narrow phase).
   void visit(std::size_t index, Contact& contact) override;
   /// Packs the step's `contacts`, all visited, into blocks colour by colour.
-  void finish_step(const std::vector<Contact>& contacts);
+  void finish_step(std::vector<Contact>& contacts);
   /// Copies each point's accumulated impulses and bounce plan (`velocity_bias`, `bouncing`,
   /// `waiting`) in, after the bounce stages changed them in the contacts.
   void load_points(const std::vector<Contact>& contacts);
@@ -104,6 +107,8 @@ class WideContactSolver final : public ContactVisitor {
   }
   template <int Lanes>
   void pack(const std::vector<Contact>& contacts);
+  template <int Lanes>
+  void pack_shared(const std::vector<Contact>& contacts);
   template <int Lanes, class Then>
   void store_impulses_in_order(std::vector<Contact>& contacts, Then then) const;
 
@@ -119,6 +124,7 @@ class WideContactSolver final : public ContactVisitor {
   bool has_elastic_contacts_ = false;
   const std::vector<Body>* bodies_ = nullptr;  // between begin_step and finish_step
   const SolverContext* context_ = nullptr;     // between begin_step and finish_step
+  WorkerPool* pool_ = nullptr;                 // between begin_step and finish_step
   ContactColouring colouring_;
   BlockStorage<4> storage_4_;
   BlockStorage<8> storage_8_;
