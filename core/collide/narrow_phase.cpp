@@ -109,8 +109,8 @@ float pair_margin(const Body& a, const Body& b, const std::vector<float>& reach,
 // recycled, else its fresh manifold. The matching of pairs to old contacts is one merge walk
 // here; the rest is per pair.
 void run_pair_jobs(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
-                   const std::vector<float>& reach, const WorldSettings& settings,
-                   const std::vector<Contact>& contacts, WorkerPool* pool,
+                   const std::vector<float>& reach, const WorldSettings& settings, float dt,
+                   std::vector<Contact>& contacts, WorkerPool* pool,
                    std::vector<NarrowPhaseJob>& jobs) {
   jobs.resize(pairs.size());
   parallel_for(pool, pairs.size(), min_pairs_per_chunk, [&](std::size_t begin, std::size_t end) {
@@ -128,6 +128,7 @@ void run_pair_jobs(const std::vector<Body>& bodies, const std::vector<BodyPair>&
       NarrowPhaseJob& job = jobs[i];
       job.compound = a.compound || b.compound;
       job.recycle = false;
+      job.ghost = false;
       if (job.compound) continue;
       while (read < contacts.size() && precedes(contacts[read], pair)) ++read;
       // A single-shape pair's contact has children (0, 0): the first of the pair's contacts.
@@ -136,7 +137,16 @@ void run_pair_jobs(const std::vector<Body>& bodies, const std::vector<BodyPair>&
                                   contacts[read].child_b == 0;
       if (touched_before && may_recycle(a, b, contacts[read], settings.contact_recycle_distance,
                                         settings.speculative_margin)) {
+        // The walk's own updates of a kept contact, on the old one in place: no other pair
+        // reads it, and the walk copies it to its place in the new list.
+        Contact& contact = contacts[read];
         job.recycle = true;
+        recycle_manifold(a, b, contact);
+        job.ghost = is_ghost(a, b, contact, settings, dt);
+        if (job.ghost) continue;
+        contact.recycled = true;
+        forget_bounced_impulses(contact);
+        mix_materials(a, b, settings, contact);
         continue;
       }
       job.manifold = collide(a.shape, a.transform, b.shape, b.transform,
@@ -155,7 +165,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
   // The pairs' independent parts first, side by side (their answers are the walk's own).
   const NarrowPhaseJob* job = nullptr;  // the current pair's, during the walk
   if (pool != nullptr && jobs != nullptr) {
-    run_pair_jobs(bodies, pairs, reach, settings, contacts, pool, *jobs);
+    run_pair_jobs(bodies, pairs, reach, settings, dt, contacts, pool, *jobs);
   }
   // This step's contacts are written over last step's in the same list: `write` never passes
   // `read` while every new contact lands on a slot already read, so a kept contact is updated
@@ -201,7 +211,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
     const bool touched_before = read < old_size() && old_at(read).body_a == a.id &&
                                 old_at(read).body_b == b.id && old_at(read).child_a == child_a &&
                                 old_at(read).child_b == child_b;
-    const bool recycle = job != nullptr ? job->recycle
+    const bool recycle = job != nullptr ? touched_before && job->recycle
                                         : touched_before &&
                                               may_recycle(a, b, old_at(read),
                                                           settings.contact_recycle_distance,
@@ -210,15 +220,17 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       const std::size_t old_index = read;
       Contact& contact = place(/*replaces_old=*/true);
       if (&contact != &old_at(old_index)) contact = old_at(old_index);
-      recycle_manifold(a, b, contact);
-      if (is_ghost(a, b, contact, settings, dt)) {
+      if (job == nullptr) recycle_manifold(a, b, contact);  // else done by the workers
+      if (job != nullptr ? job->ghost : is_ghost(a, b, contact, settings, dt)) {
         // Its slot is left to the next contact placed (or dropped when the list ends).
         if (spilled) contacts.pop_back();
         return;
       }
-      contact.recycled = true;
-      forget_bounced_impulses(contact);
-      mix_materials(a, b, settings, contact);
+      if (job == nullptr) {
+        contact.recycled = true;
+        forget_bounced_impulses(contact);
+        mix_materials(a, b, settings, contact);
+      }
       point_total += contact.point_count;
       if (visitor) visitor->visit(write, contact);
       ++write;

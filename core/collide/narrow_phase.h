@@ -20,8 +20,13 @@ namespace impulse2d {
 struct NarrowPhaseJob {
   /// The pair's fresh manifold (when neither `recycle` nor `compound`).
   Manifold manifold;
-  /// Last step's contact of the pair may be kept (`may_recycle`): no collision was made.
+  /// Last step's contact of the pair may be kept (`may_recycle`): no collision was made, and
+  /// that contact, still in the old list, was already updated as the walk would update it
+  /// (its manifold recycled and, unless `ghost`, its materials mixed).
   bool recycle = false;
+  /// With `recycle`: the updated contact would only stop bodies passing each other (it is left
+  /// out).
+  bool ghost = false;
   /// A body of the pair is compound: the walk collides its pairs of shapes itself.
   bool compound = false;
 };
