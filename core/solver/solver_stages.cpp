@@ -97,9 +97,9 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
   if (!world_.bounds_current) update_bounds(world_.bodies, world_.alive, pool_);
   world_.bounds_current = false;
   compute_speculative_reach(world_.bodies, world_.alive, world_.settings, dt,
-                            world_.speculative_reach);
+                            world_.speculative_reach, pool_);
   compute_speculative_bounds(world_.bodies, world_.alive, world_.speculative_reach,
-                             world_.settings.speculative_margin, world_.speculative_bounds);
+                             world_.settings.speculative_margin, world_.speculative_bounds, pool_);
   world_.broad_phase.find_pairs(world_.bodies, world_.alive, world_.speculative_bounds,
                                 world_.settings.broad_phase, world_.pairs);
   if (!world_.unconnected_pairs.empty()) drop_jointed_pairs(world_.unconnected_pairs, world_.pairs);
