@@ -1,16 +1,18 @@
 // The multi-threaded step (issue 33): time per step at several worker counts
 // (`WorldSettings::worker_count`) on Box2D v3's large pyramid (5050 boxes) and many pyramids
 // (400 pyramids of 10 rows, 22 000 boxes), bench_compare's scenes at the default settings.
-// Each worker count steps its own world of the scene, one after another in the same run;
-// per count it prints
+// Each worker count steps its own world of the scene, one after another in the same run, in
+// `rounds` rounds (1, 2, 4, 1, 2, 4, ...: a machine whose load drifts slows every count alike);
+// per count it prints the median over the rounds of
 //   wall ms   - the median wall-clock time of a step
 //   cpu ms    - the median CPU time of the calling thread in a step
 //   all cpu   - the process's CPU time (every thread) per step, the mean over the steps
-//   speed-up  - one worker's wall ms over this count's
+//   speed-up  - one worker's wall ms over this count's, in the same round
 //   hash      - whether the state after the last step is bit-identical to one worker's
 // and the core count (std::thread::hardware_concurrency), the CPU and the load average before
 // and after (the machine's other work slows every count). Usage:
 //   bench_workers [--scene large_pyramid|many_pyramids|all] [--workers 1,2,4] [--steps N]
+//                 [--rounds R]
 // --steps overrides the scenes' own counts (large_pyramid 500, many_pyramids 200, Box2D v3's).
 #include "bench/compare/compare_scene.h"
 #include "core/world.h"
@@ -95,6 +97,7 @@ int main(int argc, char** argv) {
   std::vector<int> worker_counts{1, 2, 4};
   std::string which = "all";
   int steps = 0;
+  int rounds = 3;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--workers" && i + 1 < argc) {
@@ -116,6 +119,12 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_workers: --scene must be large_pyramid, many_pyramids or all\n");
         return 2;
       }
+    } else if (arg == "--rounds" && i + 1 < argc) {
+      rounds = std::atoi(argv[++i]);
+      if (rounds < 1 || rounds > 100) {
+        std::fprintf(stderr, "bench_workers: --rounds must be 1..100\n");
+        return 2;
+      }
     } else if (arg == "--steps" && i + 1 < argc) {
       steps = std::atoi(argv[++i]);
       if (steps < 1 || steps > 100000) {
@@ -123,7 +132,7 @@ int main(int argc, char** argv) {
         return 2;
       }
     } else {
-      std::fprintf(stderr, "usage: bench_workers [--scene large_pyramid|many_pyramids|all] [--workers 1,2,4] [--steps N]\n");
+      std::fprintf(stderr, "usage: bench_workers [--scene large_pyramid|many_pyramids|all] [--workers 1,2,4] [--steps N] [--rounds R]\n");
       return 2;
     }
   }
@@ -135,17 +144,29 @@ int main(int argc, char** argv) {
   std::printf("load average before: %s\n", load_average().c_str());
   for (const compare::CompareScene& scene : scenes) {
     const int scene_steps = steps > 0 ? steps : scene.steps;
-    std::printf("\n%s: %zu bodies, %d steps of 1/60 s, default settings (soft step)\n", scene.name.c_str(),
-                scene.bodies.size(), scene_steps);
-    std::printf("%8s %9s %9s %9s %9s %s\n", "workers", "wall ms", "cpu ms", "all cpu", "speed-up", "hash = 1 worker's");
-    Timing single;
-    for (int workers : worker_counts) {
-      const Timing t = run(scene, workers, scene_steps);
-      if (workers == 1) single = t;
-      std::printf("%8d %9.3f %9.3f %9.3f %9.2f %s\n", workers, t.wall_ms, t.thread_cpu_ms, t.process_cpu_ms,
-                  single.wall_ms / t.wall_ms, t.hash == single.hash ? "yes" : "NO");
-      std::fflush(stdout);
+    std::printf("\n%s: %zu bodies, %d steps of 1/60 s, default settings (soft step), %d rounds\n",
+                scene.name.c_str(), scene.bodies.size(), scene_steps, rounds);
+    const std::size_t counts = worker_counts.size();
+    std::vector<std::vector<double>> wall(counts), cpu(counts), all_cpu(counts), speed_up(counts);
+    std::vector<bool> same(counts, true);
+    for (int round = 0; round < rounds; ++round) {
+      Timing single;
+      for (std::size_t k = 0; k < counts; ++k) {
+        const Timing t = run(scene, worker_counts[k], scene_steps);
+        if (k == 0) single = t;
+        wall[k].push_back(t.wall_ms);
+        cpu[k].push_back(t.thread_cpu_ms);
+        all_cpu[k].push_back(t.process_cpu_ms);
+        speed_up[k].push_back(single.wall_ms / t.wall_ms);
+        same[k] = same[k] && t.hash == single.hash;
+      }
     }
+    std::printf("%8s %9s %9s %9s %9s %s\n", "workers", "wall ms", "cpu ms", "all cpu", "speed-up", "hash = 1 worker's");
+    for (std::size_t k = 0; k < counts; ++k) {
+      std::printf("%8d %9.3f %9.3f %9.3f %9.2f %s\n", worker_counts[k], median(wall[k]), median(cpu[k]),
+                  median(all_cpu[k]), median(speed_up[k]), same[k] ? "yes" : "NO");
+    }
+    std::fflush(stdout);
   }
   std::printf("\nload average after: %s\n", load_average().c_str());
   return 0;
