@@ -9,6 +9,7 @@
 //   all cpu   - the process's CPU time (every thread) per step, the mean over the steps
 //   speed-up  - one worker's wall ms over this count's, in the same round
 //   hash      - whether the state after the last step is bit-identical to one worker's
+//               (exit status 1 when it is not, for any count)
 // and the core count (std::thread::hardware_concurrency), the CPU and the load average before
 // and after (the machine's other work slows every count). Usage:
 //   bench_workers [--scene large_pyramid|many_pyramids|all] [--workers 1,2,4] [--steps N]
@@ -142,6 +143,7 @@ int main(int argc, char** argv) {
   std::printf("cores: %u (std::thread::hardware_concurrency); %s\n", std::thread::hardware_concurrency(),
               first_line_with("/proc/cpuinfo", "model name").c_str());
   std::printf("load average before: %s\n", load_average().c_str());
+  bool all_same = true;
   for (const compare::CompareScene& scene : scenes) {
     const int scene_steps = steps > 0 ? steps : scene.steps;
     std::printf("\n%s: %zu bodies, %d steps of 1/60 s, default settings (soft step), %d rounds\n",
@@ -165,9 +167,10 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < counts; ++k) {
       std::printf("%8d %9.3f %9.3f %9.3f %9.2f %s\n", worker_counts[k], median(wall[k]), median(cpu[k]),
                   median(all_cpu[k]), median(speed_up[k]), same[k] ? "yes" : "NO");
+      all_same = all_same && same[k];
     }
     std::fflush(stdout);
   }
   std::printf("\nload average after: %s\n", load_average().c_str());
-  return 0;
+  return all_same ? 0 : 1;
 }
