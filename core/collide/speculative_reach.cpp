@@ -34,18 +34,18 @@ void compute_speculative_reach(const std::vector<Body>& bodies,
   if (!(settings.speculative_margin > 0.0f)) return;
   const float gravity = std::sqrt(length_squared(settings.gravity));
   parallel_for(pool, bodies.size(), 256, [&](std::size_t begin, std::size_t end) {
-  for (std::size_t i = begin; i < end; ++i) {
-    const Body& body = bodies[i];
-    if (!alive[i] || body.type == BodyType::Static || !body.awake) continue;
-    const float gravity_speed =
-        body.type == BodyType::Dynamic ? gravity * std::fabs(body.gravity_scale) * dt : 0.0f;
-    const float speed = std::sqrt(length_squared(body.linear_velocity)) + gravity_speed;
-    const float turning =
-        settings.enable_rotation
-            ? std::fabs(body.angular_velocity) * (body.compound ? body.extent : rotation_reach(body.shape))
-            : 0.0f;
-    reach[i] = (speed + turning) * dt;
-  }
+    for (std::size_t i = begin; i < end; ++i) {
+      const Body& body = bodies[i];
+      if (!alive[i] || body.type == BodyType::Static || !body.awake) continue;
+      const float gravity_speed =
+          body.type == BodyType::Dynamic ? gravity * std::fabs(body.gravity_scale) * dt : 0.0f;
+      const float speed = std::sqrt(length_squared(body.linear_velocity)) + gravity_speed;
+      const float turning =
+          settings.enable_rotation
+              ? std::fabs(body.angular_velocity) * (body.compound ? body.extent : rotation_reach(body.shape))
+              : 0.0f;
+      reach[i] = (speed + turning) * dt;
+    }
   });
 }
 

@@ -119,19 +119,19 @@ void SolverBodies::integrate_positions_of(float dt, std::size_t begin, std::size
 
 void SolverBodies::store(std::vector<Body>& bodies, WorkerPool* pool) const {
   parallel_for(pool, states_.size(), min_slots_per_chunk, [&](std::size_t begin, std::size_t end) {
-  for (std::size_t i = begin; i < end; ++i) {
-    const std::uint32_t flags = integration_[i].flags;
-    const SolverBody& state = states_[i];
-    Body& body = bodies[i];
-    if ((flags & flag_solved) != 0) {
-      body.linear_velocity = vec2(state.velocity_x, state.velocity_y);
-      body.angular_velocity = state.angular_velocity;
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint32_t flags = integration_[i].flags;
+      const SolverBody& state = states_[i];
+      Body& body = bodies[i];
+      if ((flags & flag_solved) != 0) {
+        body.linear_velocity = vec2(state.velocity_x, state.velocity_y);
+        body.angular_velocity = state.angular_velocity;
+      }
+      if ((flags & flag_moves) == 0) continue;
+      body.angle = state.angle;
+      body.transform.position = vec2(state.position_x, state.position_y);
+      body.transform.rotation = Rotation{state.cosine, state.sine};
     }
-    if ((flags & flag_moves) == 0) continue;
-    body.angle = state.angle;
-    body.transform.position = vec2(state.position_x, state.position_y);
-    body.transform.rotation = Rotation{state.cosine, state.sine};
-  }
   });
 }
 
