@@ -424,10 +424,14 @@ void World::step() {
   const Clock::time_point start = Clock::now();
   world.stats = StepStats{};
   world.diverged_bodies.clear();
-  for (Body& body : world.bodies) {
-    body.previous_position = body.transform.position;
-    body.previous_angle = body.angle;
-  }
+  WorkerPool* const pool = world.workers.get(world.settings.worker_count);  // null: one worker
+  parallel_for(pool, world.bodies.size(), 512, [&world](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      Body& body = world.bodies[i];
+      body.previous_position = body.transform.position;
+      body.previous_angle = body.angle;
+    }
+  });
   begin_step_events(world);
   if (!world.solver || world.solver_method != world.settings.solver) {
     world.solver = make_step_solver(world.settings.solver);
@@ -444,7 +448,7 @@ void World::step() {
     world.sleep_islands.update(world.bodies, world.alive, world.contacts, world.joints,
                                world.joint_alive, world.settings, world.settings.time_step);
   }
-  finish_bodies(world, world.workers.get(world.settings.worker_count));
+  finish_bodies(world, pool);
   collect_step_events(world);
   world.time += static_cast<double>(world.settings.time_step);
   ++world.step_count;

@@ -43,9 +43,10 @@ class SolverBodies {
   static constexpr std::uint32_t flag_turns = 4u;
 
   /// Loads every slot's state from `bodies` and resolves its integration for this step's
-  /// forces and the world's settings (gravity, rotation switch, speed limit).
+  /// forces and the world's settings (gravity, rotation switch, speed limit); with a `pool`,
+  /// the slots shared among its workers.
   void begin_step(const std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                  const WorldSettings& settings);
+                  const WorldSettings& settings, WorkerPool* pool = nullptr);
   /// `integrate_velocities` of integrate.h on the compact state, over `dt` seconds (the
   /// slots shared among `pool`'s workers when there is one: each slot is its own work).
   void integrate_velocities(float dt, WorkerPool* pool = nullptr);

@@ -139,7 +139,7 @@ void SolverStages::prepare_joints(float h, bool clear_impulses) {
 
 void SolverStages::begin_solver_bodies() {
   const Clock::time_point stage = Clock::now();
-  world_.solver_body_states.begin_step(world_.bodies, world_.alive, world_.settings);
+  world_.solver_body_states.begin_step(world_.bodies, world_.alive, world_.settings, pool_);
   world_.stats.integrate_ms += elapsed_ms(stage);
 }
 
