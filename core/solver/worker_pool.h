@@ -54,7 +54,7 @@ class WorkerPool {
  private:
   // The job word: job number (32 bits) | chunk count (16) | next chunk to claim (16).
   static std::uint64_t job_of(std::uint64_t word) { return word >> 32; }
-  // Claims and runs chunks of the job numbered `job` until none is left; false at once when
+  // Claims and runs chunks of the job numbered `job` until none is left; returns at once when
   // the word has moved on to another job.
   void run_chunks(std::uint64_t job);
   void worker_loop();
