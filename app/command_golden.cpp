@@ -8,6 +8,7 @@
 
 #include "app/command.h"
 #include "app/state_file.h"
+#include "app/strict_number_check.h"
 #include "scene/usage_error.h"
 #include "golden/scenes/golden_command.h"
 
@@ -52,6 +53,13 @@ Command add_golden_command(CLI::App& program, const ProgramOptions&) {
   frame->add_option("file", golden->frame_file, "scene file (.json)")->required();
   frame->add_option("name", arguments.frame, "golden frame name")->required();
   frame->add_option("--out,-o", arguments.out, "PNG to write")->required();
+  for (CLI::App* sub : {check, update, frame}) {
+    sub->add_option("--workers", arguments.workers,
+                    "threads sharing each physics step, 1..64 (frames and states are the same "
+                    "for any count)")
+        ->capture_default_str()
+        ->check(whole_number_check());
+  }
   frame->add_option("--load-state", golden->load_state,
                     "start from a world saved by `trace --save-state` of the same scene file "
                     "(the frame's step stays the golden's own; a state saved after it is refused)");

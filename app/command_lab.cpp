@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/command.h"
+#include "app/strict_number_check.h"
 #include "lab/lab_command.h"
 
 namespace impulse2d::demos {
@@ -38,6 +39,11 @@ Command add_lab_command(CLI::App& program, const ProgramOptions& options) {
   command->add_option("--shard", lab_arguments.shard,
                       "K/N: run every N-th configuration starting at the K-th (join with `lab merge`)")
       ->capture_default_str();
+  command->add_option("--workers", lab_arguments.workers,
+                      "threads sharing each step of the sweep's scenarios, 1..64 (same results, "
+                      "other timings)")
+      ->capture_default_str()
+      ->check(whole_number_check());
   command->add_flag("!--no-peers", lab_arguments.peers, "skip Box2D and Chipmunk");
   command->add_flag("!--no-charts", lab_arguments.charts, "write the CSVs only");
   command->add_flag("!--no-stability", lab_arguments.stability, "skip the stability map");

@@ -1,5 +1,6 @@
 /// @file scene_command.cpp
 #include "app/scene_command.h"
+#include "app/strict_number_check.h"
 
 #include <CLI/CLI.hpp>
 #include <optional>
@@ -22,6 +23,11 @@ void add_scene_options(CLI::App& command, SceneArguments& arguments, bool scene_
       ->allow_extra_args(false);
   command.add_flag("--strict", arguments.strict,
                    "a body that diverges (non-finite state) is an error (exit 1), not a warning");
+  command.add_option("--workers", arguments.workers,
+                     "threads sharing each physics step, 1..64 (the states are bit-identical "
+                     "for any count)")
+      ->capture_default_str()
+      ->check(whole_number_check());
 }
 
 void add_backend_option(CLI::App& command, std::string& backend) {
@@ -47,6 +53,10 @@ ResolvedScene resolve(const SceneArguments& arguments, bool check_events) {
     throw UsageError("--steps " + std::to_string(resolved.steps) + ": must be 0.." +
                      std::to_string(limits::max_steps));
   }
+  if (arguments.workers < 1 || arguments.workers > 64) {
+    throw UsageError("--workers " + std::to_string(arguments.workers) + ": must be 1..64");
+  }
+  resolved.scene.settings.worker_count = arguments.workers;
   if (check_events) check_events_in_run(resolved, resolved.steps);
   return resolved;
 }

@@ -28,6 +28,9 @@ struct SceneArguments {
   std::vector<std::string> params;    ///< "key=value" overrides
   std::optional<std::int64_t> steps;  ///< run length override
   bool strict = false;                ///< a diverged body is an error, not a warning
+  /// Threads sharing each step (`WorldSettings::worker_count`, `--workers`): 1..64. The states
+  /// are bit-identical for any count; only the speed changes.
+  int workers = 1;
 };
 
 /// A scene resolved from the arguments together with its parameters.
@@ -37,14 +40,15 @@ struct ResolvedScene {
   std::int64_t steps = 0;   ///< length of the run
 };
 
-/// Adds the scene argument (`required` or not), `--param` and `--strict` to `command`.
+/// Adds the scene argument (`required` or not), `--param`, `--strict` and `--workers` to
+/// `command`.
 void add_scene_options(CLI::App& command, SceneArguments& arguments, bool scene_required);
 /// Adds `--backend osmesa|egl` to a command that renders.
 void add_backend_option(CLI::App& command, std::string& backend);
 /// The help text of `--overlays`: every overlay with its description.
 std::string overlay_help();
 
-/// Resolves the scene, applies the parameters and checks the length, and (with
+/// Resolves the scene, applies the parameters and the worker count, checks the length, and (with
 /// `check_events`) the events against it (`check_events_in_run` up to `steps`). Throws
 /// `UsageError`.
 ResolvedScene resolve(const SceneArguments& arguments, bool check_events = true);

@@ -93,6 +93,7 @@ void validate_settings(const WorldSettings& s) {
           "must be finite and >= 0");
   require(finite(s.max_linear_speed) && s.max_linear_speed > 0.0f, "max_linear_speed",
           "must be finite and > 0");
+  require(s.worker_count >= 1 && s.worker_count <= 64, "worker_count", "must be in 1..64");
 }
 
 }  // namespace impulse2d

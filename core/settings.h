@@ -136,6 +136,14 @@ struct WorldSettings {
   float sleep_angular_speed = 0.05f; ///< rad/s below which a body may sleep
   float time_to_sleep = 0.5f;        ///< seconds a body must stay slow before it sleeps
   float max_linear_speed = 400.0f;   ///< m/s clamp against blow-ups
+
+  /// Threads that share a step, the calling one included: 1..64. Above 1 the world starts
+  /// `worker_count - 1` threads of its own on its first step (joined when it is destroyed; a
+  /// copy starts its own), and the narrow phase's collisions, the soft step's body integration
+  /// and the blocks of each contact colour, and the bounds update run on them (docs/engine.md,
+  /// "Threads"). The state after every step is bit-identical whatever the count; only the speed
+  /// changes. Not saved in snapshots or scene files: it is how to run, not what to simulate.
+  int worker_count = 1;
 };
 
 /// The default settings with `method` at the sub-steps and passes it is measured at:

@@ -55,22 +55,43 @@ Body& checked_body(WorldState& world, BodyId id, const char* caller) {
 // One walk over the bodies after the solve: forces cleared, diverged bodies put back where the
 // step began (and reported), bounds refreshed and covered by the broad phase (queries search
 // its trees; the next step's contacts start from these bounds), awake bodies counted.
-void finish_bodies(WorldState& world) {
+// With a `pool`, the bounds are computed side by side on its workers between a first walk
+// (forces, diverged bodies) and a last one (broad phase, count), in slot order as with one.
+void finish_bodies(WorldState& world, WorkerPool* pool) {
+  auto restore_diverged = [&world](Body& body) {
+    const bool finite = is_finite(body.transform.position) && std::isfinite(body.angle) &&
+                        is_finite(body.linear_velocity) && std::isfinite(body.angular_velocity);
+    if (finite) return;
+    body.transform = Transform{body.previous_position, Rotation::from_angle(body.previous_angle)};
+    body.angle = body.previous_angle;
+    body.linear_velocity = vec2(0.0f);
+    body.angular_velocity = 0.0f;
+    body.awake = false;
+    world.diverged_bodies.push_back(body.id);
+  };
+  if (pool != nullptr) {
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
+      Body& body = world.bodies[i];
+      body.force = vec2(0.0f);
+      body.torque = 0.0f;
+      if (world.alive[i]) restore_diverged(body);
+    }
+    update_bounds(world.bodies, world.alive, pool);
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
+      if (!world.alive[i]) continue;
+      const Body& body = world.bodies[i];
+      world.broad_phase.cover(i, body.aabb);
+      if (body.awake && body.type != BodyType::Static) ++world.stats.awake_body_count;
+    }
+    world.bounds_current = true;
+    return;
+  }
   for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
     Body& body = world.bodies[i];
     body.force = vec2(0.0f);
     body.torque = 0.0f;
     if (!world.alive[i]) continue;
-    const bool finite = is_finite(body.transform.position) && std::isfinite(body.angle) &&
-                        is_finite(body.linear_velocity) && std::isfinite(body.angular_velocity);
-    if (!finite) {
-      body.transform = Transform{body.previous_position, Rotation::from_angle(body.previous_angle)};
-      body.angle = body.previous_angle;
-      body.linear_velocity = vec2(0.0f);
-      body.angular_velocity = 0.0f;
-      body.awake = false;
-      world.diverged_bodies.push_back(body.id);
-    }
+    restore_diverged(body);
     body.aabb = body_aabb(body);
     world.broad_phase.cover(i, body.aabb);
     if (body.awake && body.type != BodyType::Static) ++world.stats.awake_body_count;
@@ -403,10 +424,14 @@ void World::step() {
   const Clock::time_point start = Clock::now();
   world.stats = StepStats{};
   world.diverged_bodies.clear();
-  for (Body& body : world.bodies) {
-    body.previous_position = body.transform.position;
-    body.previous_angle = body.angle;
-  }
+  WorkerPool* const pool = world.workers.get(world.settings.worker_count);  // null: one worker
+  parallel_for(pool, world.bodies.size(), 512, [&world](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      Body& body = world.bodies[i];
+      body.previous_position = body.transform.position;
+      body.previous_angle = body.angle;
+    }
+  });
   begin_step_events(world);
   if (!world.solver || world.solver_method != world.settings.solver) {
     world.solver = make_step_solver(world.settings.solver);
@@ -423,7 +448,7 @@ void World::step() {
     world.sleep_islands.update(world.bodies, world.alive, world.contacts, world.joints,
                                world.joint_alive, world.settings, world.settings.time_step);
   }
-  finish_bodies(world);
+  finish_bodies(world, pool);
   collect_step_events(world);
   world.time += static_cast<double>(world.settings.time_step);
   ++world.step_count;

@@ -75,7 +75,11 @@ LabPlan make_lab_plan(const LabArguments& arguments) {
   }
   const std::string directory =
       arguments.scenarios.empty() ? default_scenario_directory() : arguments.scenarios;
+  if (arguments.workers < 1 || arguments.workers > 64) {
+    throw demos::UsageError("--workers " + std::to_string(arguments.workers) + ": must be 1..64");
+  }
   plan.scenarios = load_lab_scenarios(directory);
+  for (LabScenario& scenario : plan.scenarios) scenario.scene.settings.worker_count = arguments.workers;
   if (!arguments.only.empty()) {
     std::vector<LabScenario> chosen;
     for (const std::string& name : arguments.only) {

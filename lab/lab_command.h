@@ -29,6 +29,9 @@ struct LabArguments {
   bool clean = false;                   ///< replace another run's results found in `out`
   bool force = false;                   ///< run even above the work bound (`max_lab_runs`)
   bool quiet = false;                   ///< no progress bars on stderr
+  /// Threads sharing each step of the sweep's scenarios (`WorldSettings::worker_count`), 1..64;
+  /// the results are the same for any count, the timings are not.
+  int workers = 1;
 };
 
 /// `impulse2d lab merge`.

@@ -91,10 +91,82 @@ bool is_ghost(const Body& a, const Body& b, const Contact& contact, const WorldS
 
 }  // namespace
 
+namespace {
+
+// Pairs a worker takes at least at a time.
+constexpr std::size_t min_pairs_per_chunk = 32;
+
+// The speculative margin (metres) pair (a, b) is collided with.
+float pair_margin(const Body& a, const Body& b, const std::vector<float>& reach,
+                  const WorldSettings& settings, const BodyPair& pair) {
+  return settings.speculative_margin > 0.0f && a.speculative && b.speculative
+             ? settings.speculative_margin + reach[pair.first] + reach[pair.second]
+             : 0.0f;
+}
+
+// Fills `jobs` (one per pair) on `pool`'s workers: for each pair of single-shape bodies,
+// whether last step's contact of the pair (`contacts`, sorted by pair, still unchanged) may be
+// recycled, else its fresh manifold. The matching of pairs to old contacts is one merge walk
+// here; the rest is per pair.
+void run_pair_jobs(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
+                   const std::vector<float>& reach, const WorldSettings& settings, float dt,
+                   std::vector<Contact>& contacts, WorkerPool* pool,
+                   std::vector<NarrowPhaseJob>& jobs) {
+  jobs.resize(pairs.size());
+  parallel_for(pool, pairs.size(), min_pairs_per_chunk, [&](std::size_t begin, std::size_t end) {
+    // Each chunk finds its first pair's place among the old contacts by bisection, then walks.
+    const auto precedes = [](const Contact& old, const BodyPair& pair) {
+      if (old.body_a.index != pair.first) return old.body_a.index < pair.first;
+      return old.body_b.index < pair.second;  // (0, 0) comes first among a pair's children
+    };
+    std::size_t read = static_cast<std::size_t>(
+        std::lower_bound(contacts.begin(), contacts.end(), pairs[begin], precedes) - contacts.begin());
+    for (std::size_t i = begin; i < end; ++i) {
+      const BodyPair& pair = pairs[i];
+      const Body& a = bodies[pair.first];
+      const Body& b = bodies[pair.second];
+      NarrowPhaseJob& job = jobs[i];
+      job.compound = a.compound || b.compound;
+      job.recycle = false;
+      job.ghost = false;
+      if (job.compound) continue;
+      while (read < contacts.size() && precedes(contacts[read], pair)) ++read;
+      // A single-shape pair's contact has children (0, 0): the first of the pair's contacts.
+      const bool touched_before = read < contacts.size() && contacts[read].body_a == a.id &&
+                                  contacts[read].body_b == b.id && contacts[read].child_a == 0 &&
+                                  contacts[read].child_b == 0;
+      if (touched_before && may_recycle(a, b, contacts[read], settings.contact_recycle_distance,
+                                        settings.speculative_margin)) {
+        // The walk's own updates of a kept contact, on the old one in place: no other pair
+        // reads it, and the walk copies it to its place in the new list.
+        Contact& contact = contacts[read];
+        job.recycle = true;
+        recycle_manifold(a, b, contact);
+        job.ghost = is_ghost(a, b, contact, settings, dt);
+        if (job.ghost) continue;
+        contact.recycled = true;
+        forget_bounced_impulses(contact);
+        mix_materials(a, b, settings, contact);
+        continue;
+      }
+      job.manifold = collide(a.shape, a.transform, b.shape, b.transform,
+                             pair_margin(a, b, reach, settings, pair));
+    }
+  });
+}
+
+}  // namespace
+
 int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>& pairs,
                     const std::vector<float>& reach, const WorldSettings& settings, float dt,
                     const ContactFilter& filter, std::vector<Contact>& contacts,
-                    std::vector<Contact>& spill, ContactVisitor* visitor) {
+                    std::vector<Contact>& spill, ContactVisitor* visitor, WorkerPool* pool,
+                    std::vector<NarrowPhaseJob>* jobs) {
+  // The pairs' independent parts first, side by side (their answers are the walk's own).
+  const NarrowPhaseJob* job = nullptr;  // the current pair's, during the walk
+  if (pool != nullptr && jobs != nullptr) {
+    run_pair_jobs(bodies, pairs, reach, settings, dt, contacts, pool, *jobs);
+  }
   // This step's contacts are written over last step's in the same list: `write` never passes
   // `read` while every new contact lands on a slot already read, so a kept contact is updated
   // where it lies (no copy). A new contact with no read slot to land on moves the unread rest
@@ -139,26 +211,33 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
     const bool touched_before = read < old_size() && old_at(read).body_a == a.id &&
                                 old_at(read).body_b == b.id && old_at(read).child_a == child_a &&
                                 old_at(read).child_b == child_b;
-    if (touched_before && may_recycle(a, b, old_at(read), settings.contact_recycle_distance,
-                                      settings.speculative_margin)) {
+    const bool recycle = job != nullptr ? touched_before && job->recycle
+                                        : touched_before &&
+                                              may_recycle(a, b, old_at(read),
+                                                          settings.contact_recycle_distance,
+                                                          settings.speculative_margin);
+    if (recycle) {
       const std::size_t old_index = read;
       Contact& contact = place(/*replaces_old=*/true);
       if (&contact != &old_at(old_index)) contact = old_at(old_index);
-      recycle_manifold(a, b, contact);
-      if (is_ghost(a, b, contact, settings, dt)) {
+      if (job == nullptr) recycle_manifold(a, b, contact);  // else done by the workers
+      if (job != nullptr ? job->ghost : is_ghost(a, b, contact, settings, dt)) {
         // Its slot is left to the next contact placed (or dropped when the list ends).
         if (spilled) contacts.pop_back();
         return;
       }
-      contact.recycled = true;
-      forget_bounced_impulses(contact);
-      mix_materials(a, b, settings, contact);
+      if (job == nullptr) {
+        contact.recycled = true;
+        forget_bounced_impulses(contact);
+        mix_materials(a, b, settings, contact);
+      }
       point_total += contact.point_count;
       if (visitor) visitor->visit(write, contact);
       ++write;
       return;
     }
-    const Manifold manifold = a.compound || b.compound
+    const Manifold manifold = job != nullptr ? job->manifold
+                              : a.compound || b.compound
                                   ? collide(shape_of(a, child_a), shape_transform(a, child_a),
                                             shape_of(b, child_b), shape_transform(b, child_b), margin)
                                   : collide(a.shape, a.transform, b.shape, b.transform, margin);
@@ -205,16 +284,18 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
     ++write;
   };
 
-  for (const BodyPair& pair : pairs) {
+  const bool have_jobs = pool != nullptr && jobs != nullptr;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const BodyPair& pair = pairs[p];
     const Body& a = bodies[pair.first];
     const Body& b = bodies[pair.second];
-    const float margin = settings.speculative_margin > 0.0f && a.speculative && b.speculative
-                             ? settings.speculative_margin + reach[pair.first] + reach[pair.second]
-                             : 0.0f;
+    const float margin = pair_margin(a, b, reach, settings, pair);
     if (!a.compound && !b.compound) {
+      job = have_jobs ? &(*jobs)[p] : nullptr;
       update_pair(a, b, 0, 0, margin);
       continue;
     }
+    job = nullptr;
     // A compound body: every pair of solid shapes whose layers meet and whose bounds come
     // within the margin, in (A's shape, B's shape) order.
     const int count_a = shape_count_of(a);

@@ -21,10 +21,13 @@ vec2 free_acceleration(const Body& body, vec2 gravity) {
 
 }  // namespace
 
+PairMass pair_mass_of(const Body& a, const Body& b, const SolverContext& context) {
+  return PairMass{a.inverse_mass, b.inverse_mass, context.rotation ? a.inverse_inertia : 0.0f,
+                  context.rotation ? b.inverse_inertia : 0.0f};
+}
+
 void prepare_contact(Contact& contact, const Body& a, const Body& b, const SolverContext& context) {
-  contact.mass = PairMass{a.inverse_mass, b.inverse_mass,
-                          context.rotation ? a.inverse_inertia : 0.0f,
-                          context.rotation ? b.inverse_inertia : 0.0f};
+  contact.mass = pair_mass_of(a, b, context);
   const vec2 normal = contact.normal;
   const vec2 tangent = tangent_of(normal);
   contact.approach_acceleration =

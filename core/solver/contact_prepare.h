@@ -15,6 +15,10 @@ namespace impulse2d {
 /// solvers that prepare while they walk the list for something else).
 void prepare_contact(Contact& contact, const Body& a, const Body& b, const SolverContext& context);
 
+/// The `PairMass` `prepare_contact` gives a contact between `a` and `b` (all the colouring
+/// reads of a prepared contact).
+PairMass pair_mass_of(const Body& a, const Body& b, const SolverContext& context);
+
 /// Computes every enabled contact's pair masses, each point's anchors (world and local),
 /// effective masses along the normal and tangent, and the contact's closing acceleration from
 /// gravity and applied forces, and the slip it carries into the step. Call it before this

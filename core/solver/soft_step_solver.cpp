@@ -28,7 +28,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   WideContactSolver& wide = stages.solver_wide_contacts();
   // Once: the sub-steps track each point's separation through its anchors. Each contact is
   // prepared and coloured as the narrow phase finishes it, while it is in the cache.
-  wide.begin_step(bodies, context, context.solver_lanes);
+  wide.begin_step(bodies, context, context.solver_lanes, stages.workers());
   stages.find_contacts(context.time_step, &wide);
   std::vector<Contact>& contacts = stages.solver_contacts();
   wide.finish_step(contacts);
@@ -59,13 +59,13 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
       wide.load_points(contacts);
     }
     if (joints && context.warm_starting) warm_start_joints(joint_list, states.states());
-    if (context.warm_starting) wide.warm_start(states.states());
+    if (context.warm_starting) wide.warm_start(states.states(), stages.workers());
     joint_pass.use_bias = true;
     for (int i = 0; i < context.velocity_iterations; ++i) {
       for (int pass = 0; joints && pass < kJointPasses; ++pass) {
         solve_joints(joint_list, states.states(), joint_pass);
       }
-      wide.solve(context, /*use_bias=*/true, states.states());
+      wide.solve(context, /*use_bias=*/true, states.states(), stages.workers());
     }
     if (shock) {
       wide.store_impulses(contacts);
@@ -81,7 +81,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
       for (int pass = 0; joints && pass < kJointPasses; ++pass) {
         solve_joints(joint_list, states.states(), joint_pass);
       }
-      wide.solve(context, /*use_bias=*/false, states.states());  // relax
+      wide.solve(context, /*use_bias=*/false, states.states(), stages.workers());  // relax
     }
     if (may_bounce) {
       wide.store_impulses(contacts);
@@ -91,7 +91,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
       wide.load_points(contacts);
     }
   }
-  states.store(bodies);
+  states.store(bodies, stages.workers());
   if (states.has_bullets()) stages.sweep_bullets(context.time_step);
   // One walk in the list's order writes the impulses back and then, with friction, switches
   // each contact between sticking and sliding (the switch reads them).

@@ -3,50 +3,71 @@
 #include "core/solver/integrate.h"
 #include "core/trig.h"
 
+#include <atomic>
+
 namespace impulse2d {
+
+namespace {
+// Body slots a worker takes at least at a time.
+constexpr std::size_t min_slots_per_chunk = 256;
+}  // namespace
 
 void SolverBodies::begin_step(const std::vector<Body>& bodies,
                               const std::vector<std::uint8_t>& alive,
-                              const WorldSettings& settings) {
+                              const WorldSettings& settings, WorkerPool* pool) {
   states_.resize(bodies.size());
   integration_.resize(bodies.size());
   max_linear_speed_ = settings.max_linear_speed;
-  has_bullets_ = false;
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const Body& body = bodies[i];
-    BodyIntegration& integration = integration_[i];
-    integration.flags = 0;
-    SolverBody& state = states_[i];
-    state.velocity_x = body.linear_velocity.x;
-    state.velocity_y = body.linear_velocity.y;
-    state.angular_velocity = body.angular_velocity;
-    state.angle = body.angle;
-    state.position_x = body.transform.position.x;
-    state.position_y = body.transform.position.y;
-    state.cosine = body.transform.rotation.cosine;
-    state.sine = body.transform.rotation.sine;
-    if (alive[i] && body.type == BodyType::Dynamic) integration.flags = flag_solved;
-    if (!alive[i] || !is_integrated(body)) continue;
-    const float inverse_inertia = effective_inverse_inertia(body, settings);
-    integration.flags |= flag_moves;
-    if (body.type == BodyType::Dynamic) {
-      integration.flags |= flag_accelerates;
-      const vec2 acceleration =
-          body.force * body.inverse_mass + settings.gravity * body.gravity_scale;
-      integration.acceleration_x = acceleration.x;
-      integration.acceleration_y = acceleration.y;
-      integration.angular_acceleration = body.torque * inverse_inertia;
-      integration.linear_damping = body.linear_damping;
-      integration.angular_damping = body.angular_damping;
+  // An OR of the slots' bullet flags: the same whichever worker sets it.
+  std::atomic<bool> has_bullets{false};
+  parallel_for(pool, bodies.size(), min_slots_per_chunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const Body& body = bodies[i];
+      BodyIntegration& integration = integration_[i];
+      integration.flags = 0;
+      SolverBody& state = states_[i];
+      state.velocity_x = body.linear_velocity.x;
+      state.velocity_y = body.linear_velocity.y;
+      state.angular_velocity = body.angular_velocity;
+      state.angle = body.angle;
+      state.position_x = body.transform.position.x;
+      state.position_y = body.transform.position.y;
+      state.cosine = body.transform.rotation.cosine;
+      state.sine = body.transform.rotation.sine;
+      if (alive[i] && body.type == BodyType::Dynamic) integration.flags = flag_solved;
+      if (!alive[i] || !is_integrated(body)) continue;
+      const float inverse_inertia = effective_inverse_inertia(body, settings);
+      integration.flags |= flag_moves;
+      if (body.type == BodyType::Dynamic) {
+        integration.flags |= flag_accelerates;
+        const vec2 acceleration =
+            body.force * body.inverse_mass + settings.gravity * body.gravity_scale;
+        integration.acceleration_x = acceleration.x;
+        integration.acceleration_y = acceleration.y;
+        integration.angular_acceleration = body.torque * inverse_inertia;
+        integration.linear_damping = body.linear_damping;
+        integration.angular_damping = body.angular_damping;
+      }
+      if (body.type != BodyType::Dynamic || inverse_inertia != 0.0f) integration.flags |= flag_turns;
+      if (body.is_bullet) has_bullets.store(true, std::memory_order_relaxed);
     }
-    if (body.type != BodyType::Dynamic || inverse_inertia != 0.0f) integration.flags |= flag_turns;
-    has_bullets_ = has_bullets_ || body.is_bullet;
-  }
+  });
+  has_bullets_ = has_bullets.load(std::memory_order_relaxed);
 }
 
-void SolverBodies::integrate_velocities(float dt) {
+void SolverBodies::integrate_velocities(float dt, WorkerPool* pool) {
+  parallel_for(pool, states_.size(), min_slots_per_chunk,
+               [&](std::size_t begin, std::size_t end) { integrate_velocities_of(dt, begin, end); });
+}
+
+void SolverBodies::integrate_positions(float dt, WorkerPool* pool) {
+  parallel_for(pool, states_.size(), min_slots_per_chunk,
+               [&](std::size_t begin, std::size_t end) { integrate_positions_of(dt, begin, end); });
+}
+
+void SolverBodies::integrate_velocities_of(float dt, std::size_t begin, std::size_t end) {
   const float max_speed_squared = max_linear_speed_ * max_linear_speed_;
-  for (std::size_t i = 0; i < states_.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const BodyIntegration& integration = integration_[i];
     if ((integration.flags & flag_accelerates) == 0) continue;
     SolverBody& state = states_[i];
@@ -68,7 +89,7 @@ void SolverBodies::integrate_velocities(float dt) {
   }
 }
 
-void SolverBodies::integrate_positions(float dt) {
+void SolverBodies::integrate_positions_of(float dt, std::size_t begin, std::size_t end) {
   // Turned bodies get their cosine and sine four at a time (`cos_sin_4`, bit for bit as
   // `Rotation::from_angle`).
   std::size_t turned[4];
@@ -83,7 +104,7 @@ void SolverBodies::integrate_positions(float dt) {
     }
     pending = 0;
   };
-  for (std::size_t i = 0; i < states_.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const std::uint32_t flags = integration_[i].flags;
     if ((flags & flag_moves) == 0) continue;
     SolverBody& state = states_[i];
@@ -102,20 +123,22 @@ void SolverBodies::integrate_positions(float dt) {
   rotate_pending();
 }
 
-void SolverBodies::store(std::vector<Body>& bodies) const {
-  for (std::size_t i = 0; i < states_.size(); ++i) {
-    const std::uint32_t flags = integration_[i].flags;
-    const SolverBody& state = states_[i];
-    Body& body = bodies[i];
-    if ((flags & flag_solved) != 0) {
-      body.linear_velocity = vec2(state.velocity_x, state.velocity_y);
-      body.angular_velocity = state.angular_velocity;
+void SolverBodies::store(std::vector<Body>& bodies, WorkerPool* pool) const {
+  parallel_for(pool, states_.size(), min_slots_per_chunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint32_t flags = integration_[i].flags;
+      const SolverBody& state = states_[i];
+      Body& body = bodies[i];
+      if ((flags & flag_solved) != 0) {
+        body.linear_velocity = vec2(state.velocity_x, state.velocity_y);
+        body.angular_velocity = state.angular_velocity;
+      }
+      if ((flags & flag_moves) == 0) continue;
+      body.angle = state.angle;
+      body.transform.position = vec2(state.position_x, state.position_y);
+      body.transform.rotation = Rotation{state.cosine, state.sine};
     }
-    if ((flags & flag_moves) == 0) continue;
-    body.angle = state.angle;
-    body.transform.position = vec2(state.position_x, state.position_y);
-    body.transform.rotation = Rotation{state.cosine, state.sine};
-  }
+  });
 }
 
 void SolverBodies::load(const std::vector<Body>& bodies) {

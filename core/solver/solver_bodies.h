@@ -10,6 +10,7 @@
 #include "core/solver/body_state.h"
 #include "core/settings.h"
 #include "core/solver/solver_body.h"
+#include "core/solver/worker_pool.h"
 
 #include <cstdint>
 #include <vector>
@@ -42,16 +43,19 @@ class SolverBodies {
   static constexpr std::uint32_t flag_turns = 4u;
 
   /// Loads every slot's state from `bodies` and resolves its integration for this step's
-  /// forces and the world's settings (gravity, rotation switch, speed limit).
+  /// forces and the world's settings (gravity, rotation switch, speed limit); with a `pool`,
+  /// the slots shared among its workers.
   void begin_step(const std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                  const WorldSettings& settings);
-  /// `integrate_velocities` of integrate.h on the compact state, over `dt` seconds.
-  void integrate_velocities(float dt);
-  /// `integrate_positions` of integrate.h on the compact state, over `dt` seconds.
-  void integrate_positions(float dt);
+                  const WorldSettings& settings, WorkerPool* pool = nullptr);
+  /// `integrate_velocities` of integrate.h on the compact state, over `dt` seconds (the
+  /// slots shared among `pool`'s workers when there is one: each slot is its own work).
+  void integrate_velocities(float dt, WorkerPool* pool = nullptr);
+  /// `integrate_positions` of integrate.h on the compact state, over `dt` seconds (with a
+  /// `pool`, as `integrate_velocities`).
+  void integrate_positions(float dt, WorkerPool* pool = nullptr);
   /// Writes the velocity back to every slot the contacts may change, pose and angle to every
-  /// slot that moves.
-  void store(std::vector<Body>& bodies) const;
+  /// slot that moves (with a `pool`, the slots shared among its workers).
+  void store(std::vector<Body>& bodies, WorkerPool* pool = nullptr) const;
   /// Reads what `store` writes back in (after a stage that works
   /// on the `Body`s changed them: bounces, bullet sweeps).
   void load(const std::vector<Body>& bodies);
@@ -61,6 +65,9 @@ class SolverBodies {
   SolverBody* states() { return states_.data(); }
 
  private:
+  void integrate_velocities_of(float dt, std::size_t begin, std::size_t end);
+  void integrate_positions_of(float dt, std::size_t begin, std::size_t end);
+
   std::vector<SolverBody> states_;
   std::vector<BodyIntegration> integration_;
   float max_linear_speed_ = 0.0f;  // m/s

@@ -94,12 +94,12 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
   // Bounds are current after a step, `create_body` and `set_transform`; from here to the end
   // of the step the stages move bodies, so they count as stale (a sub-step's next call
   // remakes them).
-  if (!world_.bounds_current) update_bounds(world_.bodies, world_.alive);
+  if (!world_.bounds_current) update_bounds(world_.bodies, world_.alive, pool_);
   world_.bounds_current = false;
   compute_speculative_reach(world_.bodies, world_.alive, world_.settings, dt,
-                            world_.speculative_reach);
+                            world_.speculative_reach, pool_);
   compute_speculative_bounds(world_.bodies, world_.alive, world_.speculative_reach,
-                             world_.settings.speculative_margin, world_.speculative_bounds);
+                             world_.settings.speculative_margin, world_.speculative_bounds, pool_);
   world_.broad_phase.find_pairs(world_.bodies, world_.alive, world_.speculative_bounds,
                                 world_.settings.broad_phase, world_.pairs);
   if (!world_.unconnected_pairs.empty()) drop_jointed_pairs(world_.unconnected_pairs, world_.pairs);
@@ -108,7 +108,8 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
   stage = Clock::now();
   world_.stats.contact_point_count =
       update_contacts(world_.bodies, world_.pairs, world_.speculative_reach, world_.settings, dt,
-                      world_.contact_filter, world_.contacts, world_.spilled_contacts, visitor);
+                      world_.contact_filter, world_.contacts, world_.spilled_contacts, visitor, pool_,
+                      &world_.narrow_jobs);
   world_.stats.pairs_tested = static_cast<int>(world_.pairs.size());
   world_.stats.contact_count = static_cast<int>(world_.contacts.size());
   world_.stats.sleeping_contact_count = static_cast<int>(world_.sleeping_contacts.size());
@@ -117,13 +118,13 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
 
 void SolverStages::integrate_velocities(float dt) {
   const Clock::time_point stage = Clock::now();
-  impulse2d::integrate_velocities(world_.bodies, world_.alive, world_.settings, dt);
+  impulse2d::integrate_velocities(world_.bodies, world_.alive, world_.settings, dt, pool_);
   world_.stats.integrate_ms += elapsed_ms(stage);
 }
 
 void SolverStages::integrate_positions(float dt) {
   const Clock::time_point stage = Clock::now();
-  impulse2d::integrate_positions(world_.bodies, world_.alive, world_.settings, dt);
+  impulse2d::integrate_positions(world_.bodies, world_.alive, world_.settings, dt, pool_);
   if (world_.settings.enable_continuous) {
     world_.stats.bullets_moved_back += world_.bullet_sweeper.sweep(
         world_.bodies, world_.alive, world_.settings, dt, world_.broad_phase);  // no tunnelling
@@ -138,19 +139,19 @@ void SolverStages::prepare_joints(float h, bool clear_impulses) {
 
 void SolverStages::begin_solver_bodies() {
   const Clock::time_point stage = Clock::now();
-  world_.solver_body_states.begin_step(world_.bodies, world_.alive, world_.settings);
+  world_.solver_body_states.begin_step(world_.bodies, world_.alive, world_.settings, pool_);
   world_.stats.integrate_ms += elapsed_ms(stage);
 }
 
 void SolverStages::integrate_solver_velocities(float dt) {
   const Clock::time_point stage = Clock::now();
-  world_.solver_body_states.integrate_velocities(dt);
+  world_.solver_body_states.integrate_velocities(dt, pool_);
   world_.stats.integrate_ms += elapsed_ms(stage);
 }
 
 void SolverStages::integrate_solver_positions(float dt) {
   const Clock::time_point stage = Clock::now();
-  world_.solver_body_states.integrate_positions(dt);
+  world_.solver_body_states.integrate_positions(dt, pool_);
   world_.stats.integrate_ms += elapsed_ms(stage);
 }
 

@@ -30,7 +30,8 @@ namespace impulse2d {
 class SolverStages {
  public:
   /// The stages of `world`'s step.
-  explicit SolverStages(WorldState& world) : world_(world) {}
+  explicit SolverStages(WorldState& world)
+      : world_(world), pool_(world.workers.get(world.settings.worker_count)) {}
 
   /// Broad phase, then narrow phase through the jump table: rebuilds `contacts()` with
   /// speculative points for the coming `dt` seconds. `visitor` (may be null) sees each contact
@@ -73,10 +74,13 @@ class SolverStages {
   SolverBodies& solver_body_states() { return world_.solver_body_states; }
   /// The soft step's coloured contact blocks (kept to avoid allocating).
   WideContactSolver& solver_wide_contacts() { return world_.wide_contacts; }
+  /// The world's workers for stages that share independent work (null: one worker).
+  WorkerPool* workers() { return pool_; }
 
  private:
   void set_aside_sleeping_contacts();
   WorldState& world_;
+  WorkerPool* pool_;
 };
 
 /// A solver method: how one step turns contacts into impulses and motion. Stateless (all

@@ -248,6 +248,10 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
   }
   first_block[overflow] = block_count;
   block_count += colouring_.count(overflow);
+  for (int colour = 0; colour < colours; ++colour) colour_first_block_[colour] = first_block[colour];
+  colour_first_block_[colours] = first_block[overflow];
+  colour_first_block_[colours + 1] = block_count;
+  packed_colours_ = colours;
   BlockStorage<Lanes>& packed = storage<Lanes>();
   // Every lane is written below: packed or cleared.
   packed.blocks.resize(block_count);
@@ -275,6 +279,79 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
     const std::size_t last = first_block[colour] + colouring_.count(colour) / Lanes;
     for (int lane = used; lane < Lanes; ++lane) {
       clear_lane(packed.blocks[last], packed.solves[last], lane);
+      // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
+      // other block of the colour touches, so workers sharing the colour never read a body
+      // another one is writing.
+      packed.blocks[last].body_a[lane] = packed.blocks[last].body_a[0];
+      packed.blocks[last].body_b[lane] = packed.blocks[last].body_b[0];
+    }
+  }
+  for (std::size_t block = first_block[overflow]; block < block_count; ++block) {
+    for (int lane = 1; lane < Lanes; ++lane) clear_lane(packed.blocks[block], packed.solves[block], lane);
+  }
+}
+
+template <int Lanes>
+void WideContactSolver::pack_shared(const std::vector<Contact>& contacts) {
+  // `pack`, with the contacts' lanes chosen first (in the list's order) and filled on the pool.
+  // Each colour fills blocks of Lanes contacts in the list's order (its last block partly);
+  // the overflow goes one contact per block, as its contacts may share bodies. The contacts
+  // are read in the list's order, each written to its colour's open block: the list streams
+  // in, and the open blocks (one per colour) stay in the cache.
+  const int colours = colouring_.colour_count();
+  const int overflow = ContactColouring::max_colours;
+  std::size_t first_block[ContactColouring::max_colours + 1];
+  std::size_t block_count = 0;
+  for (int colour = 0; colour < colours; ++colour) {
+    first_block[colour] = block_count;
+    block_count += (colouring_.count(colour) + Lanes - 1) / Lanes;
+  }
+  first_block[overflow] = block_count;
+  block_count += colouring_.count(overflow);
+  for (int colour = 0; colour < colours; ++colour) colour_first_block_[colour] = first_block[colour];
+  colour_first_block_[colours] = first_block[overflow];
+  colour_first_block_[colours + 1] = block_count;
+  packed_colours_ = colours;
+  BlockStorage<Lanes>& packed = storage<Lanes>();
+  // Every lane is written below: packed or cleared.
+  packed.blocks.resize(block_count);
+  packed.solves.resize(block_count);
+  packed.sticks.resize(block_count);
+  contact_index_.assign(block_count * Lanes, -1);
+  lane_of_contact_.assign(contacts.size(), -1);
+  std::size_t packed_count[ContactColouring::max_colours + 1] = {};
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const int colour = colouring_.colour_of(i);
+    if (colour < 0) continue;
+    const std::size_t rank = packed_count[colour]++;
+    const std::size_t per_block = colour == overflow ? 1 : Lanes;
+    const std::size_t block = first_block[colour] + rank / per_block;
+    const int lane = static_cast<int>(rank % per_block);
+    contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(i);
+    lane_of_contact_[i] = static_cast<std::int32_t>(block * Lanes + lane);
+  }
+  // Each contact into its lane, side by side (a lane's bytes are its own).
+  parallel_for(pool_, contacts.size(), 64, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (lane_of_contact_[i] < 0) continue;
+      const std::size_t block = static_cast<std::size_t>(lane_of_contact_[i]) / Lanes;
+      const int lane = static_cast<int>(static_cast<std::size_t>(lane_of_contact_[i]) % Lanes);
+      pack_contact(contacts[i], packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
+    }
+  });
+  // The lanes no contact took: each colour's last block after its last contact, and every
+  // overflow block's but the first.
+  for (int colour = 0; colour < colours; ++colour) {
+    const int used = static_cast<int>(colouring_.count(colour) % Lanes);
+    if (used == 0) continue;
+    const std::size_t last = first_block[colour] + colouring_.count(colour) / Lanes;
+    for (int lane = used; lane < Lanes; ++lane) {
+      clear_lane(packed.blocks[last], packed.solves[last], lane);
+      // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
+      // other block of the colour touches, so workers sharing the colour never read a body
+      // another one is writing.
+      packed.blocks[last].body_a[lane] = packed.blocks[last].body_a[0];
+      packed.blocks[last].body_b[lane] = packed.blocks[last].body_b[0];
     }
   }
   for (std::size_t block = first_block[overflow]; block < block_count; ++block) {
@@ -283,7 +360,8 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
 }
 
 void WideContactSolver::begin_step(const std::vector<Body>& bodies, const SolverContext& context,
-                                   int lanes) {
+                                   int lanes, WorkerPool* pool) {
+  pool_ = pool;
   if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
   lanes_ = lanes;
   has_elastic_contacts_ = false;
@@ -295,19 +373,41 @@ void WideContactSolver::begin_step(const std::vector<Body>& bodies, const Solver
 void WideContactSolver::visit(std::size_t /*index: the colouring counts them*/, Contact& contact) {
   if (contact.enabled) {
     const std::vector<Body>& bodies = *bodies_;
-    prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], *context_);
+    const Body& a = bodies[contact.body_a.index];
+    const Body& b = bodies[contact.body_b.index];
+    if (pool_ != nullptr) {
+      contact.mass = pair_mass_of(a, b, *context_);  // the rest in finish_step, shared
+    } else {
+      prepare_contact(contact, a, b, *context_);
+    }
   }
   if (colouring_.add(contact) >= 0 && contact.restitution > 0.0f) has_elastic_contacts_ = true;
 }
 
-void WideContactSolver::finish_step(const std::vector<Contact>& contacts) {
-  if (lanes_ == 8) {
+void WideContactSolver::finish_step(std::vector<Contact>& contacts) {
+  if (pool_ != nullptr) {
+    const std::vector<Body>& bodies = *bodies_;
+    const SolverContext& context = *context_;
+    parallel_for(pool_, contacts.size(), 64, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        Contact& contact = contacts[i];
+        if (!contact.enabled) continue;
+        prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
+      }
+    });
+    if (lanes_ == 8) {
+      pack_shared<8>(contacts);
+    } else {
+      pack_shared<4>(contacts);
+    }
+  } else if (lanes_ == 8) {
     pack<8>(contacts);
   } else {
     pack<4>(contacts);
   }
   bodies_ = nullptr;
   context_ = nullptr;
+  pool_ = nullptr;
 }
 
 void WideContactSolver::load_points(const std::vector<Contact>& contacts) {
@@ -334,7 +434,49 @@ void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
   }
 }
 
-void WideContactSolver::warm_start(SolverBody* bodies) {
+namespace {
+
+// Blocks a worker takes at least at a time (a block is a few dozen nanoseconds of work).
+constexpr std::size_t min_blocks_per_chunk = 16;
+
+// The blocks [first, first + count) of `arrays`.
+template <int Lanes>
+ContactBlockArrays<Lanes> block_range(const ContactBlockArrays<Lanes>& arrays, std::size_t first,
+                                      std::size_t count) {
+  return {arrays.blocks + first, arrays.solves + first, arrays.sticks + first, count};
+}
+
+}  // namespace
+
+template <class Pass>
+void WideContactSolver::for_each_colour(WorkerPool* pool, Pass pass) const {
+  for (int colour = 0; colour < packed_colours_; ++colour) {
+    const std::size_t first = colour_first_block_[colour];
+    const std::size_t count = colour_first_block_[colour + 1] - first;
+    parallel_for(pool, count, min_blocks_per_chunk, [&](std::size_t begin, std::size_t end) {
+      pass(first + begin, end - begin);
+    });
+  }
+  // The overflow's contacts may share bodies: one after another.
+  const std::size_t first = colour_first_block_[packed_colours_];
+  pass(first, colour_first_block_[packed_colours_ + 1] - first);
+}
+
+void WideContactSolver::warm_start(SolverBody* bodies, WorkerPool* pool) {
+  if (pool != nullptr) {
+#if defined(__x86_64__)
+    if (lanes_ == 8) {
+      for_each_colour(pool, [&](std::size_t first, std::size_t count) {
+        warm_start_contact_blocks_8(storage_8_.blocks.data() + first, count, bodies);
+      });
+      return;
+    }
+#endif
+    for_each_colour(pool, [&](std::size_t first, std::size_t count) {
+      warm_start_contact_blocks_4(storage_4_.blocks.data() + first, count, bodies);
+    });
+    return;
+  }
 #if defined(__x86_64__)
   if (lanes_ == 8) {
     warm_start_contact_blocks_8(storage_8_.blocks.data(), storage_8_.blocks.size(), bodies);
@@ -344,7 +486,8 @@ void WideContactSolver::warm_start(SolverBody* bodies) {
   warm_start_contact_blocks_4(storage_4_.blocks.data(), storage_4_.blocks.size(), bodies);
 }
 
-void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies) {
+void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies,
+                              WorkerPool* pool) {
   WidePassSettings pass;
   pass.inverse_substep = 1.0f / context.substep;
   pass.static_softness = context.static_softness;
@@ -352,6 +495,22 @@ void WideContactSolver::solve(const SolverContext& context, bool use_bias, Solve
   pass.push_max_speed = context.push_max_speed;
   pass.use_bias = use_bias;
   pass.friction = context.friction;
+  if (pool != nullptr) {
+#if defined(__x86_64__)
+    if (lanes_ == 8) {
+      const ContactBlockArrays<8> arrays = storage_8_.arrays();
+      for_each_colour(pool, [&](std::size_t first, std::size_t count) {
+        solve_contact_blocks_8(block_range(arrays, first, count), bodies, pass);
+      });
+      return;
+    }
+#endif
+    const ContactBlockArrays<4> arrays = storage_4_.arrays();
+    for_each_colour(pool, [&](std::size_t first, std::size_t count) {
+      solve_contact_blocks_4(block_range(arrays, first, count), bodies, pass);
+    });
+    return;
+  }
 #if defined(__x86_64__)
   if (lanes_ == 8) {
     solve_contact_blocks_8(storage_8_.arrays(), bodies, pass);

@@ -14,6 +14,7 @@
 #include "core/contact.h"
 #include "core/solver/contact_block.h"
 #include "core/solver/contact_colouring.h"
+#include "core/solver/worker_pool.h"
 #include "core/solver/contact_visitor.h"
 #include "core/solver/solver_body.h"
 #include "core/solver/solver_context.h"
@@ -30,14 +31,17 @@ class WideContactSolver final : public ContactVisitor {
 
   /// Starts a step between `bodies` in blocks of `lanes` (4 or 8, 8 only where
   /// `widest_lanes()` is 8; 0: the widest). `bodies` and `context` are kept by reference until
-  /// `finish_step`.
-  void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes);
+  /// `finish_step`. With a `pool`, `visit` only colours each contact (from its `PairMass`) and
+  /// `finish_step` prepares and packs them on the pool's workers (each contact is its own
+  /// work: the same bits).
+  void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes,
+                  WorkerPool* pool = nullptr);
   /// Prepares the step's next contact (as `prepare_contacts` does, if enabled) and colours it;
   /// called for every contact of the list, in order, between `begin_step` and `finish_step`
   /// (by the narrow phase).
   void visit(std::size_t index, Contact& contact) override;
   /// Packs the step's `contacts`, all visited, into blocks colour by colour.
-  void finish_step(const std::vector<Contact>& contacts);
+  void finish_step(std::vector<Contact>& contacts);
   /// Copies each point's accumulated impulses and bounce plan (`velocity_bias`, `bouncing`,
   /// `waiting`) in, after the bounce stages changed them in the contacts.
   void load_points(const std::vector<Contact>& contacts);
@@ -55,9 +59,13 @@ class WideContactSolver final : public ContactVisitor {
   }
 
   /// Applies the accumulated impulses to `bodies` (one state per body slot: warm starting).
-  void warm_start(SolverBody* bodies);
-  /// One soft (`use_bias`) or relax pass over every block, colour by colour, on `bodies`.
-  void solve(const SolverContext& context, bool use_bias, SolverBody* bodies);
+  /// With a `pool`, the blocks of each colour are shared among its workers (they move
+  /// disjoint bodies), colour after colour, the overflow last on this thread: the same bits.
+  void warm_start(SolverBody* bodies, WorkerPool* pool = nullptr);
+  /// One soft (`use_bias`) or relax pass over every block, colour by colour, on `bodies`
+  /// (with a `pool`, as `warm_start`).
+  void solve(const SolverContext& context, bool use_bias, SolverBody* bodies,
+             WorkerPool* pool = nullptr);
 
   /// True when some contact of this step has restitution > 0: without one (and so in any
   /// resting pile) the bounce stages change nothing and are skipped.
@@ -99,13 +107,24 @@ class WideContactSolver final : public ContactVisitor {
   }
   template <int Lanes>
   void pack(const std::vector<Contact>& contacts);
+  template <int Lanes>
+  void pack_shared(const std::vector<Contact>& contacts);
   template <int Lanes, class Then>
   void store_impulses_in_order(std::vector<Contact>& contacts, Then then) const;
 
+  /// Runs `pass(first block, block count)` over each colour's blocks in turn, shared among
+  /// `pool`'s workers, then over the overflow blocks on this thread.
+  template <class Pass>
+  void for_each_colour(WorkerPool* pool, Pass pass) const;
+
   int lanes_ = 4;
+  /// First block of each colour (then the overflow's, then the end), of the last `pack`.
+  std::size_t colour_first_block_[ContactColouring::max_colours + 2] = {};
+  int packed_colours_ = 0;  ///< colours of the last `pack`
   bool has_elastic_contacts_ = false;
   const std::vector<Body>* bodies_ = nullptr;  // between begin_step and finish_step
   const SolverContext* context_ = nullptr;     // between begin_step and finish_step
+  WorkerPool* pool_ = nullptr;                 // between begin_step and finish_step
   ContactColouring colouring_;
   BlockStorage<4> storage_4_;
   BlockStorage<8> storage_8_;

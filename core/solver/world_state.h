@@ -13,6 +13,8 @@
 #include "core/solver/sleep.h"
 #include "core/solver/solver_bodies.h"
 #include "core/solver/wide_contact_solver.h"
+#include "core/solver/worker_pool.h"
+#include "core/collide/narrow_phase.h"
 #include "core/step_stats.h"
 #include "core/world.h"
 #include "core/world_events.h"
@@ -60,6 +62,8 @@ struct WorldState {
   SleepIslands sleep_islands;             ///< island bookkeeping (reused)
   BulletSweeper bullet_sweeper;           ///< continuous collision's buffers (reused)
   ContactFilter contact_filter;           ///< the user's, or empty
+  WorkerPoolSlot workers;                 ///< threads for `settings.worker_count` > 1 (not copied)
+  std::vector<NarrowPhaseJob> narrow_jobs;  ///< the narrow phase's per-pair scratch (reused)
 
   StepStats stats;                        ///< of the last step
   bool bounds_current = true;  ///< every living body's aabb matches its transform

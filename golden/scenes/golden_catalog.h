@@ -29,6 +29,9 @@ struct GoldenSpec {
   bool dark_theme = false;     ///< draw with the dark theme instead of the light one
   int width = kGoldenWidth;    ///< frame width, pixels
   int height = kGoldenHeight;  ///< frame height, pixels
+  /// Threads sharing each step of the run (`WorldSettings::worker_count`; the CLI's
+  /// `--workers`): the frame and its state are the same for any count.
+  int worker_count = 1;
 
   /// "<scene>/<name>": the golden's path below golden_images/ without extension.
   std::string id() const { return scene + "/" + name; }

@@ -48,6 +48,9 @@ struct GoldenCommandArguments {
   /// frame's step stays the golden's own. Empty: the run starts from the scene.
   std::function<void(demos::SceneRun& run, std::int64_t frame_step)> start_run;
   std::string executable;           ///< this program, for the second process
+  /// Threads sharing each step (`WorldSettings::worker_count`), 1..64: the frames and states
+  /// are the same for any count.
+  int workers = 1;
 };
 
 /// Exit status: every golden matched (or was written).

@@ -50,7 +50,9 @@ std::string list(const std::vector<std::string>& items, std::size_t shown = 8) {
 
 }  // namespace
 
-GoldenPlan plan_golden_command(const GoldenCommandArguments& arguments) {
+namespace {
+
+GoldenPlan plan_golden_files(const GoldenCommandArguments& arguments) {
   GoldenPlan plan;
   if (arguments.action == "frame") {
     if (arguments.files.size() != 1 || arguments.out.empty()) {
@@ -92,6 +94,19 @@ GoldenPlan plan_golden_command(const GoldenCommandArguments& arguments) {
                             "another directory or remove it");
   }
   if (!arguments.junit.empty()) require_writable(arguments.junit, "--junit", false);
+  return plan;
+}
+
+}  // namespace
+
+GoldenPlan plan_golden_command(const GoldenCommandArguments& arguments) {
+  if (arguments.workers < 1 || arguments.workers > 64) {
+    throw demos::UsageError("--workers " + std::to_string(arguments.workers) + ": must be 1..64");
+  }
+  GoldenPlan plan = plan_golden_files(arguments);
+  for (SceneGoldens& scene : plan.scenes) {
+    for (GoldenSpec& spec : scene.frames) spec.worker_count = arguments.workers;
+  }
   return plan;
 }
 

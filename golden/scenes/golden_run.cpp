@@ -32,6 +32,7 @@ GoldenRun::GoldenRun(const GoldenSpec& spec, const SceneVariant& variant) {
     scene_ = std::make_unique<demos::Scene>(*builtin);
   }
   if (variant) variant(*scene_);
+  scene_->settings.worker_count = spec.worker_count;
   demos::Params params(scene_->params);
   for (const auto& [name, value] : spec.params) params.set(name, value);
   run_ = std::make_unique<demos::SceneRun>(*scene_, params);

@@ -107,7 +107,8 @@ FrameProducer other_process_producer(const std::string& executable, const Golden
     }
     const fs::path png = folder / "frame.png";
     const int status = run_child(
-        {executable, "golden", "frame", spec.scene_file, spec.name, "--out", png.string()},
+        {executable, "golden", "frame", spec.scene_file, spec.name, "--out", png.string(),
+         "--workers", std::to_string(spec.worker_count)},
         spec.id());
     std::optional<std::uint64_t> hash;
     ProducedFrame frame;

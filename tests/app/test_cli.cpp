@@ -255,6 +255,22 @@ TEST_F(CliTest, TraceAsJsonIsAValidDocument) {
   EXPECT_EQ(trace["samples"][3]["bodies"][0]["vx"], 3.0);
 }
 
+TEST_F(CliTest, WorkersGiveTheSameTraceAndFrames) {
+  // --workers N (WorldSettings::worker_count): the states, so the trace and the frames, are
+  // the same bits for any count.
+  const Result single = run("trace pyramid --param rows=12 --steps 120 --every 40");
+  ASSERT_EQ(single.status, 0) << single.err;
+  for (const char* workers : {"2", "4"}) {
+    const Result threaded =
+        run(std::string("trace pyramid --param rows=12 --steps 120 --every 40 --workers ") + workers);
+    ASSERT_EQ(threaded.status, 0) << threaded.err;
+    EXPECT_EQ(threaded.out, single.out) << workers << " workers";
+  }
+  ASSERT_EQ(run("render pyramid --param rows=12 --frames 90 --size 160x120 --out one").status, 0);
+  ASSERT_EQ(run("render pyramid --param rows=12 --frames 90 --size 160x120 --out two --workers 2").status, 0);
+  EXPECT_EQ(read_file(dir_ / "two/pyramid_00000.png"), read_file(dir_ / "one/pyramid_00000.png"));
+}
+
 struct BadInput {
   const char* name;
   const char* scene_text;  // written to bad.json when not empty
