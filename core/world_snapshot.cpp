@@ -221,6 +221,15 @@ void io_shape(IO& io, Shape& shape) {
 }
 
 template <class IO>
+void io_material(IO& io, Material& material) {
+  io.string(material.name);
+  io.f32(material.density);
+  io.f32(material.restitution);
+  io.f32(material.static_friction);
+  io.f32(material.dynamic_friction);
+}
+
+template <class IO>
 void io_body(IO& io, Body& b) {
   io_body_id(io, b.id);
   enum_field(io, b.type, 3);
@@ -254,11 +263,7 @@ void io_body(IO& io, Body& b) {
   io_bool(io, b.is_sensor);
   io_bool(io, b.sensor_detects_static);
   io_bool(io, b.enable_sensor_events);
-  io.string(b.material.name);
-  io.f32(b.material.density);
-  io.f32(b.material.restitution);
-  io.f32(b.material.static_friction);
-  io.f32(b.material.dynamic_friction);
+  io_material(io, b.material);
   io_shape(io, b.shape);
   io_bool(io, b.compound);
   const std::uint32_t children = io.count(b.children.size());
@@ -271,11 +276,7 @@ void io_body(IO& io, Body& b) {
   for (BodyShape& part : b.children) {
     io_shape(io, part.shape);
     io_transform(io, part.local);
-    io.string(part.material.name);
-    io.f32(part.material.density);
-    io.f32(part.material.restitution);
-    io.f32(part.material.static_friction);
-    io.f32(part.material.dynamic_friction);
+    io_material(io, part.material);
     io.u32(part.collision_layers);
     io_bool(io, part.is_sensor);
   }

@@ -237,7 +237,9 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
   // Each colour fills blocks of Lanes contacts in the list's order (its last block partly);
   // the overflow goes one contact per block, as its contacts may share bodies. The contacts
   // are read in the list's order, each written to its colour's open block: the list streams
-  // in, and the open blocks (one per colour) stay in the cache.
+  // in, and the open blocks (one per colour) stay in the cache. With a pool, the lanes are
+  // chosen first (in the list's order) and the contacts then written into them side by side
+  // (a lane's bytes are its own).
   const int colours = colouring_.colour_count();
   const int overflow = ContactColouring::max_colours;
   std::size_t first_block[ContactColouring::max_colours + 1];
@@ -267,78 +269,22 @@ void WideContactSolver::pack(const std::vector<Contact>& contacts) {
     const std::size_t per_block = colour == overflow ? 1 : Lanes;
     const std::size_t block = first_block[colour] + rank / per_block;
     const int lane = static_cast<int>(rank % per_block);
-    pack_contact(contacts[i], packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
-    contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(i);
-    lane_of_contact_[i] = static_cast<std::int32_t>(block * Lanes + lane);
-  }
-  // The lanes no contact took: each colour's last block after its last contact, and every
-  // overflow block's but the first.
-  for (int colour = 0; colour < colours; ++colour) {
-    const int used = static_cast<int>(colouring_.count(colour) % Lanes);
-    if (used == 0) continue;
-    const std::size_t last = first_block[colour] + colouring_.count(colour) / Lanes;
-    for (int lane = used; lane < Lanes; ++lane) {
-      clear_lane(packed.blocks[last], packed.solves[last], lane);
-      // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
-      // other block of the colour touches, so workers sharing the colour never read a body
-      // another one is writing.
-      packed.blocks[last].body_a[lane] = packed.blocks[last].body_a[0];
-      packed.blocks[last].body_b[lane] = packed.blocks[last].body_b[0];
-    }
-  }
-  for (std::size_t block = first_block[overflow]; block < block_count; ++block) {
-    for (int lane = 1; lane < Lanes; ++lane) clear_lane(packed.blocks[block], packed.solves[block], lane);
-  }
-}
-
-template <int Lanes>
-void WideContactSolver::pack_shared(const std::vector<Contact>& contacts) {
-  // `pack`, with the contacts' lanes chosen first (in the list's order) and filled on the pool.
-  // Each colour fills blocks of Lanes contacts in the list's order (its last block partly);
-  // the overflow goes one contact per block, as its contacts may share bodies. The contacts
-  // are read in the list's order, each written to its colour's open block: the list streams
-  // in, and the open blocks (one per colour) stay in the cache.
-  const int colours = colouring_.colour_count();
-  const int overflow = ContactColouring::max_colours;
-  std::size_t first_block[ContactColouring::max_colours + 1];
-  std::size_t block_count = 0;
-  for (int colour = 0; colour < colours; ++colour) {
-    first_block[colour] = block_count;
-    block_count += (colouring_.count(colour) + Lanes - 1) / Lanes;
-  }
-  first_block[overflow] = block_count;
-  block_count += colouring_.count(overflow);
-  for (int colour = 0; colour < colours; ++colour) colour_first_block_[colour] = first_block[colour];
-  colour_first_block_[colours] = first_block[overflow];
-  colour_first_block_[colours + 1] = block_count;
-  packed_colours_ = colours;
-  BlockStorage<Lanes>& packed = storage<Lanes>();
-  // Every lane is written below: packed or cleared.
-  packed.blocks.resize(block_count);
-  packed.solves.resize(block_count);
-  packed.sticks.resize(block_count);
-  contact_index_.assign(block_count * Lanes, -1);
-  lane_of_contact_.assign(contacts.size(), -1);
-  std::size_t packed_count[ContactColouring::max_colours + 1] = {};
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const int colour = colouring_.colour_of(i);
-    if (colour < 0) continue;
-    const std::size_t rank = packed_count[colour]++;
-    const std::size_t per_block = colour == overflow ? 1 : Lanes;
-    const std::size_t block = first_block[colour] + rank / per_block;
-    const int lane = static_cast<int>(rank % per_block);
-    contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(i);
-    lane_of_contact_[i] = static_cast<std::int32_t>(block * Lanes + lane);
-  }
-  // Each contact into its lane, side by side (a lane's bytes are its own).
-  parallel_for(pool_, contacts.size(), 64, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      if (lane_of_contact_[i] < 0) continue;
-      const std::size_t block = static_cast<std::size_t>(lane_of_contact_[i]) / Lanes;
-      const int lane = static_cast<int>(static_cast<std::size_t>(lane_of_contact_[i]) % Lanes);
+    if (pool_ == nullptr) {
       pack_contact(contacts[i], packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
     }
-  });
+    contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(i);
+    lane_of_contact_[i] = static_cast<std::int32_t>(block * Lanes + lane);
+  }
+  if (pool_ != nullptr) {
+    parallel_for(pool_, contacts.size(), 64, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        if (lane_of_contact_[i] < 0) continue;
+        const std::size_t block = static_cast<std::size_t>(lane_of_contact_[i]) / Lanes;
+        const int lane = static_cast<int>(static_cast<std::size_t>(lane_of_contact_[i]) % Lanes);
+        pack_contact(contacts[i], packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
+      }
+    });
+  }
   // The lanes no contact took: each colour's last block after its last contact, and every
   // overflow block's but the first.
   for (int colour = 0; colour < colours; ++colour) {
@@ -395,12 +341,8 @@ void WideContactSolver::finish_step(std::vector<Contact>& contacts) {
         prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
       }
     });
-    if (lanes_ == 8) {
-      pack_shared<8>(contacts);
-    } else {
-      pack_shared<4>(contacts);
-    }
-  } else if (lanes_ == 8) {
+  }
+  if (lanes_ == 8) {
     pack<8>(contacts);
   } else {
     pack<4>(contacts);

@@ -107,8 +107,6 @@ class WideContactSolver final : public ContactVisitor {
   }
   template <int Lanes>
   void pack(const std::vector<Contact>& contacts);
-  template <int Lanes>
-  void pack_shared(const std::vector<Contact>& contacts);
   template <int Lanes, class Then>
   void store_impulses_in_order(std::vector<Contact>& contacts, Then then) const;
 
