@@ -78,8 +78,10 @@ void collect_contact_events(WorldState& world) {
   std::vector<EventPair>& next = events.next;
   reserve_at_least(next, world.contacts.capacity() + world.sleeping_contacts.capacity());
   next.clear();
-  auto wants = [&world](const Contact& contact) {
-    return world.bodies[contact.body_a.index].enable_contact_events ||
+  // When every body asks for contact events (the default) no body need be read.
+  const bool all_want = events.contact_event_bodies == world.living_body_count;
+  auto wants = [&world, all_want](const Contact& contact) {
+    return all_want || world.bodies[contact.body_a.index].enable_contact_events ||
            world.bodies[contact.body_b.index].enable_contact_events;
   };
   // Merge the awake and the set-aside contacts (each sorted by pair, disjoint): a pair that

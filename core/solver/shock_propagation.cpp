@@ -110,16 +110,12 @@ float shock_mass_ratio(int velocity_iterations) {
   return static_cast<float>(velocity_iterations) / ln2;
 }
 
-bool has_heavy_on_light(const std::vector<Contact>& contacts, int velocity_iterations) {
-  const float ratio = shock_mass_ratio(velocity_iterations);
-  for (const Contact& contact : contacts) {
-    if (!is_solvable(contact)) continue;
-    const float inverse_mass_a = contact.mass.inverse_mass_a;
-    const float inverse_mass_b = contact.mass.inverse_mass_b;
-    if (inverse_mass_a > ratio * inverse_mass_b && inverse_mass_b > 0.0f) return true;
-    if (inverse_mass_b > ratio * inverse_mass_a && inverse_mass_a > 0.0f) return true;
-  }
-  return false;
+bool is_heavy_on_light(const Contact& contact, float mass_ratio) {
+  if (!is_solvable(contact)) return false;
+  const float inverse_mass_a = contact.mass.inverse_mass_a;
+  const float inverse_mass_b = contact.mass.inverse_mass_b;
+  return (inverse_mass_a > mass_ratio * inverse_mass_b && inverse_mass_b > 0.0f) ||
+         (inverse_mass_b > mass_ratio * inverse_mass_a && inverse_mass_a > 0.0f);
 }
 
 void build_support_order(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,

@@ -52,11 +52,11 @@ struct SupportOrder {
 /// longer halve a resting contact's error in one step: N / ln 2.
 float shock_mass_ratio(int velocity_iterations);
 
-/// True when some solvable contact joins two dynamic bodies whose masses differ by more than
-/// `shock_mass_ratio(velocity_iterations)` (either way up): only then can the shock pass act,
-/// so a solver that must gather its state to run the pass asks this once a step first. Reads
-/// the contacts' prepared pair masses (`Contact::mass`), not the bodies.
-bool has_heavy_on_light(const std::vector<Contact>& contacts, int velocity_iterations);
+/// True when the contact is solvable and joins two dynamic bodies whose masses differ by more
+/// than `mass_ratio` (`shock_mass_ratio`, either way up): only when some contact is can the
+/// shock pass act, so a solver that must gather its state to run the pass asks this of each
+/// contact as it prepares it. Reads the contact's pair masses (`Contact::mass`), not the bodies.
+bool is_heavy_on_light(const Contact& contact, float mass_ratio);
 
 /// Builds `order` after the velocity iterations. A contact supports when it is solvable, its
 /// normal is within 45 degrees of `gravity` (m/s^2; none: no order), one of its points pushes

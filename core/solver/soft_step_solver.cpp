@@ -36,7 +36,7 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   // Heavy bodies on light ones: a ground-up pass with the lower body held fixed after each
   // sub-step's solve (as the accumulated solver does after its iterations), else one soft pass
   // a sub-step lets a 1:1000 load squeeze through the light body.
-  const bool shock = context.shock_propagation && has_heavy_on_light(contacts, context.velocity_iterations);
+  const bool shock = wide.has_heavy_on_light();
   // The sub-steps work on the compact body states; the bodies are written once at the end
   // (and around the bounce stages, which work on them).
   stages.begin_solver_bodies();

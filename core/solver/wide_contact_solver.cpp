@@ -2,6 +2,7 @@
 
 #include "core/solver/contact_prepare.h"
 #include "core/solver/contact_solver_internal.h"
+#include "core/solver/shock_propagation.h"
 #include "core/solver/wide_contact_kernels.h"
 
 #include <cstddef>
@@ -311,6 +312,8 @@ void WideContactSolver::begin_step(const std::vector<Body>& bodies, const Solver
   if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
   lanes_ = lanes;
   has_elastic_contacts_ = false;
+  has_heavy_on_light_ = false;
+  shock_mass_ratio_ = context.shock_propagation ? shock_mass_ratio(context.velocity_iterations) : 0.0f;
   bodies_ = &bodies;
   context_ = &context;
   colouring_.begin(bodies.size());
@@ -325,6 +328,9 @@ void WideContactSolver::visit(std::size_t /*index: the colouring counts them*/, 
       contact.mass = pair_mass_of(a, b, *context_);  // the rest in finish_step, shared
     } else {
       prepare_contact(contact, a, b, *context_);
+    }
+    if (shock_mass_ratio_ > 0.0f && !has_heavy_on_light_) {
+      has_heavy_on_light_ = is_heavy_on_light(contact, shock_mass_ratio_);
     }
   }
   if (colouring_.add(contact) >= 0 && contact.restitution > 0.0f) has_elastic_contacts_ = true;

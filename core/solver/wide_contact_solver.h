@@ -70,6 +70,9 @@ class WideContactSolver final : public ContactVisitor {
   /// True when some contact of this step has restitution > 0: without one (and so in any
   /// resting pile) the bounce stages change nothing and are skipped.
   bool has_elastic_contacts() const { return has_elastic_contacts_; }
+  /// True when the context asks for shock propagation and some contact of this step joins a
+  /// heavy body to a light one (`is_heavy_on_light`): only then can the shock pass act.
+  bool has_heavy_on_light() const { return has_heavy_on_light_; }
   /// Lanes per block of this step (4 or 8).
   int lanes() const { return lanes_; }
   /// Colours of this step's contacts (the overflow not counted).
@@ -120,6 +123,8 @@ class WideContactSolver final : public ContactVisitor {
   std::size_t colour_first_block_[ContactColouring::max_colours + 2] = {};
   int packed_colours_ = 0;  ///< colours of the last `pack`
   bool has_elastic_contacts_ = false;
+  bool has_heavy_on_light_ = false;
+  float shock_mass_ratio_ = 0.0f;  // of this step's context, when it asks for shock propagation
   const std::vector<Body>* bodies_ = nullptr;  // between begin_step and finish_step
   const SolverContext* context_ = nullptr;     // between begin_step and finish_step
   WorkerPool* pool_ = nullptr;                 // between begin_step and finish_step
