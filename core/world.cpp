@@ -446,7 +446,7 @@ void World::step() {
                           world.stats.position_ms;
   if (world.settings.enable_sleeping) {
     world.sleep_islands.update(world.bodies, world.alive, world.contacts, world.joints,
-                               world.joint_alive, world.settings, world.settings.time_step);
+                               world.joint_alive, world.settings, world.settings.time_step, pool);
   }
   finish_bodies(world, pool);
   collect_step_events(world);

@@ -6,6 +6,7 @@
 #include "core/solver/body_state.h"
 #include "core/collide/dynamic_tree.h"
 #include "core/settings.h"
+#include "core/solver/worker_pool.h"
 
 #include <array>
 #include <cstdint>
@@ -44,10 +45,12 @@ class BroadPhase {
   /// overlap and that `bodies_can_collide`, each once as (smaller slot, larger slot), sorted
   /// ascending. `method` picks brute force (O(n^2)), sort-and-sweep on the x axis
   /// (O(n log n + k)) or the persistent tree pairs (O(n + pairs + moved log n); first covers
-  /// every living slot's `bounds`).
+  /// every living slot's `bounds`). With a `pool`, the tree pairing's queries of the moved
+  /// proxies are shared among its workers (the trees are only read; the finds are merged in a
+  /// fixed order and sorted): the same pairs for any worker count.
   void find_pairs(const std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
                   const std::vector<Aabb>& bounds, BroadPhaseMethod method,
-                  std::vector<BodyPair>& pairs);
+                  std::vector<BodyPair>& pairs, WorkerPool* pool = nullptr);
 
   /// Replaces `slots` with the slots, ascending, whose fat boxes overlap or touch `box`
   /// (metres): a superset of the bodies whose covered bounds overlap it.
@@ -102,7 +105,11 @@ class BroadPhase {
   void mark_changed(std::uint32_t slot) { proxies_[slot].changed_epoch = pairing_epoch_; }
   void leave_unbounded(std::uint32_t slot);
   void find_tree_pairs(const std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
-                       const std::vector<Aabb>& bounds, std::vector<BodyPair>& pairs);
+                       const std::vector<Aabb>& bounds, std::vector<BodyPair>& pairs,
+                       WorkerPool* pool);
+  // Appends to `into` every pair of moved proxy `slot` with another proxy whose fat box
+  // overlaps its own (reads the trees only).
+  void query_moved(std::uint32_t slot, std::vector<BodyPair>& into) const;
   bool fat_boxes_overlap(const BodyPair& pair) const;
   bool filters_can_collide(const BodyPair& pair) const;
 
@@ -112,6 +119,7 @@ class BroadPhase {
   std::vector<std::uint32_t> unbounded_;    // slots with non-finite bounds
   std::vector<BodyPair> tree_pairs_;        // overlapping fat boxes, sorted (DynamicTree)
   std::vector<BodyPair> found_;             // new pairs of moved proxies (reused)
+  std::vector<std::vector<BodyPair>> found_parts_;  // found_ by part of moved_ (reused)
   std::vector<BodyPair> merged_;            // next tree_pairs_ (reused)
   std::vector<SweepEntry> sorted_;          // living slots ordered by (bounds.lower.x, slot)
   std::vector<PairFilter> filters_;         // per slot, refreshed by each tree pairing

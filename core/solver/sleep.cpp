@@ -6,6 +6,13 @@
 
 namespace impulse2d {
 
+namespace {
+
+// Bodies a worker takes at least at a time (a few nanoseconds each).
+constexpr std::size_t min_bodies_per_chunk = 1024;
+
+}  // namespace
+
 std::uint32_t SleepIslands::find_root(std::uint32_t slot) {
   while (parent_[slot] != slot) {
     parent_[slot] = parent_[parent_[slot]];  // path halving
@@ -17,16 +24,18 @@ std::uint32_t SleepIslands::find_root(std::uint32_t slot) {
 void SleepIslands::update(std::vector<Body>& bodies, const std::vector<std::uint8_t>& alive,
                           const std::vector<Contact>& contacts, const std::vector<Joint>& joints,
                           const std::vector<std::uint8_t>& joint_alive,
-                          const WorldSettings& settings, float dt) {
+                          const WorldSettings& settings, float dt, WorkerPool* pool) {
   const std::size_t count = bodies.size();
   const float linear_limit_sq = settings.sleep_linear_speed * settings.sleep_linear_speed;
-  for (std::size_t i = 0; i < count; ++i) {
-    Body& body = bodies[i];
-    if (!alive[i] || body.type != BodyType::Dynamic || !body.awake) continue;
-    const bool slow = length_squared(body.linear_velocity) <= linear_limit_sq &&
-                      std::fabs(body.angular_velocity) <= settings.sleep_angular_speed;
-    body.sleep_time = slow ? body.sleep_time + dt : 0.0f;
-  }
+  parallel_for(pool, count, min_bodies_per_chunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      Body& body = bodies[i];
+      if (!alive[i] || body.type != BodyType::Dynamic || !body.awake) continue;
+      const bool slow = length_squared(body.linear_velocity) <= linear_limit_sq &&
+                        std::fabs(body.angular_velocity) <= settings.sleep_angular_speed;
+      body.sleep_time = slow ? body.sleep_time + dt : 0.0f;
+    }
+  });
 
   parent_.resize(count);
   island_min_slow_.assign(count, std::numeric_limits<float>::infinity());
@@ -81,25 +90,36 @@ void SleepIslands::update(std::vector<Body>& bodies, const std::vector<std::uint
     }
   }
 
+  // Each slot's root, side by side: the forest is only read here (no path halving).
+  root_.resize(count);
+  parallel_for(pool, count, min_bodies_per_chunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      std::uint32_t slot = static_cast<std::uint32_t>(i);
+      while (parent_[slot] != slot) slot = parent_[slot];
+      root_[i] = slot;
+    }
+  });
   for (std::uint32_t i = 0; i < count; ++i) {
     if (!alive[i] || bodies[i].type != BodyType::Dynamic) continue;
     const float slow_time = bodies[i].awake ? bodies[i].sleep_time : settings.time_to_sleep;
-    float& island_min = island_min_slow_[find_root(i)];
+    float& island_min = island_min_slow_[root_[i]];
     island_min = std::min(island_min, slow_time);
   }
-  for (std::uint32_t i = 0; i < count; ++i) {
-    Body& body = bodies[i];
-    if (!alive[i] || body.type != BodyType::Dynamic) continue;
-    const bool island_rests = island_min_slow_[find_root(i)] >= settings.time_to_sleep;
-    if (island_rests && body.awake) {
-      body.awake = false;
-      body.linear_velocity = vec2(0.0f);
-      body.angular_velocity = 0.0f;
-    } else if (!island_rests && !body.awake) {
-      body.awake = true;
-      body.sleep_time = 0.0f;
+  parallel_for(pool, count, min_bodies_per_chunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      Body& body = bodies[i];
+      if (!alive[i] || body.type != BodyType::Dynamic) continue;
+      const bool island_rests = island_min_slow_[root_[i]] >= settings.time_to_sleep;
+      if (island_rests && body.awake) {
+        body.awake = false;
+        body.linear_velocity = vec2(0.0f);
+        body.angular_velocity = 0.0f;
+      } else if (!island_rests && !body.awake) {
+        body.awake = true;
+        body.sleep_time = 0.0f;
+      }
     }
-  }
+  });
 }
 
 }  // namespace impulse2d

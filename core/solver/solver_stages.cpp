@@ -101,7 +101,7 @@ void SolverStages::find_contacts(float dt, ContactVisitor* visitor) {
   compute_speculative_bounds(world_.bodies, world_.alive, world_.speculative_reach,
                              world_.settings.speculative_margin, world_.speculative_bounds, pool_);
   world_.broad_phase.find_pairs(world_.bodies, world_.alive, world_.speculative_bounds,
-                                world_.settings.broad_phase, world_.pairs);
+                                world_.settings.broad_phase, world_.pairs, pool_);
   if (!world_.unconnected_pairs.empty()) drop_jointed_pairs(world_.unconnected_pairs, world_.pairs);
   world_.stats.broad_phase_ms += elapsed_ms(stage);
 

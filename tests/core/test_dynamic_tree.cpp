@@ -145,18 +145,25 @@ Body random_body(Random& random, std::uint32_t slot) {
 
 }  // namespace
 
+// The tree pairing alone and with its queries shared among four workers (in the smallest parts
+// the pool allows) against brute force.
 TEST(BroadPhaseTree, PairsMatchBruteForceAsBodiesMoveComeAndGo) {
   Random random(3);
   PairScene scene;
   BroadPhase tree_phase;
+  BroadPhase shared_phase;
   BroadPhase brute_phase;
+  WorkerPool pool(4);
+  pool.set_smallest_chunk(1);
   for (std::uint32_t slot = 0; slot < 400; ++slot) {
     scene.bodies.push_back(random_body(random, slot));
     scene.alive.push_back(1);
     scene.bounds.push_back(random_box(random, 12.0f));
     tree_phase.add_body(slot, scene.bodies[slot].type, scene.bounds[slot]);
+    shared_phase.add_body(slot, scene.bodies[slot].type, scene.bounds[slot]);
   }
   std::vector<BodyPair> from_tree;
+  std::vector<BodyPair> from_shared;
   std::vector<BodyPair> from_brute;
   for (int step = 0; step < 60; ++step) {
     for (std::uint32_t slot = 0; slot < scene.bodies.size(); ++slot) {
@@ -174,11 +181,13 @@ TEST(BroadPhaseTree, PairsMatchBruteForceAsBodiesMoveComeAndGo) {
       if (scene.alive[slot]) {
         scene.alive[slot] = 0;
         tree_phase.remove_body(slot);
+        shared_phase.remove_body(slot);
       } else {
         scene.bodies[slot] = random_body(random, slot);
         scene.alive[slot] = 1;
         scene.bounds[slot] = random_box(random, 12.0f);
         tree_phase.add_body(slot, scene.bodies[slot].type, scene.bounds[slot]);
+        shared_phase.add_body(slot, scene.bodies[slot].type, scene.bounds[slot]);
       }
     }
     if (step == 30) {  // a body whose bounds went non-finite is tested against every body
@@ -188,9 +197,12 @@ TEST(BroadPhaseTree, PairsMatchBruteForceAsBodiesMoveComeAndGo) {
     }
     tree_phase.find_pairs(scene.bodies, scene.alive, scene.bounds, BroadPhaseMethod::DynamicTree,
                           from_tree);
+    shared_phase.find_pairs(scene.bodies, scene.alive, scene.bounds,
+                            BroadPhaseMethod::DynamicTree, from_shared, &pool);
     brute_phase.find_pairs(scene.bodies, scene.alive, scene.bounds, BroadPhaseMethod::BruteForce,
                            from_brute);
     ASSERT_EQ(from_tree, from_brute) << "step " << step;
+    ASSERT_EQ(from_shared, from_brute) << "step " << step;
     for (BodyType type : {BodyType::Static, BodyType::Kinematic, BodyType::Dynamic}) {
       ASSERT_TRUE(tree_phase.tree(type).is_valid()) << "step " << step;
     }
