@@ -33,13 +33,13 @@ constexpr std::size_t point_state_begin = offsetof(Contact, points) +
 constexpr std::size_t point_state_end = offsetof(Contact, point_count) + sizeof(int);
 
 // Calls visit(block, its solve part, point slot index, lane, contact point) for every used
-// point of every lane of the blocks in `packed` (a `BlockStorage`); `contact_index` holds the
-// blocks' contact indices, lanes per block (-1: unused lane).
-template <class Storage, class Contacts, class Visit>
-void for_each_point(Storage& packed, const std::vector<std::int32_t>& contact_index,
-                    Contacts& contacts, Visit visit) {
-  constexpr int Lanes = Storage::lanes;
-  const std::size_t block_count = packed.blocks.size();
+// point of every lane of the step's blocks in `packed` (a `ColourBlocks`), whose
+// `contact_index` holds the blocks' contact indices, lanes per block (-1: unused lane).
+template <class Blocks, class Contacts, class Visit>
+void for_each_point(Blocks& packed, Contacts& contacts, Visit visit) {
+  constexpr int Lanes = Blocks::lanes;
+  const std::size_t block_count = packed.count;
+  const std::vector<std::int32_t>& contact_index = packed.contact_index;
   const std::size_t ahead = prefetch_distance / Lanes + 1;  // blocks
   for (std::size_t b = 0; b < block_count; ++b) {
     if (b + ahead < block_count) {
@@ -234,75 +234,59 @@ int WideContactSolver::widest_lanes() {
 }
 
 template <int Lanes>
-void WideContactSolver::pack(const std::vector<Contact>& contacts) {
-  // Each colour fills blocks of Lanes contacts in the list's order (its last block partly);
-  // the overflow goes one contact per block, as its contacts may share bodies. The contacts
-  // are read in the list's order, each written to its colour's open block: the list streams
-  // in, and the open blocks (one per colour) stay in the cache. With a pool, the lanes are
-  // chosen first (in the list's order) and the contacts then written into them side by side
-  // (a lane's bytes are its own).
-  const int colours = colouring_.colour_count();
-  const int overflow = ContactColouring::max_colours;
-  std::size_t first_block[ContactColouring::max_colours + 1];
-  std::size_t block_count = 0;
-  for (int colour = 0; colour < colours; ++colour) {
-    first_block[colour] = block_count;
-    block_count += (colouring_.count(colour) + Lanes - 1) / Lanes;
+std::size_t WideContactSolver::ColourBlocks<Lanes>::open_block() {
+  if (count == blocks.size()) {
+    blocks.emplace_back();
+    solves.emplace_back();
+    sticks.emplace_back();
+    contact_index.resize(contact_index.size() + Lanes);
   }
-  first_block[overflow] = block_count;
-  block_count += colouring_.count(overflow);
-  for (int colour = 0; colour < colours; ++colour) colour_first_block_[colour] = first_block[colour];
-  colour_first_block_[colours] = first_block[overflow];
-  colour_first_block_[colours + 1] = block_count;
-  packed_colours_ = colours;
-  BlockStorage<Lanes>& packed = storage<Lanes>();
-  // Every lane is written below: packed or cleared.
-  packed.blocks.resize(block_count);
-  packed.solves.resize(block_count);
-  packed.sticks.resize(block_count);
-  contact_index_.assign(block_count * Lanes, -1);
-  lane_of_contact_.assign(contacts.size(), -1);
-  std::size_t packed_count[ContactColouring::max_colours + 1] = {};
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const int colour = colouring_.colour_of(i);
-    if (colour < 0) continue;
-    const std::size_t rank = packed_count[colour]++;
-    const std::size_t per_block = colour == overflow ? 1 : Lanes;
-    const std::size_t block = first_block[colour] + rank / per_block;
-    const int lane = static_cast<int>(rank % per_block);
-    if (pool_ == nullptr) {
-      pack_contact(contacts[i], packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
-    }
-    contact_index_[block * Lanes + lane] = static_cast<std::int32_t>(i);
-    lane_of_contact_[i] = static_cast<std::int32_t>(block * Lanes + lane);
+  std::fill_n(contact_index.begin() + static_cast<std::ptrdiff_t>(count * Lanes), Lanes, -1);
+  return count++;
+}
+
+template <int Lanes>
+void WideContactSolver::place(std::size_t index, int colour, const Contact& contact) {
+  // Each colour fills its blocks Lanes contacts at a time in the list's order (its last block
+  // partly); the overflow goes one contact per block, as its contacts may share bodies.
+  // The contacts come in the list's order: `index` is the count visited so far.
+  if (lane_of_contact_.size() != index) lane_of_contact_.resize(index, -1);
+  if (colour < 0) {
+    lane_of_contact_.push_back(-1);
+    return;
   }
-  if (pool_ != nullptr) {
-    parallel_for(pool_, contacts.size(), 64, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        if (lane_of_contact_[i] < 0) continue;
-        const std::size_t block = static_cast<std::size_t>(lane_of_contact_[i]) / Lanes;
-        const int lane = static_cast<int>(static_cast<std::size_t>(lane_of_contact_[i]) % Lanes);
-        pack_contact(contacts[i], packed.blocks[block], packed.solves[block], packed.sticks[block], lane);
-      }
-    });
+  ColourBlocks<Lanes>& blocks = colours<Lanes>()[static_cast<std::size_t>(colour)];
+  const std::size_t rank = colouring_.count(colour) - 1;
+  const std::size_t per_block = colour == ContactColouring::max_colours ? 1 : Lanes;
+  const int lane = static_cast<int>(rank % per_block);
+  const std::size_t block = lane == 0 ? blocks.open_block() : blocks.count - 1;
+  blocks.contact_index[block * Lanes + static_cast<std::size_t>(lane)] = static_cast<std::int32_t>(index);
+  lane_of_contact_.push_back(static_cast<std::int32_t>(block * Lanes + static_cast<std::size_t>(lane)));
+  if (pool_ == nullptr) {
+    pack_contact(contact, blocks.blocks[block], blocks.solves[block], blocks.sticks[block], lane);
   }
-  // The lanes no contact took: each colour's last block after its last contact, and every
-  // overflow block's but the first.
-  for (int colour = 0; colour < colours; ++colour) {
+}
+
+template <int Lanes>
+void WideContactSolver::clear_unused_lanes() {
+  Colours<Lanes>& packed = colours<Lanes>();
+  for (int colour = 0; colour < packed_colours_; ++colour) {
     const int used = static_cast<int>(colouring_.count(colour) % Lanes);
     if (used == 0) continue;
-    const std::size_t last = first_block[colour] + colouring_.count(colour) / Lanes;
+    ColourBlocks<Lanes>& blocks = packed[static_cast<std::size_t>(colour)];
+    const std::size_t last = blocks.count - 1;
     for (int lane = used; lane < Lanes; ++lane) {
-      clear_lane(packed.blocks[last], packed.solves[last], lane);
+      clear_lane(blocks.blocks[last], blocks.solves[last], lane);
       // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
       // other block of the colour touches, so workers sharing the colour never read a body
       // another one is writing.
-      packed.blocks[last].body_a[lane] = packed.blocks[last].body_a[0];
-      packed.blocks[last].body_b[lane] = packed.blocks[last].body_b[0];
+      blocks.blocks[last].body_a[lane] = blocks.blocks[last].body_a[0];
+      blocks.blocks[last].body_b[lane] = blocks.blocks[last].body_b[0];
     }
   }
-  for (std::size_t block = first_block[overflow]; block < block_count; ++block) {
-    for (int lane = 1; lane < Lanes; ++lane) clear_lane(packed.blocks[block], packed.solves[block], lane);
+  ColourBlocks<Lanes>& overflow = packed[ContactColouring::max_colours];
+  for (std::size_t block = 0; block < overflow.count; ++block) {
+    for (int lane = 1; lane < Lanes; ++lane) clear_lane(overflow.blocks[block], overflow.solves[block], lane);
   }
 }
 
@@ -317,9 +301,12 @@ void WideContactSolver::begin_step(const std::vector<Body>& bodies, const Solver
   bodies_ = &bodies;
   context_ = &context;
   colouring_.begin(bodies.size());
+  lane_of_contact_.clear();
+  for (auto& blocks : colours_4_) blocks.count = 0;
+  for (auto& blocks : colours_8_) blocks.count = 0;
 }
 
-void WideContactSolver::visit(std::size_t /*index: the colouring counts them*/, Contact& contact) {
+void WideContactSolver::visit(std::size_t index, Contact& contact) {
   if (contact.enabled) {
     const std::vector<Body>& bodies = *bodies_;
     const Body& a = bodies[contact.body_a.index];
@@ -333,25 +320,45 @@ void WideContactSolver::visit(std::size_t /*index: the colouring counts them*/, 
       has_heavy_on_light_ = is_heavy_on_light(contact, shock_mass_ratio_);
     }
   }
-  if (colouring_.add(contact) >= 0 && contact.restitution > 0.0f) has_elastic_contacts_ = true;
+  const int colour = colouring_.add(contact);
+  if (colour >= 0 && contact.restitution > 0.0f) has_elastic_contacts_ = true;
+  if (lanes_ == 8) {
+    place<8>(index, colour, contact);
+  } else {
+    place<4>(index, colour, contact);
+  }
 }
 
-void WideContactSolver::finish_step(std::vector<Contact>& contacts) {
+template <int Lanes>
+void WideContactSolver::finish_packing(std::vector<Contact>& contacts) {
   if (pool_ != nullptr) {
     const std::vector<Body>& bodies = *bodies_;
     const SolverContext& context = *context_;
+    Colours<Lanes>& packed = colours<Lanes>();
     parallel_for(pool_, contacts.size(), 64, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         Contact& contact = contacts[i];
-        if (!contact.enabled) continue;
-        prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
+        if (contact.enabled) {
+          prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
+        }
+        if (lane_of_contact_[i] < 0) continue;
+        ColourBlocks<Lanes>& blocks = packed[static_cast<std::size_t>(colouring_.colour_of(i))];
+        const std::size_t block = static_cast<std::size_t>(lane_of_contact_[i]) / Lanes;
+        const int lane = static_cast<int>(static_cast<std::size_t>(lane_of_contact_[i]) % Lanes);
+        pack_contact(contact, blocks.blocks[block], blocks.solves[block], blocks.sticks[block], lane);
       }
     });
   }
+  clear_unused_lanes<Lanes>();
+}
+
+void WideContactSolver::finish_step(std::vector<Contact>& contacts) {
+  lane_of_contact_.resize(contacts.size(), -1);  // every contact was visited: no change
+  packed_colours_ = colouring_.colour_count();
   if (lanes_ == 8) {
-    pack<8>(contacts);
+    finish_packing<8>(contacts);
   } else {
-    pack<4>(contacts);
+    finish_packing<4>(contacts);
   }
   bodies_ = nullptr;
   context_ = nullptr;
@@ -363,9 +370,9 @@ void WideContactSolver::load_points(const std::vector<Contact>& contacts) {
     load_point_state(block, solve, slot, lane, point);
   };
   if (lanes_ == 8) {
-    for_each_point(storage_8_, contact_index_, contacts, load);
+    for (auto& blocks : colours_8_) for_each_point(blocks, contacts, load);
   } else {
-    for_each_point(storage_4_, contact_index_, contacts, load);
+    for (auto& blocks : colours_4_) for_each_point(blocks, contacts, load);
   }
 }
 
@@ -376,9 +383,9 @@ void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
     point.friction_at_limit = (solve.friction_at_limit[lane] & (1 << slot)) != 0;
   };
   if (lanes_ == 8) {
-    for_each_point(storage_8_, contact_index_, contacts, store);
+    for (const auto& blocks : colours_8_) for_each_point(blocks, contacts, store);
   } else {
-    for_each_point(storage_4_, contact_index_, contacts, store);
+    for (const auto& blocks : colours_4_) for_each_point(blocks, contacts, store);
   }
 }
 
@@ -396,42 +403,31 @@ ContactBlockArrays<Lanes> block_range(const ContactBlockArrays<Lanes>& arrays, s
 
 }  // namespace
 
-template <class Pass>
-void WideContactSolver::for_each_colour(WorkerPool* pool, Pass pass) const {
+template <int Lanes, class Pass>
+void WideContactSolver::for_each_colour(WorkerPool* pool, Pass pass) {
+  Colours<Lanes>& packed = colours<Lanes>();
   for (int colour = 0; colour < packed_colours_; ++colour) {
-    const std::size_t first = colour_first_block_[colour];
-    const std::size_t count = colour_first_block_[colour + 1] - first;
-    parallel_for(pool, count, min_blocks_per_chunk, [&](std::size_t begin, std::size_t end) {
-      pass(first + begin, end - begin);
+    const ContactBlockArrays<Lanes> arrays = packed[static_cast<std::size_t>(colour)].arrays();
+    parallel_for(pool, arrays.count, min_blocks_per_chunk, [&](std::size_t begin, std::size_t end) {
+      pass(block_range(arrays, begin, end - begin));
     });
   }
   // The overflow's contacts may share bodies: one after another.
-  const std::size_t first = colour_first_block_[packed_colours_];
-  pass(first, colour_first_block_[packed_colours_ + 1] - first);
+  pass(packed[ContactColouring::max_colours].arrays());
 }
 
 void WideContactSolver::warm_start(SolverBody* bodies, WorkerPool* pool) {
-  if (pool != nullptr) {
 #if defined(__x86_64__)
-    if (lanes_ == 8) {
-      for_each_colour(pool, [&](std::size_t first, std::size_t count) {
-        warm_start_contact_blocks_8(storage_8_.blocks.data() + first, count, bodies);
-      });
-      return;
-    }
-#endif
-    for_each_colour(pool, [&](std::size_t first, std::size_t count) {
-      warm_start_contact_blocks_4(storage_4_.blocks.data() + first, count, bodies);
+  if (lanes_ == 8) {
+    for_each_colour<8>(pool, [&](const ContactBlockArrays<8>& arrays) {
+      warm_start_contact_blocks_8(arrays.blocks, arrays.count, bodies);
     });
     return;
   }
-#if defined(__x86_64__)
-  if (lanes_ == 8) {
-    warm_start_contact_blocks_8(storage_8_.blocks.data(), storage_8_.blocks.size(), bodies);
-    return;
-  }
 #endif
-  warm_start_contact_blocks_4(storage_4_.blocks.data(), storage_4_.blocks.size(), bodies);
+  for_each_colour<4>(pool, [&](const ContactBlockArrays<4>& arrays) {
+    warm_start_contact_blocks_4(arrays.blocks, arrays.count, bodies);
+  });
 }
 
 void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies,
@@ -443,29 +439,17 @@ void WideContactSolver::solve(const SolverContext& context, bool use_bias, Solve
   pass.push_max_speed = context.push_max_speed;
   pass.use_bias = use_bias;
   pass.friction = context.friction;
-  if (pool != nullptr) {
 #if defined(__x86_64__)
-    if (lanes_ == 8) {
-      const ContactBlockArrays<8> arrays = storage_8_.arrays();
-      for_each_colour(pool, [&](std::size_t first, std::size_t count) {
-        solve_contact_blocks_8(block_range(arrays, first, count), bodies, pass);
-      });
-      return;
-    }
-#endif
-    const ContactBlockArrays<4> arrays = storage_4_.arrays();
-    for_each_colour(pool, [&](std::size_t first, std::size_t count) {
-      solve_contact_blocks_4(block_range(arrays, first, count), bodies, pass);
+  if (lanes_ == 8) {
+    for_each_colour<8>(pool, [&](const ContactBlockArrays<8>& arrays) {
+      solve_contact_blocks_8(arrays, bodies, pass);
     });
     return;
   }
-#if defined(__x86_64__)
-  if (lanes_ == 8) {
-    solve_contact_blocks_8(storage_8_.arrays(), bodies, pass);
-    return;
-  }
 #endif
-  solve_contact_blocks_4(storage_4_.arrays(), bodies, pass);
+  for_each_colour<4>(pool, [&](const ContactBlockArrays<4>& arrays) {
+    solve_contact_blocks_4(arrays, bodies, pass);
+  });
 }
 
 }  // namespace impulse2d

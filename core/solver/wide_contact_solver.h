@@ -5,9 +5,10 @@
 /// or 8 lanes, solved by the vector kernels (`wide_contact_kernels.h`). The lanes of a block
 /// share no moving body, so 4 and 8 lanes give bit-identical results.
 ///
-/// Per step: `begin_step`, then each contact prepared (`contact_prepare.h`) and coloured as
-/// the narrow phase finishes it (the solver is the narrow phase's `ContactVisitor`), then
-/// `finish_step` packs them into blocks in colour order; the passes work on the step's
+/// Per step: `begin_step`, then each contact prepared (`contact_prepare.h`), coloured and packed
+/// into its colour's open block as the narrow phase finishes it, while it is in the cache (the
+/// solver is the narrow phase's `ContactVisitor`; each colour keeps its own blocks), then
+/// `finish_step` clears the lanes no contact took; the passes work on the step's
 /// `SolverBodies` (`solver_bodies.h`), and `store_impulses` writes the impulses back to the
 /// contacts (and `load_points` reads them in again after the bounce stages changed them).
 #include "core/solver/body_state.h"
@@ -19,6 +20,7 @@
 #include "core/solver/solver_body.h"
 #include "core/solver/solver_context.h"
 
+#include <array>
 #include <vector>
 
 namespace impulse2d {
@@ -32,15 +34,16 @@ class WideContactSolver final : public ContactVisitor {
   /// Starts a step between `bodies` in blocks of `lanes` (4 or 8, 8 only where
   /// `widest_lanes()` is 8; 0: the widest). `bodies` and `context` are kept by reference until
   /// `finish_step`. With a `pool`, `visit` only colours each contact (from its `PairMass`) and
-  /// `finish_step` prepares and packs them on the pool's workers (each contact is its own
-  /// work: the same bits).
+  /// gives it its lane, and `finish_step` prepares and packs the contacts on the pool's workers
+  /// (each contact is its own work: the same bits).
   void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes,
                   WorkerPool* pool = nullptr);
-  /// Prepares the step's next contact (as `prepare_contacts` does, if enabled) and colours it;
-  /// called for every contact of the list, in order, between `begin_step` and `finish_step`
-  /// (by the narrow phase).
+  /// Prepares the step's next contact (as `prepare_contacts` does, if enabled), colours it and
+  /// packs it into the next lane of its colour's blocks; called for every contact of the list,
+  /// in order, between `begin_step` and `finish_step` (by the narrow phase).
   void visit(std::size_t index, Contact& contact) override;
-  /// Packs the step's `contacts`, all visited, into blocks colour by colour.
+  /// Ends the packing of the step's `contacts`, all visited (with a pool: prepares and packs
+  /// them), and clears the lanes no contact took.
   void finish_step(std::vector<Contact>& contacts);
   /// Copies each point's accumulated impulses and bounce plan (`velocity_bias`, `bouncing`,
   /// `waiting`) in, after the bounce stages changed them in the contacts.
@@ -79,49 +82,66 @@ class WideContactSolver final : public ContactVisitor {
   int colour_count() const { return colouring_.colour_count(); }
 
  private:
-  /// A step's blocks of `Lanes` lanes, in their three parts (`contact_block.h`).
+  /// One colour's blocks of `Lanes` lanes (the overflow's: one contact per block), in their
+  /// three parts (`contact_block.h`). The arrays only grow: the first `count` blocks are this
+  /// step's, and every lane of them is packed or cleared.
   template <int Lanes>
-  struct BlockStorage {
+  struct ColourBlocks {
     static constexpr int lanes = Lanes;  ///< contacts side by side
     std::vector<ContactBlock<Lanes>> blocks;       ///< read by every pass
     std::vector<ContactBlockSolve<Lanes>> solves;  ///< read by both solve passes
     std::vector<ContactBlockStick<Lanes>> sticks;  ///< read by the biased pass
-    /// The three arrays as the kernels take them.
+    /// Per lane of the blocks: the index of its contact in the list, -1 when unused.
+    std::vector<std::int32_t> contact_index;
+    std::size_t count = 0;  ///< blocks of this step
+    /// The step's blocks as the kernels take them.
     ContactBlockArrays<Lanes> arrays() {
-      return {blocks.data(), solves.data(), sticks.data(), blocks.size()};
+      return {blocks.data(), solves.data(), sticks.data(), count};
     }
+    /// Opens the next block, every lane unused; returns its index.
+    std::size_t open_block();
   };
+  /// A `ColourBlocks` per colour, the overflow last.
+  template <int Lanes>
+  using Colours = std::array<ColourBlocks<Lanes>, ContactColouring::max_colours + 1>;
 
   template <int Lanes>
-  BlockStorage<Lanes>& storage() {
+  Colours<Lanes>& colours() {
     if constexpr (Lanes == 8) {
-      return storage_8_;
+      return colours_8_;
     } else {
-      return storage_4_;
+      return colours_4_;
     }
   }
   template <int Lanes>
-  const BlockStorage<Lanes>& storage() const {
+  const Colours<Lanes>& colours() const {
     if constexpr (Lanes == 8) {
-      return storage_8_;
+      return colours_8_;
     } else {
-      return storage_4_;
+      return colours_4_;
     }
   }
+  /// Gives the list's contact `index` (of colour `colour`, -1: not solved) the next lane of its
+  /// colour and, without a pool, packs it there.
   template <int Lanes>
-  void pack(const std::vector<Contact>& contacts);
+  void place(std::size_t index, int colour, const Contact& contact);
+  /// Clears the lanes no contact took: each colour's last block after its last contact, and
+  /// every overflow block's but the first.
+  template <int Lanes>
+  void clear_unused_lanes();
+  /// `finish_step` at `Lanes` lanes.
+  template <int Lanes>
+  void finish_packing(std::vector<Contact>& contacts);
   template <int Lanes, class Then>
   void store_impulses_in_order(std::vector<Contact>& contacts, Then then) const;
 
-  /// Runs `pass(first block, block count)` over each colour's blocks in turn, shared among
-  /// `pool`'s workers, then over the overflow blocks on this thread.
-  template <class Pass>
-  void for_each_colour(WorkerPool* pool, Pass pass) const;
+  /// Runs `pass(arrays)` over each colour's blocks in turn (`arrays` a range of them), shared
+  /// among `pool`'s workers, then over the overflow blocks on this thread.
+  template <int Lanes, class Pass>
+  void for_each_colour(WorkerPool* pool, Pass pass);
 
   int lanes_ = 4;
-  /// First block of each colour (then the overflow's, then the end), of the last `pack`.
-  std::size_t colour_first_block_[ContactColouring::max_colours + 2] = {};
-  int packed_colours_ = 0;  ///< colours of the last `pack`
+  int packed_colours_ = 0;  ///< colours of this step (the overflow not counted)
   bool has_elastic_contacts_ = false;
   bool has_heavy_on_light_ = false;
   float shock_mass_ratio_ = 0.0f;  // of this step's context, when it asks for shock propagation
@@ -129,12 +149,10 @@ class WideContactSolver final : public ContactVisitor {
   const SolverContext* context_ = nullptr;     // between begin_step and finish_step
   WorkerPool* pool_ = nullptr;                 // between begin_step and finish_step
   ContactColouring colouring_;
-  BlockStorage<4> storage_4_;
-  BlockStorage<8> storage_8_;
-  /// Per lane of the blocks, in order: the index of its contact in the list, -1 when unused.
-  std::vector<std::int32_t> contact_index_;
-  /// Per contact of the list: its lane among all blocks' lanes (block * lanes + lane), -1
-  /// when it is not solved.
+  Colours<4> colours_4_;
+  Colours<8> colours_8_;
+  /// Per contact of the list: its lane among its colour's blocks' lanes (block * lanes +
+  /// lane; the colour is `colouring_.colour_of`), -1 when it is not solved.
   std::vector<std::int32_t> lane_of_contact_;
 };
 
@@ -143,26 +161,28 @@ void WideContactSolver::store_impulses_in_order(std::vector<Contact>& contacts, 
   // The blocks are in colour order, not the list's: each contact's lanes are asked for
   // `ahead` contacts before they are read.
   constexpr std::size_t ahead = 8;
-  const BlockStorage<Lanes>& packed = storage<Lanes>();
+  const Colours<Lanes>& packed = colours<Lanes>();
   const std::size_t count = contacts.size();
   for (std::size_t i = 0; i < count; ++i) {
     if (i + ahead < count && lane_of_contact_[i + ahead] >= 0) {
       const auto next = static_cast<std::size_t>(lane_of_contact_[i + ahead]);
-      for (const BlockPointImpulse<Lanes>& point : packed.blocks[next / Lanes].points) {
+      const ColourBlocks<Lanes>& colour = packed[static_cast<std::size_t>(colouring_.colour_of(i + ahead))];
+      for (const BlockPointImpulse<Lanes>& point : colour.blocks[next / Lanes].points) {
         __builtin_prefetch(&point.normal_impulse[next % Lanes]);
         __builtin_prefetch(&point.tangent_impulse[next % Lanes]);
       }
-      __builtin_prefetch(&packed.solves[next / Lanes].friction_at_limit[next % Lanes]);
+      __builtin_prefetch(&colour.solves[next / Lanes].friction_at_limit[next % Lanes]);
     }
     Contact& contact = contacts[i];
     if (lane_of_contact_[i] >= 0) {
+      const ColourBlocks<Lanes>& colour = packed[static_cast<std::size_t>(colouring_.colour_of(i))];
       const auto block = static_cast<std::size_t>(lane_of_contact_[i]) / Lanes;
       const auto lane = static_cast<std::size_t>(lane_of_contact_[i]) % Lanes;
-      const std::int32_t at_limit = packed.solves[block].friction_at_limit[lane];
+      const std::int32_t at_limit = colour.solves[block].friction_at_limit[lane];
       for (int p = 0; p < contact.point_count; ++p) {
         ContactPoint& point = contact.points[p];
-        point.normal_impulse = packed.blocks[block].points[p].normal_impulse[lane];
-        point.tangent_impulse = packed.blocks[block].points[p].tangent_impulse[lane];
+        point.normal_impulse = colour.blocks[block].points[p].normal_impulse[lane];
+        point.tangent_impulse = colour.blocks[block].points[p].tangent_impulse[lane];
         point.friction_at_limit = (at_limit & (1 << p)) != 0;
       }
     }
