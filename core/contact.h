@@ -97,9 +97,17 @@ struct Contact {
   /// has a contact per pair of shapes, sorted after the bodies by (child_a, child_b).
   std::uint16_t child_a = 0;
   std::uint16_t child_b = 0;  ///< which of B's shapes touches (0 unless B is compound)
-  vec2 normal{0.0f, 0.0f};  ///< unit, from A to B
-  ContactPoint points[max_manifold_points];  ///< the first `point_count` are valid
+  // The fields every walk over the list reads (events, islands, colouring, impulses) come
+  // first, so that such a walk touches as few cache lines of each contact as it can.
+  /// False when a contact filter (or `World::set_contact_enabled`) rejected the pair; the
+  /// decision is kept while the shapes overlap (so one-way platforms do not pop bodies
+  /// through) and taken afresh once they are more than a millimetre apart.
+  bool enabled = true;
+  bool recycled = false;     ///< this step kept last step's manifold (see contact_recycle.h)
+  vec2 normal{0.0f, 0.0f};   ///< unit, from A to B
   int point_count = 0;       ///< 1 or 2
+  PairMass mass;             ///< the two bodies' inverse masses, resolved at prepare
+  ContactPoint points[max_manifold_points];  ///< the first `point_count` are valid
   float static_friction = 0.0f;   ///< mixed coefficient
   float dynamic_friction = 0.0f;  ///< mixed coefficient
   float restitution = 0.0f;       ///< mixed coefficient
@@ -124,13 +132,7 @@ struct Contact {
   /// step to the next grows under the full static limit even when an impulse applied between
   /// the steps (a per-step push) makes each step start faster than it ends.
   float limit_slip = -1.0f;
-  PairMass mass;  ///< the two bodies' inverse masses, resolved at prepare
   ManifoldPose manifold_pose;  ///< the bodies' pose when the manifold was last computed
-  bool recycled = false;       ///< this step kept last step's manifold (see contact_recycle.h)
-  /// False when a contact filter (or `World::set_contact_enabled`) rejected the pair; the
-  /// decision is kept while the shapes overlap (so one-way platforms do not pop bodies
-  /// through) and taken afresh once they are more than a millimetre apart.
-  bool enabled = true;
 };
 
 /// True when `a` comes before `b` in the order contact lists keep: by A's slot, B's slot, then

@@ -26,11 +26,12 @@ void prefetch_contact(const Contact& contact, std::size_t begin = 0,
   __builtin_prefetch(bytes + end - 1);
 }
 
-// The bytes of a contact that writing impulses back and reading bounce plans touch: its
-// points' solver state and the point count (the rest of its ~300 bytes need not be fetched).
-constexpr std::size_t point_state_begin = offsetof(Contact, points) +
-                                          offsetof(ContactPoint, normal_impulse);
-constexpr std::size_t point_state_end = offsetof(Contact, point_count) + sizeof(int);
+// The bytes of a contact that writing impulses back and reading bounce plans touch: the point
+// count and its points (the rest of its ~300 bytes need not be fetched).
+static_assert(offsetof(Contact, point_count) < offsetof(Contact, points),
+              "the point count comes before the points");
+constexpr std::size_t point_state_begin = offsetof(Contact, point_count);
+constexpr std::size_t point_state_end = offsetof(Contact, points) + sizeof(Contact::points);
 
 // Calls visit(block, its solve part, point slot index, lane, contact point) for every used
 // point of every lane of the step's blocks in `packed` (a `ColourBlocks`), whose
