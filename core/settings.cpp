@@ -94,6 +94,12 @@ void validate_settings(const WorldSettings& s) {
   require(finite(s.max_linear_speed) && s.max_linear_speed > 0.0f, "max_linear_speed",
           "must be finite and > 0");
   require(s.worker_count >= 1 && s.worker_count <= 64, "worker_count", "must be in 1..64");
+  require(s.task_system.enqueue == nullptr || s.task_system.finish != nullptr,
+          "task_system.finish", "must be set when task_system.enqueue is (it waits for the tasks)");
+  require(s.task_system.finish == nullptr || s.task_system.enqueue != nullptr,
+          "task_system.enqueue", "must be set when task_system.finish is (null means the world's own workers)");
+  require(s.task_system.user_context == nullptr || s.task_system.enqueue != nullptr,
+          "task_system.user_context", "is set but task_system.enqueue is null (no task system would see it)");
 }
 
 }  // namespace impulse2d

@@ -4,6 +4,7 @@
 
 #include "core/material.h"
 #include "core/math.h"
+#include "core/task_system.h"
 
 #include <optional>
 #include <string>
@@ -137,13 +138,20 @@ struct WorldSettings {
   float time_to_sleep = 0.5f;        ///< seconds a body must stay slow before it sleeps
   float max_linear_speed = 400.0f;   ///< m/s clamp against blow-ups
 
-  /// Threads that share a step, the calling one included: 1..64. Above 1 the world starts
-  /// `worker_count - 1` threads of its own on its first step (joined when it is destroyed; a
-  /// copy starts its own), and the narrow phase's collisions, the soft step's body integration
-  /// and the blocks of each contact colour, and the bounds update run on them (docs/engine.md,
-  /// "Threads"). The state after every step is bit-identical whatever the count; only the speed
-  /// changes. Not saved in snapshots or scene files: it is how to run, not what to simulate.
+  /// Threads that share a step, the calling one included: 1..64. Without a `task_system`,
+  /// above 1 the world starts `worker_count - 1` threads of its own on its first step (joined
+  /// when it is destroyed; a copy starts its own), and the narrow phase's collisions, the soft
+  /// step's body integration and the blocks of each contact colour, and the bounds update run on
+  /// them (docs/engine.md, "Threads"). With a `task_system`, the number of workers it has: the
+  /// world starts no threads. The state after every step is bit-identical whatever the count;
+  /// only the speed changes. Not saved in snapshots or scene files: it is how to run, not what
+  /// to simulate.
   int worker_count = 1;
+  /// The caller's threads (`task_system.h`): when `enqueue` and `finish` are set, every shared
+  /// stage of the step runs through them instead of threads of the world's own; the default
+  /// (both null) is the world's own workers. Bit-identical results either way. Not saved in
+  /// snapshots or scene files; a copied world uses the same one, a restored world keeps its own.
+  TaskSystem task_system;
 };
 
 /// The default settings with `method` at the sub-steps and passes it is measured at:
@@ -164,7 +172,9 @@ const std::vector<SolverMethod>& solver_methods();
 std::optional<SolverMethod> retired_solver_name(const std::string& name);
 
 /// Throws `Error` naming the field unless every setting is finite and in range
-/// (time_step > 0, substeps >= 1, iterations >= 0, 0 <= percent <= 1, slop >= 0, ...).
+/// (time_step > 0, substeps >= 1, iterations >= 0, 0 <= percent <= 1, slop >= 0, ...) and the
+/// task system is whole (`enqueue` and `finish` both set or both null; no `user_context`
+/// without them).
 void validate_settings(const WorldSettings& settings);
 
 }  // namespace impulse2d

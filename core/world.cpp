@@ -424,7 +424,8 @@ void World::step() {
   const Clock::time_point start = Clock::now();
   world.stats = StepStats{};
   world.diverged_bodies.clear();
-  WorkerPool* const pool = world.workers.get(world.settings.worker_count);  // null: one worker
+  // Null: one worker and no task system.
+  WorkerPool* const pool = world.workers.get(world.settings.worker_count, world.settings.task_system);
   parallel_for(pool, world.bodies.size(), 512, [&world](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       Body& body = world.bodies[i];

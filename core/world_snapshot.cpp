@@ -531,6 +531,7 @@ void World::restore_snapshot(const std::uint8_t* data, std::size_t size) {
   w.rebuild_unconnected_pairs();
   w.contact_filter = state_->contact_filter;  // the restoring world's own
   w.settings.worker_count = state_->settings.worker_count;  // how to run: the restoring world's
+  w.settings.task_system = state_->settings.task_system;
   state_ = std::move(restored);
 }
 

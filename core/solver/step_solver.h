@@ -31,7 +31,8 @@ class SolverStages {
  public:
   /// The stages of `world`'s step.
   explicit SolverStages(WorldState& world)
-      : world_(world), pool_(world.workers.get(world.settings.worker_count)) {}
+      : world_(world),
+        pool_(world.workers.get(world.settings.worker_count, world.settings.task_system)) {}
 
   /// Broad phase, then narrow phase through the jump table: rebuilds `contacts()` with
   /// speculative points for the coming `dt` seconds. `visitor` (may be null) sees each contact
@@ -74,7 +75,8 @@ class SolverStages {
   SolverBodies& solver_body_states() { return world_.solver_body_states; }
   /// The soft step's coloured contact blocks (kept to avoid allocating).
   WideContactSolver& solver_wide_contacts() { return world_.wide_contacts; }
-  /// The world's workers for stages that share independent work (null: one worker).
+  /// The world's workers for stages that share independent work (null: one worker, no task
+  /// system).
   WorkerPool* workers() { return pool_; }
 
  private:

@@ -62,7 +62,7 @@ struct WorldState {
   SleepIslands sleep_islands;             ///< island bookkeeping (reused)
   BulletSweeper bullet_sweeper;           ///< continuous collision's buffers (reused)
   ContactFilter contact_filter;           ///< the user's, or empty
-  WorkerPoolSlot workers;                 ///< threads for `settings.worker_count` > 1 (not copied)
+  WorkerPoolSlot workers;                 ///< `settings.worker_count`'s threads or task system (not copied)
   std::vector<NarrowPhaseJob> narrow_jobs;  ///< the narrow phase's per-pair scratch (reused)
 
   StepStats stats;                        ///< of the last step

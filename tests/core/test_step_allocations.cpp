@@ -79,6 +79,25 @@ TEST(StepAllocations, SteadyStateStepWithWorkersAllocatesNothing) {
   }
 }
 
+// A caller's task system that allocates nothing itself: it runs each task's items backwards,
+// one at a time, before `enqueue` returns.
+void* run_backwards(TaskFunction task, int item_count, int, void* task_context, void*) {
+  for (int item = item_count - 1; item >= 0; --item) task(item, item + 1, 0, task_context);
+  return nullptr;
+}
+void finish_nothing(void*, void*) {}
+
+TEST(StepAllocations, SteadyStateStepThroughACallersTaskSystemAllocatesNothing) {
+  WorldSettings settings;
+  settings.enable_sleeping = true;
+  settings.worker_count = 2;
+  settings.task_system = {&run_backwards, &finish_nothing, nullptr};
+  World world(settings);
+  build_busy_scene(world);
+  allocations_during(world, 600);
+  EXPECT_EQ(allocations_during(world, 300), 0) << "contacts " << world.stats().contact_count;
+}
+
 TEST(StepAllocations, TheCounterSeesAllocations) {
   const long before = allocation_count();
   World world;
