@@ -111,6 +111,10 @@ double median(std::vector<double> values) {
 
 }  // namespace
 
+WorldSettings impulse2d_settings(const CompareScene& scene, const lab::LabMethod& method) {
+  return settings_for(lab_scene(scene), method);
+}
+
 std::vector<Contender> contenders(std::vector<std::string>& notes) {
   // The default (the soft step, 4 sub-steps x 1 pass) and the accumulated solver at the
   // sub-steps and passes it is measured at (settings_for).

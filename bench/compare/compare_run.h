@@ -36,6 +36,11 @@ struct MemoryUse {
   double resident_bytes = -1.0;
 };
 
+/// impulse2d's world settings for `method` on `scene`, exactly as `run_interleaved` steps it:
+/// gravity -10 m/s^2, 1/60 s, sleeping off, one thread, the method's solver settings (the
+/// default `LabMethod{}` is the default soft step, `WorldSettings::solver_lanes` 0).
+WorldSettings impulse2d_settings(const CompareScene& scene, const lab::LabMethod& method);
+
 /// One engine's result on one scene.
 struct Outcome {
   bool ran = true;           ///< false when the engine was left out of the scene (`--peers-max`)

@@ -1,0 +1,68 @@
+#pragma once
+/// @file v3_protocol.h
+/// What bench_v3 and its Box2D v3 runners share: the scenes by name (bench_compare's own), the
+/// timing loop both engines are measured by, and the one machine-readable line a runner prints.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bench/compare/compare_scene.h"
+#include "bench/compare/stability.h"
+
+namespace impulse2d::bench_v3 {
+
+/// The scenes bench_v3 runs, in its order: "large_pyramid", "many_pyramids", "ball_pit".
+const std::vector<std::string>& scene_names();
+
+/// bench_compare's scene `name` (one of `scene_names`) as bench_compare.cpp builds it, with its
+/// full step count: Box2D v3's large_pyramid (100 rows, 500 steps), many_pyramids (400
+/// pyramids of 10 rows, 20 to a ground, 200 steps), the ball pit (5000 balls in rows of 100,
+/// 300 steps). Throws `std::invalid_argument` for another name.
+compare::CompareScene scene_by_name(const std::string& name);
+
+/// CPU time of the calling thread, milliseconds (`CLOCK_THREAD_CPUTIME_ID`).
+double thread_cpu_ms();
+
+/// Calls `step` `warmup` times untimed, then `steps` times each timed alone by
+/// `thread_cpu_ms`; returns the `steps` times, milliseconds, in order.
+std::vector<double> timed_steps(const std::function<void()>& step, int warmup, int steps);
+
+/// The median of `values` (the mean of the two middle ones for an even count); 0 when empty.
+double median(std::vector<double> values);
+
+/// One run of one scene in one engine build: what a runner reports and bench_v3 measures of
+/// impulse2d alike.
+struct RunResult {
+  std::string scene;       ///< scene name, e.g. "large_pyramid"
+  std::string width;       ///< the build's vector width: "sse2" or "avx2" (runner line only)
+  std::string commit;      ///< Box2D v3 commit, 40 hex digits (runner line only)
+  int steps = 0;           ///< measured steps
+  int warmup = 0;          ///< untimed steps before them
+  double median_ms = 0.0;  ///< median CPU time of a measured step, milliseconds
+  double min_ms = 0.0;     ///< fastest measured step, milliseconds
+  /// What the run left, judged as bench_compare judges it (`compare::judge_final_states`, and
+  /// `depth` = `compare::deepest_overlap` of the final states only).
+  compare::Stability stability;
+};
+
+/// Judges the final `states` of a run of `scene` into `result.stability`: sag, side, moved,
+/// out, non_finite and the deepest overlap at the end.
+void judge(const compare::CompareScene& scene, const std::vector<lab::BodyState>& states,
+           RunResult& result);
+
+/// The runner's line (no newline): `v3_runner` then, separated by single spaces and in this
+/// order, scene= width= commit= steps= warmup= median_ms= min_ms= sag= side= moved= out=
+/// non_finite= depth=; times and lengths with 6 decimals.
+std::string format_runner_line(const RunResult& result);
+
+/// Parses a line made by `format_runner_line` (a trailing newline allowed), strictly: every
+/// key present, in order, once; numbers whole (no trailing characters), finite, not negative;
+/// the commit 40 lower-case hex digits; width sse2 or avx2. Throws `std::runtime_error` whose
+/// message names `runner` and says what is wrong.
+RunResult parse_runner_line(const std::string& line, const std::string& runner);
+
+/// A whole number in `minimum`..100000000 from `text` (all of it, decimal digits only), or -1.
+int parse_count(const std::string& text, int minimum = 1);
+
+}  // namespace impulse2d::bench_v3

@@ -1,0 +1,205 @@
+// bench_v3's parts that need no Box2D v3: the runner line (round trip and strict rejection,
+// naming the runner), the pair statistics, the command line, the scenes by name.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "bench/v3/v3_options.h"
+#include "bench/v3/v3_pairs.h"
+#include "bench/v3/v3_protocol.h"
+
+using namespace impulse2d::bench_v3;
+
+namespace {
+
+const std::string commit = "617d32ab02570930625bbcb8479f54be9bf8d045";
+
+RunResult sample_run() {
+  RunResult run;
+  run.scene = "large_pyramid";
+  run.width = "avx2";
+  run.commit = commit;
+  run.steps = 500;
+  run.warmup = 1;
+  run.median_ms = 2.4375;
+  run.min_ms = 2.25;
+  run.stability.sag = 0.732f;
+  run.stability.side = 0.182f;
+  run.stability.moved = 1114;
+  run.stability.depth = 0.0041f;
+  return run;
+}
+
+// The message of the runtime_error `parse_runner_line(line, "runner_x")` throws ("" if none).
+std::string rejection(const std::string& line) {
+  try {
+    parse_runner_line(line, "runner_x");
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST(BenchV3Protocol, RunnerLineRoundTrips) {
+  const std::string line = format_runner_line(sample_run());
+  EXPECT_EQ(line.rfind("v3_runner scene=large_pyramid width=avx2 commit=" + commit + " steps=500 warmup=1 ", 0), 0u)
+      << line;
+  const RunResult parsed = parse_runner_line(line + "\n", "runner_x");
+  EXPECT_EQ(parsed.scene, "large_pyramid");
+  EXPECT_EQ(parsed.width, "avx2");
+  EXPECT_EQ(parsed.commit, commit);
+  EXPECT_EQ(parsed.steps, 500);
+  EXPECT_EQ(parsed.warmup, 1);
+  EXPECT_DOUBLE_EQ(parsed.median_ms, 2.4375);
+  EXPECT_DOUBLE_EQ(parsed.min_ms, 2.25);
+  EXPECT_NEAR(parsed.stability.sag, 0.732f, 1e-6f);
+  EXPECT_NEAR(parsed.stability.side, 0.182f, 1e-6f);
+  EXPECT_EQ(parsed.stability.moved, 1114);
+  EXPECT_EQ(parsed.stability.out, 0);
+  EXPECT_EQ(parsed.stability.non_finite, 0);
+  EXPECT_NEAR(parsed.stability.depth, 0.0041f, 1e-6f);
+}
+
+TEST(BenchV3Protocol, MalformedLinesAreErrorsNamingTheRunner) {
+  const std::string good = format_runner_line(sample_run());
+  ASSERT_EQ(rejection(good), "");
+  const std::string bad_lines[] = {
+      "",
+      "hello",
+      good + " extra=1",
+      good.substr(0, good.rfind(" depth=")),                  // a field missing
+      replaced(good, "scene=large_pyramid", "scene=tower"),   // unknown scene
+      replaced(good, "width=avx2", "width=avx512"),
+      replaced(good, "commit=" + commit, "commit=617d32ab"),  // short hash
+      replaced(good, "steps=500", "steps=500x"),              // trailing characters
+      replaced(good, "steps=500", "steps=0"),
+      replaced(good, "median_ms=2.437500", "median_ms=-2.4"),
+      replaced(good, "median_ms=2.437500", "median_ms=nan"),
+      replaced(good, "median_ms=2.437500", "median_ms=1e3"),
+      replaced(good, "min_ms=2.250000", "min_ms=9.0"),        // fastest above the median
+      replaced(good, " warmup=1 ", "  warmup=1 "),            // two spaces
+      replaced(good, "moved=1114", "moved=11.5"),
+      replaced(replaced(good, "sag=", "SAG="), "side=", "sag="),  // keys out of order
+      good + "\n\n",
+      "v3_runner " + good,
+  };
+  for (const std::string& line : bad_lines) {
+    const std::string message = rejection(line);
+    EXPECT_NE(message.find("runner runner_x"), std::string::npos) << "accepted or unnamed: '" << line << "' -> " << message;
+  }
+}
+
+TEST(BenchV3Protocol, ScenesAreBenchCompares) {
+  ASSERT_EQ(scene_names().size(), 3u);
+  EXPECT_EQ(scene_by_name("large_pyramid").dynamic_count, 5050);
+  EXPECT_EQ(scene_by_name("large_pyramid").steps, 500);
+  EXPECT_EQ(scene_by_name("many_pyramids").dynamic_count, 22000);
+  EXPECT_EQ(scene_by_name("many_pyramids").steps, 200);
+  EXPECT_EQ(scene_by_name("ball_pit").dynamic_count, 5000);
+  EXPECT_EQ(scene_by_name("ball_pit").steps, 300);
+  EXPECT_THROW(scene_by_name("rain"), std::invalid_argument);
+}
+
+TEST(BenchV3Protocol, MedianAndCounts) {
+  EXPECT_DOUBLE_EQ(median({3.0, 1.0, 2.0}), 2.0);
+  EXPECT_DOUBLE_EQ(median({4.0, 1.0, 2.0, 3.0}), 2.5);
+  EXPECT_DOUBLE_EQ(median({}), 0.0);
+  EXPECT_EQ(parse_count("12"), 12);
+  EXPECT_EQ(parse_count("0"), -1);
+  EXPECT_EQ(parse_count("0", 0), 0);
+  EXPECT_EQ(parse_count("-3", 0), -1);
+  EXPECT_EQ(parse_count("3 "), -1);
+  EXPECT_EQ(parse_count(""), -1);
+  EXPECT_EQ(parse_count("1000000000"), -1);
+}
+
+TEST(BenchV3Pairs, SummaryGivesMedianSpreadAndVerdicts) {
+  const PairSummary summary = summarize_pairs({0.85, 0.95, 0.80, 0.88, 0.99});
+  EXPECT_DOUBLE_EQ(summary.median, 0.88);
+  EXPECT_DOUBLE_EQ(summary.min, 0.80);
+  EXPECT_DOUBLE_EQ(summary.max, 0.99);
+  EXPECT_TRUE(summary.all_below_one);
+  EXPECT_TRUE(summary.median_meets_goal);
+  EXPECT_EQ(summary.ratios.size(), 5u);
+
+  const PairSummary one_above = summarize_pairs({0.80, 1.01, 0.85});
+  EXPECT_FALSE(one_above.all_below_one);
+  EXPECT_TRUE(one_above.median_meets_goal);
+  const PairSummary at_one = summarize_pairs({1.0});
+  EXPECT_FALSE(at_one.all_below_one);  // equal is not faster
+  EXPECT_FALSE(at_one.median_meets_goal);
+  EXPECT_TRUE(summarize_pairs({0.9}).median_meets_goal);
+
+  EXPECT_THROW(summarize_pairs({}), std::invalid_argument);
+  EXPECT_THROW(summarize_pairs({0.9, -1.0}), std::invalid_argument);
+}
+
+TEST(BenchV3Pairs, ReportNamesTheCommitAndEveryPair) {
+  WidthSeries width{"impulse2d 4 lanes", "Box2D v3 SSE2", {}, {}, ""};
+  for (const double ours : {3.0, 3.3}) {
+    RunResult run = sample_run();
+    run.median_ms = ours;
+    width.ours_runs.push_back(run);
+    run.median_ms = 3.0;
+    width.theirs_runs.push_back(run);
+  }
+  EXPECT_EQ(pair_ratios(width).size(), 2u);
+  SceneSeries scene;
+  scene.scene = "large_pyramid";
+  scene.widths = {width, WidthSeries{"impulse2d 8 lanes", "Box2D v3 AVX2", {}, {}, "this CPU has no AVX2"}};
+  Report report;
+  report.commit = commit;
+  report.rounds = 2;
+  report.scenes = {scene};
+  for (const bool markdown : {false, true}) {
+    std::ostringstream out;
+    write_report(out, report, markdown);
+    const std::string text = out.str();
+    if (markdown) {
+      EXPECT_NE(text.find("### large_pyramid"), std::string::npos) << text;
+    } else {
+      EXPECT_EQ(text.find("### "), std::string::npos) << text;
+    }
+    EXPECT_NE(text.find("large_pyramid (0 bodies, 0 steps timed after 0 untimed) - Box2D v3 " + commit),
+              std::string::npos) << text;
+    EXPECT_NE(text.find("| 1.000 1.100 | 1.050 | [1.000-1.100] | no | no |"), std::string::npos) << text;
+    EXPECT_NE(text.find("skipped: this CPU has no AVX2"), std::string::npos) << text;
+  }
+}
+
+TEST(BenchV3Options, DefaultsAndValues) {
+  const Options defaults = parse_options({});
+  EXPECT_EQ(defaults.rounds, 5);
+  EXPECT_EQ(defaults.steps, -1);
+  EXPECT_EQ(defaults.warmup, 1);
+  EXPECT_EQ(defaults.scenes, scene_names());
+  EXPECT_EQ(measured_steps(defaults, 500), 500);
+
+  const Options chosen = parse_options({"--rounds", "3", "--scene", "ball_pit,large_pyramid", "--quick",
+                                        "--warmup", "0", "--out", "dir"});
+  EXPECT_EQ(chosen.rounds, 3);
+  EXPECT_EQ(chosen.warmup, 0);
+  EXPECT_EQ(chosen.out, "dir");
+  EXPECT_EQ(chosen.scenes, (std::vector<std::string>{"large_pyramid", "ball_pit"}));  // bench_v3's order
+  EXPECT_EQ(measured_steps(chosen, 500), 100);
+  EXPECT_EQ(measured_steps(parse_options({"--scene", "ball_pit", "--scene", "many_pyramids", "--steps", "7"}), 500), 7);
+}
+
+TEST(BenchV3Options, BadArgumentsAreUsageErrors) {
+  const std::vector<std::vector<std::string>> bad{
+      {"--rounds"}, {"--rounds", "0"}, {"--rounds", "two"}, {"--steps", "-5"}, {"--warmup", "x"},
+      {"--scene", "rain"}, {"--scene", "ball_pit,"}, {"--out", ""}, {"--fast"}, {"large_pyramid"}};
+  for (const std::vector<std::string>& arguments : bad) {
+    EXPECT_THROW(parse_options(arguments), UsageError) << arguments.front();
+  }
+}
