@@ -51,6 +51,8 @@ inline Float4 max(Float4 a, Float4 b) { return {_mm_max_ps(b.v, a.v)}; }
 inline Float4 abs(Float4 a) { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)}; }
 /// `std::sqrt` lane by lane (correctly rounded, as the scalar square root).
 inline Float4 sqrt(Float4 a) { return {_mm_sqrt_ps(a.v)}; }
+/// Whether any lane is above 0 (NaN is not).
+inline bool any_positive(Float4 a) { return _mm_movemask_ps(_mm_cmpgt_ps(a.v, _mm_setzero_ps())) != 0; }
 
 /// The byte channels of four RGBA pixels as floats, one channel a `Float4`, and back.
 struct Pixels4 {
@@ -136,6 +138,8 @@ inline Float4 max(Float4 a, Float4 b) {
 inline Float4 abs(Float4 a) { return float4_detail::lanes([&](int i) { return std::abs(a.v[i]); }); }
 /// `std::sqrt` lane by lane.
 inline Float4 sqrt(Float4 a) { return float4_detail::lanes([&](int i) { return std::sqrt(a.v[i]); }); }
+/// Whether any lane is above 0 (NaN is not).
+inline bool any_positive(Float4 a) { return a.v[0] > 0.0f || a.v[1] > 0.0f || a.v[2] > 0.0f || a.v[3] > 0.0f; }
 
 /// The byte channels of four RGBA pixels as floats, one channel a `Float4`, and back.
 struct Pixels4 {
