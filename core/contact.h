@@ -104,6 +104,10 @@ struct Contact {
   /// through) and taken afresh once they are more than a millimetre apart.
   bool enabled = true;
   bool recycled = false;     ///< this step kept last step's manifold (see contact_recycle.h)
+  /// The contact touches in this step, as contact events count it (`touches_in_step`):
+  /// recorded by prepare when contact events are on, while the contact is in the cache; valid
+  /// for the awake, enabled contacts of the step just taken (set-aside ones are judged afresh).
+  bool touching = false;
   vec2 normal{0.0f, 0.0f};   ///< unit, from A to B
   int point_count = 0;       ///< 1 or 2
   PairMass mass;             ///< the two bodies' inverse masses, resolved at prepare

@@ -433,14 +433,16 @@ void World::step() {
       body.previous_angle = body.angle;
     }
   });
-  begin_step_events(world);
+  begin_step_events(world, pool);
   if (!world.solver || world.solver_method != world.settings.solver) {
     world.solver = make_step_solver(world.settings.solver);
     world.solver_method = world.settings.solver;
   }
   const Clock::time_point solve_start = Clock::now();
   SolverStages stages(world);
-  world.solver->step(stages, resolve_solver_context(world.settings));
+  SolverContext context = resolve_solver_context(world.settings);
+  context.touch_velocities = touch_velocities(world.events);
+  world.solver->step(stages, context);
   // Whatever the stages did not time themselves is the solver's own work.
   world.stats.solver_ms = elapsed_ms(solve_start) - world.stats.broad_phase_ms -
                           world.stats.narrow_phase_ms - world.stats.integrate_ms -

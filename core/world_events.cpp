@@ -1,10 +1,13 @@
 // Events of a step (events.h): after the step, this step's touching pairs and sensor overlaps
 // are compared with the last step's (both sorted by slot pair), so the solver never calls out
-// and a world without events steps exactly as before (this only reads what the step made).
+// and a world without events steps exactly as before (events only read what the step made; the
+// one thing the step does for them is judge each awake contact's touch as prepare passes it).
 #include "core/world_events.h"
 
 #include "core/collide.h"
+#include "core/solver/contact_touch.h"
 #include "core/solver/world_state.h"
+#include "core/solver/worker_pool.h"
 
 #include <algorithm>
 
@@ -21,30 +24,13 @@ EventPair pair_of(const Contact& contact) {
 
 bool key_less(const EventPair& a, const EventPair& b) { return a.key() < b.key(); }
 
-// Relative approach speed (m/s, > 0 closing) of a contact point under the bodies' free
-// velocities (what they carry into the step plus the step's gravity and forces).
-float free_approach_speed(const WorldEvents& events, const Contact& contact, const ContactPoint& point) {
-  const std::uint32_t a = contact.body_a.index;
-  const std::uint32_t b = contact.body_b.index;
-  const vec2 relative = (events.free_linear_velocity[b] + cross(events.free_angular_velocity[b], point.anchor_b)) -
-                        (events.free_linear_velocity[a] + cross(events.free_angular_velocity[a], point.anchor_a));
-  return -glm::dot(relative, contact.normal);
+FreeVelocities free_velocities(const WorldEvents& events) {
+  return FreeVelocities{events.free_linear_velocity.data(), events.free_angular_velocity.data()};
 }
 
-// A contact touches in a step when one of its points, moving freely through the step from the
-// gap it had when the step began, would end it less than `slop` apart (or overlapping): a
-// resting point, an overlap, or a speculative point the bodies close within the step (the
-// solver then stops them at the surface). A contact turned off by the filter does not touch.
-// This reads only what the step began with, so it is the same in every solver (whose stored
-// impulses differ: a bounce's is dropped, the per-iteration solver keeps none).
-bool is_touching(const WorldEvents& events, const Contact& contact, float slop, float dt) {
-  if (!contact.enabled) return false;
-  for (int i = 0; i < contact.point_count; ++i) {
-    const ContactPoint& point = contact.points[i];
-    const float gap = -point.depth;
-    if (gap - free_approach_speed(events, contact, point) * dt <= slop) return true;
-  }
-  return false;
+// True when begin/end events of contacts are collected after this step.
+bool collects_contact_events(const WorldEvents& events) {
+  return events.contact_event_bodies > 0 || !events.touching.empty();
 }
 
 template <class Vector>
@@ -85,7 +71,9 @@ void collect_contact_events(WorldState& world) {
            world.bodies[contact.body_b.index].enable_contact_events;
   };
   // Merge the awake and the set-aside contacts (each sorted by pair, disjoint): a pair that
-  // fell asleep keeps touching.
+  // fell asleep keeps touching. An awake contact's touch was judged by prepare this step (its
+  // first cache line holds all this reads); a set-aside one is judged here.
+  const FreeVelocities velocities = free_velocities(events);
   const std::vector<Contact>& awake = world.contacts;
   const std::vector<Contact>& resting = world.sleeping_contacts;
   std::size_t i = 0;
@@ -95,7 +83,9 @@ void collect_contact_events(WorldState& world) {
         j == resting.size() ||
         (i < awake.size() && pair_of(awake[i]).key() < pair_of(resting[j]).key());
     const Contact& contact = take_awake ? awake[i++] : resting[j++];
-    if (wants(contact) && is_touching(events, contact, slop, dt)) next.push_back(pair_of(contact));
+    const bool touching = take_awake ? contact.enabled && contact.touching
+                                     : touches_in_step(velocities, contact, slop, dt);
+    if (touching && wants(contact)) next.push_back(pair_of(contact));
   }
   reserve_at_least(events.contact.begin, next.capacity());
   reserve_at_least(events.contact.end, events.touching.capacity() + events.contact.end.size());
@@ -120,6 +110,7 @@ void collect_hit_events(WorldState& world) {
   WorldEvents& events = world.events;
   const float dt = world.settings.time_step;
   reserve_at_least(events.contact.hit, world.contacts.capacity());
+  const FreeVelocities velocities = free_velocities(events);
   for (const Contact& contact : world.contacts) {
     const Body& a = world.bodies[contact.body_a.index];
     const Body& b = world.bodies[contact.body_b.index];
@@ -127,7 +118,7 @@ void collect_hit_events(WorldState& world) {
     int fastest = -1;
     float fastest_speed = events.hit_event_threshold;
     for (int p = 0; p < contact.point_count; ++p) {
-      const float approach = free_approach_speed(events, contact, contact.points[p]);
+      const float approach = free_approach_speed(velocities, contact, contact.points[p]);
       const float gap = -contact.points[p].depth;
       if (approach > fastest_speed && gap - approach * dt < 0.0f) {
         fastest_speed = approach;
@@ -187,7 +178,7 @@ void collect_sensor_events(WorldState& world) {
 
 }  // namespace
 
-void begin_step_events(WorldState& world) {
+void begin_step_events(WorldState& world, WorkerPool* pool) {
   WorldEvents& events = world.events;
   events.contact.begin.clear();
   events.contact.end.clear();
@@ -218,22 +209,28 @@ void begin_step_events(WorldState& world) {
     events.free_angular_velocity.resize(count);
   }
   const float dt = world.settings.time_step;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Body& body = world.bodies[i];
-    vec2 linear = body.linear_velocity;
-    float angular = body.angular_velocity;
-    if (world.alive[i] && body.type == BodyType::Dynamic && body.awake) {
-      linear += (world.settings.gravity * body.gravity_scale + body.force * body.inverse_mass) * dt;
-      angular += body.inverse_inertia * body.torque * dt;
+  parallel_for(pool, count, 512, [&world, &events, dt](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const Body& body = world.bodies[i];
+      vec2 linear = body.linear_velocity;
+      float angular = body.angular_velocity;
+      if (world.alive[i] && body.type == BodyType::Dynamic && body.awake) {
+        linear += (world.settings.gravity * body.gravity_scale + body.force * body.inverse_mass) * dt;
+        angular += body.inverse_inertia * body.torque * dt;
+      }
+      events.free_linear_velocity[i] = linear;
+      events.free_angular_velocity[i] = angular;
     }
-    events.free_linear_velocity[i] = linear;
-    events.free_angular_velocity[i] = angular;
-  }
+  });
+}
+
+FreeVelocities touch_velocities(const WorldEvents& events) {
+  return collects_contact_events(events) ? free_velocities(events) : FreeVelocities{};
 }
 
 void collect_step_events(WorldState& world) {
   WorldEvents& events = world.events;
-  if (events.contact_event_bodies > 0 || !events.touching.empty()) collect_contact_events(world);
+  if (collects_contact_events(events)) collect_contact_events(world);
   if (events.hit_event_bodies > 0) collect_hit_events(world);
   if (events.sensor_bodies > 0 || !events.sensor_overlaps.empty()) collect_sensor_events(world);
 }

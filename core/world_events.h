@@ -13,6 +13,8 @@
 namespace impulse2d {
 
 struct WorldState;
+class WorkerPool;
+struct FreeVelocities;
 
 /// Two shapes of a remembered touch or overlap, ordered by slot (sensor first for sensors),
 /// then by shape (for compound bodies).
@@ -51,8 +53,12 @@ struct WorldEvents {
 };
 
 /// Start of a step: clears the caller's buffers (moving in the end events of removed bodies)
-/// and, when hit events are on, records each body's pre-solve velocity.
-void begin_step_events(WorldState& world);
+/// and, when contact or hit events are on, records each body's free velocity over the step
+/// (on `pool`'s workers, when not null).
+void begin_step_events(WorldState& world, WorkerPool* pool);
+/// The free velocities `begin_step_events` recorded, for prepare to judge each awake contact's
+/// touch (`Contact::touching`); null when this step reports no contact begin/end events.
+FreeVelocities touch_velocities(const WorldEvents& events);
 /// End of a step (after bodies are finished): contact begin/end/hit and sensor events.
 void collect_step_events(WorldState& world);
 /// `remove_body(id)`: the body's touches and overlaps end (reported after the next step).

@@ -3,6 +3,7 @@
 #include "core/solver/contact_friction_state.h"
 #include "core/solver/contact_recycle.h"
 #include "core/solver/contact_solver_internal.h"
+#include "core/solver/contact_touch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,6 +83,9 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
       static_friction_cannot_stop(slip_need / count, carried_load, contact.static_friction,
                                   context.friction_intervals)) {
     break_loose(contact);
+  }
+  if (context.touch_velocities.linear != nullptr) {
+    contact.touching = touches_in_step(context.touch_velocities, contact, context.slop, context.time_step);
   }
 }
 

@@ -4,6 +4,7 @@
 /// inner loops never re-read or re-derive them.
 
 #include "core/settings.h"
+#include "core/solver/contact_touch.h"
 #include "core/solver/softness.h"
 
 namespace impulse2d {
@@ -41,6 +42,9 @@ struct SolverContext {
   /// and with friction off.
   float friction_intervals = 0.0f;
   int solver_lanes = 0;            ///< contacts solved side by side, 0: widest (SoftStep)
+  /// The bodies' free velocities over the step when contact events are on (else null):
+  /// `prepare_contact` then records `Contact::touching`.
+  FreeVelocities touch_velocities;
 };
 
 /// Resolves `settings` for one step.

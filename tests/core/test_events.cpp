@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <set>
+#include <tuple>
 #include <vector>
 
 using namespace impulse2d;
@@ -369,4 +371,83 @@ TEST(Events, TumblingTriangleHitsOnlyCornersThatLand) {
     }
   }
   EXPECT_GE(hits, 5);
+}
+
+// The touch of each awake contact is judged as prepare passes it, that of each set-aside one at
+// the end of the step. Recomputed here from the definition (events.h) over every contact the
+// world holds after each step, with the velocities the bodies had before it, the touching set
+// must move by exactly the begin and end events, in every solver, with bodies falling asleep.
+TEST(Events, BeginAndEndFollowTheDefinitionOfTouchInEverySolver) {
+  for (const SolverMethod method : {SolverMethod::SoftStep, SolverMethod::Accumulated, SolverMethod::PerIteration}) {
+    WorldSettings settings = settings_for(method);
+    settings.enable_sleeping = true;
+    World world(settings);
+    add_ground(world);
+    for (int i = 0; i < 12; ++i) {
+      BodyDef def;
+      def.position = {-3.0f + 0.55f * static_cast<float>(i), 0.6f + 0.9f * static_cast<float>(i % 4)};
+      def.angular_velocity = 0.3f * static_cast<float>(i % 3) - 0.3f;
+      def.material.restitution = i % 3 == 0 ? 0.6f : 0.0f;
+      world.create_body(def, i % 2 == 0 ? make_circle(0.3f) : make_oriented_box({0.3f, 0.2f}));
+    }
+    using Key = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>;
+    std::set<Key> touching;
+    int begins = 0;
+    int ends = 0;
+    int asleep_steps = 0;
+    for (int step = 0; step < 600; ++step) {
+      std::vector<vec2> linear(64, vec2(0.0f));
+      std::vector<float> angular(64, 0.0f);
+      const float dt = world.settings().time_step;
+      for (const BodyId id : world.body_ids()) {
+        const BodyView body = world.body(id);
+        linear[id.index] = body.linear_velocity;
+        angular[id.index] = body.angular_velocity;
+        if (body.type == BodyType::Dynamic && body.awake) {
+          linear[id.index] += (world.settings().gravity * body.gravity_scale + vec2(0.0f)) * dt;
+        }
+      }
+      world.step();
+      std::set<Key> now;
+      for (const std::vector<Contact>* list : {&world.contacts(), &world.sleeping_contacts()}) {
+        for (const Contact& contact : *list) {
+          if (!contact.enabled) continue;
+          const std::uint32_t a = contact.body_a.index;
+          const std::uint32_t b = contact.body_b.index;
+          for (int i = 0; i < contact.point_count; ++i) {
+            const ContactPoint& point = contact.points[i];
+            const vec2 relative = (linear[b] + cross(angular[b], point.anchor_b)) -
+                                  (linear[a] + cross(angular[a], point.anchor_a));
+            const float approach = -glm::dot(relative, contact.normal);
+            if (-point.depth - approach * dt <= world.settings().slop) {
+              now.insert({a, b, contact.child_a, contact.child_b});
+              break;
+            }
+          }
+        }
+      }
+      std::set<Key> expected_begin;
+      std::set<Key> expected_end;
+      for (const Key& key : now) if (!touching.count(key)) expected_begin.insert(key);
+      for (const Key& key : touching) if (!now.count(key)) expected_end.insert(key);
+      std::set<Key> got_begin;
+      std::set<Key> got_end;
+      for (const auto& e : world.contact_events().begin) {
+        got_begin.insert({e.body_a.index, e.body_b.index, e.shape_a.index, e.shape_b.index});
+      }
+      for (const auto& e : world.contact_events().end) {
+        got_end.insert({e.body_a.index, e.body_b.index, e.shape_a.index, e.shape_b.index});
+      }
+      ASSERT_EQ(got_begin, expected_begin) << solver_name(method) << ", step " << step + 1;
+      ASSERT_EQ(got_end, expected_end) << solver_name(method) << ", step " << step + 1;
+      begins += static_cast<int>(got_begin.size());
+      ends += static_cast<int>(got_end.size());
+      if (!world.sleeping_contacts().empty()) ++asleep_steps;
+      touching = now;
+    }
+    // The run really has touches beginning and ending, and contacts set aside asleep.
+    EXPECT_GT(begins, 12) << solver_name(method);
+    EXPECT_GT(ends, 3) << solver_name(method);
+    EXPECT_GT(asleep_steps, 10) << solver_name(method);
+  }
 }
