@@ -19,6 +19,13 @@ namespace impulse2d::render {
 
 struct Pixels4;
 
+/// 1 when bit `min(max(index, 0), 255)` of the 256 bits `words` (bit j is bit j % 32 of word
+/// j / 32) is set, else 0.
+inline float bit_of(const std::uint32_t* words, std::int32_t index) {
+  const std::int32_t bit = index < 0 ? 0 : (index > 255 ? 255 : index);
+  return static_cast<float>((words[bit >> 5] >> (bit & 31)) & 1u);
+}
+
 #if defined(__SSE2__)
 
 /// Four floats in one SSE register.
@@ -36,6 +43,11 @@ struct Float4 {
   static Float4 first_lanes(int count) {
     const __m128 below = _mm_cmplt_ps(_mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f), _mm_set1_ps(static_cast<float>(count)));
     return {_mm_and_ps(below, _mm_set1_ps(1.0f))};
+  }
+  /// Lane i `bit_of(words, base[i] + offset)`.
+  static Float4 bits(const std::uint32_t* words, const std::int32_t* base, std::int32_t offset) {
+    return {_mm_set_ps(bit_of(words, base[3] + offset), bit_of(words, base[2] + offset), bit_of(words, base[1] + offset),
+                       bit_of(words, base[0] + offset))};
   }
 };
 
@@ -112,6 +124,10 @@ struct Float4 {
   static Float4 ramp(float first) { return lanes([&](int i) { return first + static_cast<float>(i); }); }
   /// 1 in the first `count` lanes (0..4), 0 in the others.
   static Float4 first_lanes(int count) { return lanes([&](int i) { return i < count ? 1.0f : 0.0f; }); }
+  /// Lane i `bit_of(words, base[i] + offset)`.
+  static Float4 bits(const std::uint32_t* words, const std::int32_t* base, std::int32_t offset) {
+    return lanes([&](int i) { return bit_of(words, base[i] + offset); });
+  }
 };
 
 /// Lane-wise sum.

@@ -32,6 +32,19 @@ struct Float8 {
     const __m256 below = _mm256_cmp_ps(indices(), _mm256_set1_ps(static_cast<float>(count)), _CMP_LT_OQ);
     return {_mm256_and_ps(below, _mm256_set1_ps(1.0f))};
   }
+  /// 1 in lane i when bit `min(max(base[i] + offset, 0), 255)` of the 256 bits `words` (bit j is
+  /// bit j % 32 of word j / 32) is set, else 0.
+  static Float8 bits(const std::uint32_t* words, const std::int32_t* base, std::int32_t offset) {
+    const __m256i index = _mm256_min_epi32(
+        _mm256_max_epi32(_mm256_add_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(base)),
+                                          _mm256_set1_epi32(offset)),
+                         _mm256_setzero_si256()),
+        _mm256_set1_epi32(255));
+    const __m256i word = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(words)),
+                                                     _mm256_srli_epi32(index, 5));
+    const __m256i bit = _mm256_srlv_epi32(word, _mm256_and_si256(index, _mm256_set1_epi32(31)));
+    return {_mm256_cvtepi32_ps(_mm256_and_si256(bit, _mm256_set1_epi32(1)))};
+  }
 
  private:
   static __m256 indices() { return _mm256_set_ps(7.0f, 6.0f, 5.0f, 4.0f, 3.0f, 2.0f, 1.0f, 0.0f); }

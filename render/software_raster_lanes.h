@@ -476,9 +476,11 @@ void draw_axis_box(const SoftwarePrimitive& primitive, const ShapeVertex& shape,
 }
 
 // A text run in window rows [first_row, last_row]: ink where the font pixel under the pixel
-// centre is set, within the run (the text fragment program's formula). The font column under
-// each pixel column is found once per call and the font row once per row, with the same
-// conversions as pixel by pixel, so a pixel without ink costs a bit test.
+// centre is set, within the run (the text fragment program's formula), F::width pixels at a time.
+// The font column under each pixel column is found once per call and the font row once per row,
+// with the same conversions as pixel by pixel, so pixels without ink cost a bit test each
+// (F::bits), and a group of them nothing more.
+template <typename F>
 void draw_text_run(const SoftwarePrimitive& primitive, const TextVertex& run, int first_row, int last_row,
                    Frame& frame) {
   const Rgba fill = normalised(run.fill);
@@ -486,7 +488,9 @@ void draw_text_run(const SoftwarePrimitive& primitive, const TextVertex& run, in
   const int bottom = std::max(primitive.bottom, first_row);
   const int top = std::min(primitive.top, last_row);
   constexpr int chunk = 64;  // pixel columns whose font columns are held at once
-  int bit_columns[chunk];    // font column times font_glyph_rows, the column's first bit
+  // Font column times font_glyph_rows, the column's first bit; the lanes past a chunk's last
+  // column read what is there and are not drawn.
+  std::int32_t bit_columns[chunk + F::width] = {};
   for (int first_column = primitive.left; first_column <= primitive.right; first_column += chunk) {
     const int last_column = std::min(first_column + chunk - 1, primitive.right);
     for (int column = first_column; column <= last_column; ++column) {
@@ -496,18 +500,25 @@ void draw_text_run(const SoftwarePrimitive& primitive, const TextVertex& run, in
       bit_columns[column - first_column] = std::min(static_cast<int>(qx * run.font_scale), 31) * font_glyph_rows;
     }
     for (int row = bottom; row <= top; ++row) {
-      // The pixel centre below the run's top (y down), and the font row under it.
+      // The pixel centre below the run's top (y down), the font row under it, and the row's
+      // factor of the coverage.
       const float qy = run.run[1] - (static_cast<float>(row) + 0.5f);
       const int font_row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
+      const F inside_row(saturate(std::min(qy, run.run[3] - qy) + 0.5f));
       // GL's rows count from the bottom; the frame's from the top.
       std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
-      for (int column = first_column; column <= last_column; ++column) {
-        const int bit = std::min(std::max(bit_columns[column - first_column] + font_row, 0), 255);
-        if (((run.bits[bit >> 5] >> (bit & 31)) & 1u) == 0) continue;
-        const float qx = static_cast<float>(column) + 0.5f - run.run[0];
-        const float inside =
-            saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
-        blend_pixel(row_pixels + static_cast<std::size_t>(column) * 4, premultiplied(fill, inside));
+      for (int column = first_column; column <= last_column; column += F::width) {
+        const F ink = F::bits(run.bits, bit_columns + (column - first_column), font_row);
+        if (!any_positive(ink)) continue;
+        const F qx = F::ramp(static_cast<float>(column) + 0.5f) - F(run.run[0]);
+        const F inside = saturate(min(qx, F(run.run[2]) - qx) + F(0.5f)) * inside_row;
+        // Where there is ink, inside times 1 is inside: the coverage pixel by pixel.
+        const Premultiplied<F> source = premultiplied(fill, inside * ink);
+        if (column + F::width - 1 <= last_column) {
+          blend_group(row_pixels + static_cast<std::size_t>(column) * 4, source, source.a);
+        } else {
+          blend_tail(row_pixels, column, last_column, frame.width, source);
+        }
       }
     }
   }
@@ -592,7 +603,7 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       return;
     }
     case PrimitiveKind::text:
-      draw_text_run(primitive, batch.texts[primitive.index], first_row, last_row, frame);
+      draw_text_run<F>(primitive, batch.texts[primitive.index], first_row, last_row, frame);
       return;
   }
 }
