@@ -354,12 +354,15 @@ inline __attribute__((always_inline)) void blend_tail(std::uint8_t* row_pixels, 
                                                       const Premultiplied<F>& source) {
   std::uint8_t* const pixel = row_pixels + static_cast<std::size_t>(column) * 4;
   const int count = last - column + 1;
-  const bool spills = column + F::width > width;
+  const F alpha = source.a * F::first_lanes(count);
+  if (column + F::width <= width) {
+    blend_group(pixel, source, alpha);
+    return;
+  }
   std::uint8_t spill[4 * F::width] = {};
-  std::uint8_t* const target = spills ? spill : pixel;
-  if (spills) std::memcpy(spill, pixel, static_cast<std::size_t>(count) * 4);
-  blend_group(target, source, source.a * F::first_lanes(count));
-  if (spills) std::memcpy(pixel, spill, static_cast<std::size_t>(count) * 4);
+  std::memcpy(spill, pixel, static_cast<std::size_t>(count) * 4);
+  blend_group(spill, source, alpha);
+  std::memcpy(pixel, spill, static_cast<std::size_t>(count) * 4);
 }
 
 // Blends `shade(column)` (the premultiplied colours of the F::width pixels from `column` on)
