@@ -75,7 +75,10 @@ SoftwareBatch every_kind() {
   SoftwareBatch batch;
   Sequence sequence;
   for (int i = 0; i < 700; ++i) {
-    const vec2 centre(sequence.between(-10.0f, kFrameWidth + 10.0f), sequence.between(-10.0f, kFrameHeight + 10.0f));
+    // One statement per number: the order in which a call's arguments are evaluated differs
+    // between compilers, and the batch must not.
+    const float centre_x = sequence.between(-10.0f, kFrameWidth + 10.0f);
+    const vec2 centre(centre_x, sequence.between(-10.0f, kFrameHeight + 10.0f));
     const float angle = i % 3 == 0 ? 0.0f : sequence.between(0.0f, 6.2831853f);
     ShapeVertex shape;
     shape.frame[0] = centre.x;
