@@ -1,13 +1,17 @@
 #pragma once
 /// @file software_raster_lanes.h
 /// The CPU rasteriser's drawing of one band of rows (software_raster.h), written once for any
-/// number of lanes: discs, boxes and arrows are shaded and blended F::width pixels of a row at a
-/// time with F = Float4 (float4.h) or Float8 (float8.h), every lane doing the IEEE operations the
-/// scalar formulas do, so both widths give the same bytes.
+/// number of lanes: discs, boxes, arrows and text runs are shaded and blended F::width pixels of a
+/// row at a time with F = Float4 (float4.h) or Float8 (float8.h), every lane doing the IEEE
+/// operations the scalar formulas do, so both widths give the same bytes; polygons and fill
+/// triangles pixel by pixel.
 ///
 /// Included only by software_raster.cpp (four lanes) and software_raster_8.cpp (eight lanes,
 /// compiled for AVX2). Everything here has internal linkage (the unnamed namespace), so the
 /// linker never merges an AVX2 copy of a function into code that runs on a CPU without AVX2.
+/// The few inline functions of other headers called here (`std::min`, `Image::stride`, vector
+/// indexing) are inlined: `nm` of the AVX2 object lists no weak symbol, only its two entry
+/// points (software_raster_8.h).
 
 #include "render/easy_font.h"
 #include "render/software_raster.h"
@@ -527,8 +531,8 @@ void draw_text_run(const SoftwarePrimitive& primitive, const TextVertex& run, in
   }
 }
 
-// The coverage formulas of primitive_shaders.cpp, kind by kind; discs, boxes and arrows
-// F::width pixels at a time.
+// The coverage formulas of primitive_shaders.cpp, kind by kind; discs, boxes, arrows and text
+// runs F::width pixels at a time.
 template <typename F>
 void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primitive, int first_row, int last_row,
                     Frame& frame) {
