@@ -51,15 +51,25 @@ struct SoftwareBatch {
   void clear();
 };
 
+/// How many pixels of a row the rasteriser shades at once. Both widths give the same bytes.
+enum class RasterLanes {
+  four,   ///< SSE2 (or scalar lanes off x86-64)
+  eight,  ///< AVX2, where the CPU has it; else four
+};
+
 /// Rasterises a `SoftwareBatch` into a frame in bands of rows on a thread pool. Each pixel
 /// is written by one band, in drawing order, so frames do not depend on the thread count.
 class SoftwareRaster {
  public:
-  /// A pool of `thread_count` threads (the caller included).
-  explicit SoftwareRaster(int thread_count);
+  /// A pool of `thread_count` threads (the caller included), shading `lanes` pixels at once.
+  explicit SoftwareRaster(int thread_count, RasterLanes lanes = RasterLanes::eight);
 
+  /// Whether this CPU runs the eight-lane rasteriser (AVX2, checked at run time).
+  static bool eight_lanes_available();
   /// Threads that rasterise (the caller included).
   int thread_count() const { return pool_.thread_count(); }
+  /// The pixels of a row shaded at once: `RasterLanes::eight` only where the CPU has AVX2.
+  RasterLanes lanes() const { return lanes_; }
   /// Blends every primitive of `batch`, in order, over `frame` (opaque, rows top first, as
   /// read back; a primitive's rows count from the bottom). Primitives must lie inside the
   /// frame. Alpha stays 255.
@@ -67,6 +77,7 @@ class SoftwareRaster {
 
  private:
   ThreadPool pool_;
+  RasterLanes lanes_;
   std::vector<std::vector<std::uint32_t>> band_primitives_;  // per band: primitives that touch it
 };
 
