@@ -56,12 +56,24 @@ const std::vector<std::string>& scene_names() {
   return names;
 }
 
+std::string scaling_name(int bodies) { return "scaling_" + std::to_string(bodies); }
+
+bool known_scene(const std::string& name) {
+  if (std::find(scene_names().begin(), scene_names().end(), name) != scene_names().end()) return true;
+  return std::any_of(compare::scaling_sizes().begin(), compare::scaling_sizes().end(),
+                     [&](const compare::ScalingSize& size) { return scaling_name(size.bodies) == name; });
+}
+
 compare::CompareScene scene_by_name(const std::string& name) {
   // As bench_compare.cpp's `scenes` (full size) builds them.
   if (name == "large_pyramid") return compare::pyramid_scene("large_pyramid", 100, 500);
   if (name == "many_pyramids") return compare::many_pyramids_scene("many_pyramids", 400, 20, 10, 200);
   if (name == "ball_pit") return compare::ball_pit_scene("ball_pit", 5000, 100, 300);
-  throw std::invalid_argument("no scene named '" + name + "' (large_pyramid, many_pyramids, ball_pit)");
+  for (const compare::ScalingSize& size : compare::scaling_sizes()) {
+    if (scaling_name(size.bodies) == name) return compare::scaling_scene(size.pyramids, scaling_steps);
+  }
+  throw std::invalid_argument("no scene named '" + name +
+                              "' (large_pyramid, many_pyramids, ball_pit, scaling_990 .. scaling_100100)");
 }
 
 double thread_cpu_ms() {
@@ -135,7 +147,7 @@ RunResult parse_runner_line(const std::string& line, const std::string& runner) 
   }
   RunResult result;
   result.scene = values[0];
-  if (std::find(scene_names().begin(), scene_names().end(), result.scene) == scene_names().end()) {
+  if (!known_scene(result.scene)) {
     malformed(runner, "unknown scene '" + result.scene + "'", line);
   }
   result.width = values[1];

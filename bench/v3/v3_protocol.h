@@ -15,10 +15,21 @@ namespace impulse2d::bench_v3 {
 /// The scenes bench_v3 runs, in its order: "large_pyramid", "many_pyramids", "ball_pit".
 const std::vector<std::string>& scene_names();
 
-/// bench_compare's scene `name` (one of `scene_names`) as bench_compare.cpp builds it, with its
+/// The steps of a full run of a size of the scaling series (bench_compare's own).
+constexpr int scaling_steps = 100;
+
+/// The name bench_v3 and its runners give the scaling scene of `bodies` bodies:
+/// "scaling_<bodies>", as bench_compare names it.
+std::string scaling_name(int bodies);
+
+/// True when `name` is one of `scene_names` or names a size of `compare::scaling_sizes`.
+bool known_scene(const std::string& name);
+
+/// bench_compare's scene `name` (`known_scene`) as bench_compare.cpp builds it, with its
 /// full step count: Box2D v3's large_pyramid (100 rows, 500 steps), many_pyramids (400
 /// pyramids of 10 rows, 20 to a ground, 200 steps), the ball pit (5000 balls in rows of 100,
-/// 300 steps). Throws `std::invalid_argument` for another name.
+/// 300 steps), a size of the scaling series ("scaling_990" .. "scaling_100100",
+/// `compare::scaling_scene`, `scaling_steps`). Throws `std::invalid_argument` for another name.
 compare::CompareScene scene_by_name(const std::string& name);
 
 /// CPU time of the calling thread, milliseconds (`CLOCK_THREAD_CPUTIME_ID`).
@@ -58,7 +69,7 @@ std::string format_runner_line(const RunResult& result);
 
 /// Parses a line made by `format_runner_line` (a trailing newline allowed), strictly: every
 /// key present, in order, once; numbers whole (no trailing characters), finite, not negative;
-/// the commit 40 lower-case hex digits; width sse2 or avx2. Throws `std::runtime_error` whose
+/// the scene `known_scene`; the commit 40 lower-case hex digits; width sse2 or avx2. Throws `std::runtime_error` whose
 /// message names `runner` and says what is wrong.
 RunResult parse_runner_line(const std::string& line, const std::string& runner);
 
