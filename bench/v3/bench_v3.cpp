@@ -148,14 +148,21 @@ RunResult run_runner(const std::string& runner, const std::string& width, const 
   return result;
 }
 
-// Writes DIR/table.md with `write` through a temporary file renamed at the end.
+// Writes DIR/table.md with `write` through a temporary file renamed at the end; nothing is left
+// behind when `write` throws or the file cannot be written.
 void write_all_or_nothing(const std::string& directory, const std::function<void(std::ostream&)>& write) {
   std::filesystem::create_directories(directory);
   const std::filesystem::path final_path = std::filesystem::path(directory) / "table.md";
   const std::filesystem::path temporary = std::filesystem::path(directory) / ".table.md.tmp";
   {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    write(file);
+    try {
+      write(file);
+    } catch (...) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw;
+    }
     file.flush();
     if (!file) {
       std::error_code ignored;
