@@ -76,12 +76,14 @@ std::string load_average() {
 RunResult run_impulse2d(const compare::CompareScene& scene, int lanes, int warmup, int steps) {
   WorldSettings settings = compare::impulse2d_settings(scene, lab::LabMethod{});
   settings.solver_lanes = lanes;
+  const double heap_before = heap_in_use();
   compare::WorldSimulation simulation(scene, settings);
   RunResult result;
   result.scene = scene.name;
   result.steps = steps;
   result.warmup = warmup;
   const std::vector<double> times = timed_steps([&] { simulation.step(); }, warmup, steps);
+  result.heap_bytes = heap_in_use() - heap_before;
   result.median_ms = median(times);
   result.min_ms = *std::min_element(times.begin(), times.end());
   std::vector<lab::BodyState> states;

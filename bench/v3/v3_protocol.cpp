@@ -1,6 +1,7 @@
 /// @file v3_protocol.cpp
 #include "bench/v3/v3_protocol.h"
 
+#include <malloc.h>
 #include <time.h>
 
 #include <algorithm>
@@ -14,7 +15,7 @@ namespace {
 
 // The keys of the runner line, in order.
 const char* const line_keys[] = {"scene", "width", "commit", "steps", "warmup", "median_ms", "min_ms",
-                                 "sag", "side", "moved", "out", "non_finite", "depth"};
+                                 "sag", "side", "moved", "out", "non_finite", "depth", "heap_bytes"};
 const char* const line_tag = "v3_runner";
 
 std::string fixed(double value) {
@@ -82,6 +83,11 @@ double thread_cpu_ms() {
   return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
 }
 
+double heap_in_use() {
+  const struct mallinfo2 info = mallinfo2();
+  return static_cast<double>(info.uordblks) + static_cast<double>(info.hblkhd);
+}
+
 std::vector<double> timed_steps(const std::function<void()>& step, int warmup, int steps) {
   for (int s = 0; s < warmup; ++s) step();
   std::vector<double> times;
@@ -116,7 +122,8 @@ std::string format_runner_line(const RunResult& result) {
          " min_ms=" + fixed(result.min_ms) + " sag=" + fixed(std::max(0.0f, figures.sag)) +
          " side=" + fixed(figures.side) + " moved=" + std::to_string(figures.moved) +
          " out=" + std::to_string(figures.out) + " non_finite=" + std::to_string(figures.non_finite) +
-         " depth=" + fixed(figures.depth);
+         " depth=" + fixed(figures.depth) +
+         " heap_bytes=" + std::to_string(std::llround(std::max(0.0, result.heap_bytes)));
 }
 
 RunResult parse_runner_line(const std::string& line, const std::string& runner) {
@@ -176,6 +183,8 @@ RunResult parse_runner_line(const std::string& line, const std::string& runner) 
   result.stability.out = count(10, 0);
   result.stability.non_finite = count(11, 0);
   result.stability.depth = static_cast<float>(number(12));
+  result.heap_bytes = number(13);
+  if (values[13].find('.') != std::string::npos) malformed(runner, "heap_bytes is not whole", line);
   if (result.min_ms > result.median_ms) malformed(runner, "min_ms above median_ms", line);
   return result;
 }

@@ -35,6 +35,10 @@ compare::CompareScene scene_by_name(const std::string& name);
 /// CPU time of the calling thread, milliseconds (`CLOCK_THREAD_CPUTIME_ID`).
 double thread_cpu_ms();
 
+/// Bytes malloc has handed out and not taken back (glibc `mallinfo2`: in use in the arenas
+/// plus mmapped blocks), as bench_compare measures heap per body.
+double heap_in_use();
+
 /// Calls `step` `warmup` times untimed, then `steps` times each timed alone by
 /// `thread_cpu_ms`; returns the `steps` times, milliseconds, in order.
 std::vector<double> timed_steps(const std::function<void()>& step, int warmup, int steps);
@@ -55,6 +59,9 @@ struct RunResult {
   /// What the run left, judged as bench_compare judges it (`compare::judge_final_states`, and
   /// `depth` = `compare::deepest_overlap` of the final states only).
   compare::Stability stability;
+  /// Growth of `heap_in_use` from before the world was built to after the last step, bytes:
+  /// the world with its buffers' whole capacity and the list of body handles.
+  double heap_bytes = 0.0;
 };
 
 /// Judges the final `states` of a run of `scene` into `result.stability`: sag, side, moved,
@@ -64,7 +71,7 @@ void judge(const compare::CompareScene& scene, const std::vector<lab::BodyState>
 
 /// The runner's line (no newline): `v3_runner` then, separated by single spaces and in this
 /// order, scene= width= commit= steps= warmup= median_ms= min_ms= sag= side= moved= out=
-/// non_finite= depth=; times and lengths with 6 decimals.
+/// non_finite= depth= heap_bytes=; times and lengths with 6 decimals, bytes whole.
 std::string format_runner_line(const RunResult& result);
 
 /// Parses a line made by `format_runner_line` (a trailing newline allowed), strictly: every

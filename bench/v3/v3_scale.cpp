@@ -53,8 +53,8 @@ void write_width(std::ostream& out, const ScaleReport& report, const ScaleWidth&
   const std::string from = std::to_string(first.bodies);
   out << "| bodies | " << width.ours << " µs/body/step | growth from " << from << " (each round; median) | "
       << width.theirs << " µs/body/step | growth from " << from << " (each round; median) | "
-      << "ours / v3 (each round; median) |\n"
-      << "|---:|---|---|---|---|---|\n";
+      << "ours / v3 (each round; median) | heap B/body (ours / v3) |\n"
+      << "|---:|---|---|---|---|---|---:|\n";
   std::vector<double> ours_growth;
   std::vector<double> theirs_growth;
   for (const ScalePoint& point : width.points) {
@@ -68,7 +68,9 @@ void write_width(std::ostream& out, const ScaleReport& report, const ScaleWidth&
     theirs_growth = per_round_ratios(theirs, theirs_first);
     out << "| " << point.bodies << " | " << cost_cell(ours) << " | " << rounds_cell(ours_growth) << " | "
         << cost_cell(theirs) << " | " << rounds_cell(theirs_growth) << " | "
-        << rounds_cell(per_round_ratios(ours, theirs)) << " |\n";
+        << rounds_cell(per_round_ratios(ours, theirs)) << " | "
+        << decimals(median(heap_per_body(point.ours_runs, point.bodies)), 0) << " / "
+        << decimals(median(heap_per_body(point.theirs_runs, point.bodies)), 0) << " |\n";
   }
   const ScalePoint& last = width.points.back();
   out << "\ngrowth of the cost per body from " << from << " to " << last.bodies
@@ -123,6 +125,12 @@ std::vector<double> per_body_costs(const std::vector<RunResult>& runs, int bodie
   return costs;
 }
 
+std::vector<double> heap_per_body(const std::vector<RunResult>& runs, int bodies) {
+  std::vector<double> bytes;
+  for (const RunResult& run : runs) bytes.push_back(run.heap_bytes / static_cast<double>(std::max(1, bodies)));
+  return bytes;
+}
+
 void write_scale_report(std::ostream& out, const ScaleReport& report, bool markdown) {
   const std::string title = "impulse2d beside Box2D v3 (commit " + report.commit +
                             ") on the scaling series, per body, at equal vector width";
@@ -143,7 +151,9 @@ void write_scale_report(std::ostream& out, const ScaleReport& report, bool markd
       << " untimed; one thread, 1/60 s, 4 sub-steps, sleeping off, gravity -10 m/s^2; µs/body/step = "
          "median CPU time of a step / bodies, median over the rounds [min-max]; growth = a round's "
          "µs/body/step over the same round's at the smallest size; ours / v3 = a round's pair "
-         "(below 1: impulse2d faster)\n";
+         "(below 1: impulse2d faster); heap B/body = growth of the bytes malloc has handed out "
+         "(glibc mallinfo2) from before the world was built to after its last step, over bodies, "
+         "median over the rounds\n";
   for (const ScaleWidth& width : report.widths) write_width(out, report, width, markdown);
 }
 

@@ -3,7 +3,8 @@
 /// bench_v3 --scale: bench_compare's scaling series (many pyramids, 990 to 100100 bodies) run by
 /// impulse2d and Box2D v3 alternated at equal vector width, read per body (issue 33, "Scale"):
 /// each engine's CPU time per body per step at every size, its growth from the smallest size
-/// (per round, then the median), and the ratio ours / v3 at each size; printed and written.
+/// (per round, then the median), the ratio ours / v3 at each size and the heap each world holds
+/// per body; printed and written.
 
 #include <ostream>
 #include <string>
@@ -46,6 +47,10 @@ struct ScalePoint {
 /// The cost per body per step, microseconds, of each run of `runs` (round order), at `bodies`.
 std::vector<double> per_body_costs(const std::vector<RunResult>& runs, int bodies);
 
+/// The heap per body, bytes, of each run of `runs` (round order; `RunResult::heap_bytes` /
+/// `bodies`).
+std::vector<double> heap_per_body(const std::vector<RunResult>& runs, int bodies);
+
 /// The series at one vector width: impulse2d at `lanes` lanes against one v3 build.
 struct ScaleWidth {
   std::string ours;                ///< impulse2d's label, e.g. "impulse2d 4 lanes"
@@ -69,7 +74,8 @@ struct ScaleReport {
 /// Writes `report` as plain text (`markdown` false) or as a markdown section with tables: the v3
 /// commit in every heading; per width and size both engines' µs per body per step (median over
 /// the rounds, [min-max]), each engine's growth from the smallest size (every round's, then
-/// their median), the ratio ours / v3 (every round's, then their median); then per width the
+/// their median), the ratio ours / v3 (every round's, then their median), both engines' heap
+/// bytes per body (median over the rounds); then per width the
 /// growth from the smallest size to the largest beside the goal (< 1.3x), and the stability
 /// figures at the largest size (first round). Throws `std::invalid_argument` when a width's
 /// points ran different numbers of rounds or a time is not positive.

@@ -32,6 +32,7 @@ RunResult sample_run() {
   run.stability.side = 0.182f;
   run.stability.moved = 1114;
   run.stability.depth = 0.0041f;
+  run.heap_bytes = 403964160.0;
   return run;
 }
 
@@ -71,6 +72,8 @@ TEST(BenchV3Protocol, RunnerLineRoundTrips) {
   EXPECT_EQ(parsed.stability.out, 0);
   EXPECT_EQ(parsed.stability.non_finite, 0);
   EXPECT_NEAR(parsed.stability.depth, 0.0041f, 1e-6f);
+  EXPECT_DOUBLE_EQ(parsed.heap_bytes, 403964160.0);
+  EXPECT_NE(line.find(" depth=0.004100 heap_bytes=403964160"), std::string::npos) << line;
 }
 
 TEST(BenchV3Protocol, MalformedLinesAreErrorsNamingTheRunner) {
@@ -80,7 +83,10 @@ TEST(BenchV3Protocol, MalformedLinesAreErrorsNamingTheRunner) {
       "",
       "hello",
       good + " extra=1",
-      good.substr(0, good.rfind(" depth=")),                  // a field missing
+      good.substr(0, good.rfind(" depth=")),                  // fields missing
+      good.substr(0, good.rfind(" heap_bytes=")),             // the last field missing
+      replaced(good, "heap_bytes=403964160", "heap_bytes=403964160.5"),
+      replaced(good, "heap_bytes=403964160", "heap_bytes=-1"),
       replaced(good, "scene=large_pyramid", "scene=tower"),   // unknown scene
       replaced(good, "width=avx2", "width=avx512"),
       replaced(good, "commit=" + commit, "commit=617d32ab"),  // short hash
@@ -287,6 +293,7 @@ TEST(BenchV3Scale, SpreadRatiosAndCostPerBody) {
   const std::vector<double> costs = per_body_costs({run, run}, 990);
   ASSERT_EQ(costs.size(), 2u);
   EXPECT_DOUBLE_EQ(costs[1], 2.0);
+  EXPECT_DOUBLE_EQ(heap_per_body({run}, 990)[0], 403964160.0 / 990.0);
 }
 
 TEST(BenchV3Scale, ReportGivesCostGrowthAndRatioPerRound) {
@@ -297,6 +304,7 @@ TEST(BenchV3Scale, ReportGivesCostGrowthAndRatioPerRound) {
     for (const double value : micros) {
       RunResult run = sample_run();
       run.median_ms = value * bodies / 1000.0;
+      run.heap_bytes = 4000.0 * value * bodies;  // 4000 B per body per µs, to tell them apart
       list.push_back(run);
     }
     return list;
@@ -317,10 +325,10 @@ TEST(BenchV3Scale, ReportGivesCostGrowthAndRatioPerRound) {
     EXPECT_EQ(text.find("### ") != std::string::npos, markdown) << text;
     EXPECT_NE(text.find("impulse2d 4 lanes / Box2D v3 SSE2 - Box2D v3 " + commit), std::string::npos) << text;
     EXPECT_NE(text.find("| 1000 | 2.500 [2.000-3.000] | 1.00 1.00; 1.00 | 1.000 [1.000-1.000] | 1.00 1.00; 1.00 | "
-                        "2.00 3.00; 2.50 |"),
+                        "2.00 3.00; 2.50 | 10000 / 4000 |"),
               std::string::npos) << text;
     EXPECT_NE(text.find("| 2000 | 2.950 [2.600-3.300] | 1.30 1.10; 1.20 | 1.000 [1.000-1.000] | 1.00 1.00; 1.00 | "
-                        "2.60 3.30; 2.95 |"),
+                        "2.60 3.30; 2.95 | 11800 / 4000 |"),
               std::string::npos) << text;
     EXPECT_NE(text.find("from 1000 to 2000 bodies, median of the rounds [min-max]: impulse2d 4 lanes 1.20x "
                         "[1.10-1.30], Box2D v3 SSE2 1.00x [1.00-1.00]; impulse2d 4 lanes below 1.3x (issue 33, "
