@@ -11,12 +11,13 @@ set(IMPULSE2D_BOX2D_V3_SOURCE "" CACHE PATH
 set(IMPULSE2D_BOX2D_V3_COMMIT "" CACHE STRING
     "the Box2D v3 commit of IMPULSE2D_BOX2D_V3_SOURCE (read with git when it is a checkout)")
 
-# What does not need v3: the runner line, the pair statistics, the options, the scenes by name
+# What does not need v3: the runner line, the pair and scale statistics, the options, the scenes by name
 # (tested by tests/lab/test_bench_v3.cpp).
 add_library(impulse2d_bench_v3 STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/v3/v3_options.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/v3/v3_pairs.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/v3/v3_protocol.cpp)
+  ${CMAKE_CURRENT_SOURCE_DIR}/v3/v3_protocol.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/v3/v3_scale.cpp)
 target_link_libraries(impulse2d_bench_v3 PUBLIC impulse2d_compare_scenes)
 target_include_directories(impulse2d_bench_v3 PUBLIC ${PROJECT_SOURCE_DIR})
 

@@ -70,13 +70,9 @@ std::vector<CompareScene> scenes(Size size, int scale_max) {
                                  many_pyramids_scene("many_pyramids", 400, 20, 10, 200 / divisor),
                                  ball_pit_scene("ball_pit", 5000, 100, 300 / divisor),
                                  rain_scene("rain", 2000, 600 / divisor)};
-  // Pyramids of 55 boxes: 18 -> 990, 36 -> 1980, 91 -> 5005, 182 -> 10010, 364 -> 20020,
-  // 910 -> 50050, 1820 -> 100100 (91 rows of pyramids, 1 km high).
-  for (const int count : {18, 36, 91, 182, 364, 910, 1820}) {
-    if (count * 55 > scale_max) break;
-    list.push_back(many_pyramids_scene("scaling_" + std::to_string(count * 55), count, 20, 10,
-                                       100 / divisor));
-    list.back().scaling = true;
+  for (const ScalingSize& point : scaling_sizes()) {
+    if (point.bodies > scale_max) break;
+    list.push_back(scaling_scene(point.pyramids, 100 / divisor));
   }
   return list;
 }

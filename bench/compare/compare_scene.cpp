@@ -83,6 +83,22 @@ CompareScene many_pyramids_scene(const std::string& name, int count, int columns
   return scene;
 }
 
+const std::vector<ScalingSize>& scaling_sizes() {
+  static const std::vector<ScalingSize> sizes = [] {
+    std::vector<ScalingSize> list;
+    for (const int pyramids : {18, 36, 91, 182, 364, 910, 1820}) list.push_back({pyramids, 55 * pyramids});
+    return list;
+  }();
+  return sizes;
+}
+
+CompareScene scaling_scene(int pyramids, int steps) {
+  CompareScene scene =
+      many_pyramids_scene("scaling_" + std::to_string(55 * pyramids), pyramids, 20, 10, steps);
+  scene.scaling = true;
+  return scene;
+}
+
 CompareScene ball_pit_scene(const std::string& name, int balls, int columns, int steps) {
   CompareScene scene;
   scene.name = name;

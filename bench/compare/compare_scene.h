@@ -2,7 +2,7 @@
 /// @file compare_scene.h
 /// The scenes of bench_compare, built once as a list of bodies that every engine copies: the
 /// 20-row and 100-row pyramids and the many pyramids of Box2D v3's benchmark, a ball pit, rain,
-/// and the scaling series (many pyramids of 1k to 20k boxes). Gravity -10 m/s^2, 1/60 s.
+/// and the scaling series (many pyramids of 1k to 100k boxes). Gravity -10 m/s^2, 1/60 s.
 
 #include <string>
 #include <vector>
@@ -61,6 +61,21 @@ CompareScene pyramid_scene(const std::string& name, int rows, int steps);
 /// above the last (v3's ground segments are thin static boxes here, 0.2 m thick).
 CompareScene many_pyramids_scene(const std::string& name, int count, int columns, int rows,
                                  int steps);
+
+/// One size of the scaling series: how many pyramids of 55 boxes, and so how many bodies.
+struct ScalingSize {
+  int pyramids = 0;  ///< pyramids of 10 rows
+  int bodies = 0;    ///< dynamic bodies, 55 per pyramid
+};
+
+/// The scaling series, fewest bodies first (bench_compare and bench_v3 share it): 18, 36, 91,
+/// 182, 364, 910 and 1820 pyramids, that is 990, 1980, 5005, 10010, 20020, 50050 and 100100
+/// bodies (the largest 91 rows of pyramids, 1 km high).
+const std::vector<ScalingSize>& scaling_sizes();
+
+/// The scaling scene of `pyramids` pyramids: `many_pyramids_scene("scaling_<bodies>",
+/// pyramids, 20, 10, steps)` marked `scaling`.
+CompareScene scaling_scene(int pyramids, int steps);
 
 /// `balls` circles of radius 0.25 m (density 1, friction 0.6, no bounce) dropped in rows of
 /// `columns` into an open box just wider than a row.

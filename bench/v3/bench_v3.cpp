@@ -10,9 +10,13 @@
 // each timed alone by the thread's CPU time, the median kept. Per scene and width it prints
 // every pair's ratio (ours / v3), their median and [min-max], whether every pair is below 1
 // and whether the median meets the goal (<= 0.9), and both engines' stability figures, with
-// the v3 commit in every heading. --out DIR also writes DIR/table.md (temporary file, then
-// renamed: all or nothing). Configured without Box2D v3 (bench/v3.cmake) it says how to
-// configure it and exits 2. Exit status: 0 measured, 1 a run failed, 2 bad arguments or no v3.
+// the v3 commit in every heading. With --scale it runs bench_compare's scaling series instead
+// (compare::scaling_sizes, up to --scale-max bodies): each round runs every size, fewest
+// bodies first, alternating the same four at each, and it prints per width and size both
+// engines' µs of CPU per body per step, their growth from the smallest size and the ratio
+// ours / v3 (v3_scale.h). --out DIR also writes DIR/table.md (temporary file, then renamed: all
+// or nothing). Configured without Box2D v3 (bench/v3.cmake) it says how to configure it and
+// exits 2. Exit status: 0 measured, 1 a run failed, 2 bad arguments or no v3.
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -23,6 +27,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -35,6 +40,7 @@
 #include "bench/v3/v3_options.h"
 #include "bench/v3/v3_pairs.h"
 #include "bench/v3/v3_protocol.h"
+#include "bench/v3/v3_scale.h"
 
 extern char** environ;
 
@@ -70,12 +76,14 @@ std::string load_average() {
 RunResult run_impulse2d(const compare::CompareScene& scene, int lanes, int warmup, int steps) {
   WorldSettings settings = compare::impulse2d_settings(scene, lab::LabMethod{});
   settings.solver_lanes = lanes;
+  const double heap_before = heap_in_use();
   compare::WorldSimulation simulation(scene, settings);
   RunResult result;
   result.scene = scene.name;
   result.steps = steps;
   result.warmup = warmup;
   const std::vector<double> times = timed_steps([&] { simulation.step(); }, warmup, steps);
+  result.heap_bytes = heap_in_use() - heap_before;
   result.median_ms = median(times);
   result.min_ms = *std::min_element(times.begin(), times.end());
   std::vector<lab::BodyState> states;
@@ -142,13 +150,21 @@ RunResult run_runner(const std::string& runner, const std::string& width, const 
   return result;
 }
 
-void write_all_or_nothing(const std::string& directory, const Report& report) {
+// Writes DIR/table.md with `write` through a temporary file renamed at the end; nothing is left
+// behind when `write` throws or the file cannot be written.
+void write_all_or_nothing(const std::string& directory, const std::function<void(std::ostream&)>& write) {
   std::filesystem::create_directories(directory);
   const std::filesystem::path final_path = std::filesystem::path(directory) / "table.md";
   const std::filesystem::path temporary = std::filesystem::path(directory) / ".table.md.tmp";
   {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    write_report(file, report, true);
+    try {
+      write(file);
+    } catch (...) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw;
+    }
     file.flush();
     if (!file) {
       std::error_code ignored;
@@ -158,6 +174,44 @@ void write_all_or_nothing(const std::string& directory, const Report& report) {
   }
   std::filesystem::rename(temporary, final_path);
   std::cout << "\nwrote " << final_path.string() << "\n";
+}
+
+// bench_v3 --scale: every round runs each size of the series, fewest bodies first, alternating
+// impulse2d 4 lanes, v3 SSE2, impulse2d 8 lanes, v3 AVX2 at each.
+ScaleReport run_scale(const Options& options, const std::string& commit, bool avx2) {
+  const std::vector<compare::ScalingSize> sizes = scale_sizes(options);
+  ScaleReport report;
+  report.commit = commit;
+  report.rounds = options.rounds;
+  report.steps = measured_steps(options, scaling_steps);
+  report.warmup = options.warmup;
+  report.widths = {ScaleWidth{"impulse2d 4 lanes", "Box2D v3 SSE2", {}, ""},
+                   ScaleWidth{"impulse2d 8 lanes", "Box2D v3 AVX2", {}, avx2 ? "" : "this CPU has no AVX2"}};
+  for (ScaleWidth& width : report.widths) {
+    if (!width.skipped.empty()) continue;
+    for (const compare::ScalingSize& size : sizes) width.points.push_back(ScalePoint{size.bodies, {}, {}});
+  }
+  const char* const runners[] = {IMPULSE2D_V3_RUNNER_SSE2, IMPULSE2D_V3_RUNNER_AVX2};
+  const char* const widths[] = {"sse2", "avx2"};
+  for (int round = 1; round <= options.rounds; ++round) {
+    for (std::size_t s = 0; s < sizes.size(); ++s) {
+      const compare::CompareScene scene = compare::scaling_scene(sizes[s].pyramids, report.steps);
+      for (std::size_t w = 0; w < 2; ++w) {
+        ScaleWidth& width = report.widths[w];
+        if (!width.skipped.empty()) continue;
+        ScalePoint& point = width.points[s];
+        point.ours_runs.push_back(run_impulse2d(scene, w == 0 ? 4 : 8, report.warmup, report.steps));
+        point.theirs_runs.push_back(
+            run_runner(runners[w], widths[w], commit, scene.name, report.warmup, report.steps));
+        const double ours = micros_per_body(point.ours_runs.back().median_ms, point.bodies);
+        const double theirs = micros_per_body(point.theirs_runs.back().median_ms, point.bodies);
+        std::fprintf(stderr, "bench_v3: %s round %d: %s %.3f us/body, %s %.3f us/body, ratio %.3f\n",
+                     scene.name.c_str(), round, width.ours.c_str(), ours, width.theirs.c_str(), theirs,
+                     ours / theirs);
+      }
+    }
+  }
+  return report;
 }
 
 }  // namespace
@@ -193,6 +247,23 @@ int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i) report.command += (i == 0 ? "" : " ") + std::string(argv[i]);
   const std::string load_before = load_average();
   if (!avx2) std::cout << "note: this CPU has no AVX2: the 8-lane / AVX2 pairs are skipped\n";
+  if (options.scale) {
+    try {
+      ScaleReport scale = run_scale(options, commit, avx2);
+      scale.machine = report.machine;
+      scale.command = report.command;
+      scale.load = load_before + " / " + load_average();
+      write_scale_report(std::cout, scale, false);
+      std::cout.flush();
+      if (!options.out.empty()) {
+        write_all_or_nothing(options.out, [&](std::ostream& file) { write_scale_report(file, scale, true); });
+      }
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "bench_v3: %s\n", error.what());
+      return 1;
+    }
+    return 0;
+  }
   try {
     for (const std::string& name : options.scenes) {
       const compare::CompareScene scene = scene_by_name(name);
@@ -223,7 +294,9 @@ int main(int argc, char** argv) {
     report.load = load_before + " / " + load_average();
     write_report(std::cout, report, false);
     std::cout.flush();
-    if (!options.out.empty()) write_all_or_nothing(options.out, report);
+    if (!options.out.empty()) {
+      write_all_or_nothing(options.out, [&](std::ostream& file) { write_report(file, report, true); });
+    }
   } catch (const std::exception& error) {
     std::fprintf(stderr, "bench_v3: %s\n", error.what());
     return 1;

@@ -9,15 +9,19 @@ namespace impulse2d::bench_v3 {
 
 const char* usage_text() {
   return "usage: bench_v3 [--rounds R] [--steps N] [--warmup W] [--quick]\n"
-         "                [--scene large_pyramid,many_pyramids,ball_pit]... [--out DIR]\n"
-         "  --rounds: alternated rounds, each impulse2d 4 lanes, v3 SSE2, impulse2d 8 lanes,\n"
-         "            v3 AVX2 (default 5)\n"
-         "  --steps:  measured steps per run (default: the scene's own, as bench_compare:\n"
-         "            large_pyramid 500, many_pyramids 200, ball_pit 300)\n"
-         "  --warmup: untimed steps before them (default 1)\n"
-         "  --quick:  a fifth of the scenes' steps\n"
-         "  --scene:  only these scenes (repeatable, or a comma list)\n"
-         "  --out:    also write DIR/table.md (all or nothing)";
+         "                [--scene large_pyramid,many_pyramids,ball_pit... | --scale [--scale-max BODIES]]\n"
+         "                [--out DIR]\n"
+         "  --rounds:    alternated rounds, each impulse2d 4 lanes, v3 SSE2, impulse2d 8 lanes,\n"
+         "               v3 AVX2 (default 5)\n"
+         "  --steps:     measured steps per run (default: the scene's own, as bench_compare:\n"
+         "               large_pyramid 500, many_pyramids 200, ball_pit 300, scaling sizes 100)\n"
+         "  --warmup:    untimed steps before them (default 1)\n"
+         "  --quick:     a fifth of the scenes' steps\n"
+         "  --scene:     only these scenes (repeatable, or a comma list)\n"
+         "  --scale:     bench_compare's scaling series instead (many pyramids of 990, 1980, 5005,\n"
+         "               10010, 20020, 50050, 100100 bodies): cost per body per step and its growth\n"
+         "  --scale-max: the series' largest size, bodies (default 100100)\n"
+         "  --out:       also write DIR/table.md (all or nothing)";
 }
 
 Options parse_options(const std::vector<std::string>& arguments) {
@@ -52,6 +56,17 @@ Options parse_options(const std::vector<std::string>& arguments) {
         if (comma == std::string::npos) break;
         start = comma + 1;
       }
+    } else if (arg == "--scale") {
+      options.scale = true;
+    } else if (arg == "--scale-max") {
+      const std::string& text = value();
+      options.scale_max = parse_count(text);
+      if (options.scale_max < 0) throw UsageError("--scale-max wants a whole number of bodies, not '" + text + "'");
+      const int smallest = compare::scaling_sizes().front().bodies;
+      if (options.scale_max < smallest) {
+        throw UsageError("--scale-max " + text + " is below the series' smallest size, " +
+                         std::to_string(smallest) + " bodies");
+      }
     } else if (arg == "--out") {
       options.out = value();
       if (options.out.empty()) throw UsageError("--out wants a directory");
@@ -61,6 +76,9 @@ Options parse_options(const std::vector<std::string>& arguments) {
       throw UsageError("unknown argument '" + arg + "'");
     }
   }
+  if (options.scale && !named.empty()) throw UsageError("--scene and --scale exclude each other");
+  if (options.scale_max >= 0 && !options.scale) throw UsageError("--scale-max is for --scale");
+  if (options.scale) return options;
   for (const std::string& name : scene_names()) {
     if (named.empty() || std::find(named.begin(), named.end(), name) != named.end()) {
       options.scenes.push_back(name);
@@ -72,6 +90,14 @@ Options parse_options(const std::vector<std::string>& arguments) {
 int measured_steps(const Options& options, int full_steps) {
   if (options.steps > 0) return options.steps;
   return std::max(1, options.quick ? full_steps / 5 : full_steps);
+}
+
+std::vector<compare::ScalingSize> scale_sizes(const Options& options) {
+  std::vector<compare::ScalingSize> sizes;
+  for (const compare::ScalingSize& size : compare::scaling_sizes()) {
+    if (options.scale_max < 0 || size.bodies <= options.scale_max) sizes.push_back(size);
+  }
+  return sizes;
 }
 
 }  // namespace impulse2d::bench_v3

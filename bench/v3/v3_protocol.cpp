@@ -1,6 +1,7 @@
 /// @file v3_protocol.cpp
 #include "bench/v3/v3_protocol.h"
 
+#include <malloc.h>
 #include <time.h>
 
 #include <algorithm>
@@ -14,7 +15,7 @@ namespace {
 
 // The keys of the runner line, in order.
 const char* const line_keys[] = {"scene", "width", "commit", "steps", "warmup", "median_ms", "min_ms",
-                                 "sag", "side", "moved", "out", "non_finite", "depth"};
+                                 "sag", "side", "moved", "out", "non_finite", "depth", "heap_bytes"};
 const char* const line_tag = "v3_runner";
 
 std::string fixed(double value) {
@@ -56,18 +57,35 @@ const std::vector<std::string>& scene_names() {
   return names;
 }
 
+std::string scaling_name(int bodies) { return "scaling_" + std::to_string(bodies); }
+
+bool known_scene(const std::string& name) {
+  if (std::find(scene_names().begin(), scene_names().end(), name) != scene_names().end()) return true;
+  return std::any_of(compare::scaling_sizes().begin(), compare::scaling_sizes().end(),
+                     [&](const compare::ScalingSize& size) { return scaling_name(size.bodies) == name; });
+}
+
 compare::CompareScene scene_by_name(const std::string& name) {
   // As bench_compare.cpp's `scenes` (full size) builds them.
   if (name == "large_pyramid") return compare::pyramid_scene("large_pyramid", 100, 500);
   if (name == "many_pyramids") return compare::many_pyramids_scene("many_pyramids", 400, 20, 10, 200);
   if (name == "ball_pit") return compare::ball_pit_scene("ball_pit", 5000, 100, 300);
-  throw std::invalid_argument("no scene named '" + name + "' (large_pyramid, many_pyramids, ball_pit)");
+  for (const compare::ScalingSize& size : compare::scaling_sizes()) {
+    if (scaling_name(size.bodies) == name) return compare::scaling_scene(size.pyramids, scaling_steps);
+  }
+  throw std::invalid_argument("no scene named '" + name +
+                              "' (large_pyramid, many_pyramids, ball_pit, scaling_990 .. scaling_100100)");
 }
 
 double thread_cpu_ms() {
   timespec now{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
   return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
+}
+
+double heap_in_use() {
+  const struct mallinfo2 info = mallinfo2();
+  return static_cast<double>(info.uordblks) + static_cast<double>(info.hblkhd);
 }
 
 std::vector<double> timed_steps(const std::function<void()>& step, int warmup, int steps) {
@@ -104,7 +122,8 @@ std::string format_runner_line(const RunResult& result) {
          " min_ms=" + fixed(result.min_ms) + " sag=" + fixed(std::max(0.0f, figures.sag)) +
          " side=" + fixed(figures.side) + " moved=" + std::to_string(figures.moved) +
          " out=" + std::to_string(figures.out) + " non_finite=" + std::to_string(figures.non_finite) +
-         " depth=" + fixed(figures.depth);
+         " depth=" + fixed(figures.depth) +
+         " heap_bytes=" + std::to_string(std::llround(std::max(0.0, result.heap_bytes)));
 }
 
 RunResult parse_runner_line(const std::string& line, const std::string& runner) {
@@ -135,7 +154,7 @@ RunResult parse_runner_line(const std::string& line, const std::string& runner) 
   }
   RunResult result;
   result.scene = values[0];
-  if (std::find(scene_names().begin(), scene_names().end(), result.scene) == scene_names().end()) {
+  if (!known_scene(result.scene)) {
     malformed(runner, "unknown scene '" + result.scene + "'", line);
   }
   result.width = values[1];
@@ -164,6 +183,8 @@ RunResult parse_runner_line(const std::string& line, const std::string& runner) 
   result.stability.out = count(10, 0);
   result.stability.non_finite = count(11, 0);
   result.stability.depth = static_cast<float>(number(12));
+  result.heap_bytes = number(13);
+  if (values[13].find('.') != std::string::npos) malformed(runner, "heap_bytes is not whole", line);
   if (result.min_ms > result.median_ms) malformed(runner, "min_ms above median_ms", line);
   return result;
 }

@@ -4,8 +4,9 @@
 // -10 m/s^2, sleeping off. The bodies are the very ones impulse2d steps (compare_scene.cpp),
 // copied into v3: boxes as b2MakeBox (as v3's own benchmark makes them), other polygons from
 // their hull, circles. `warmup` untimed steps, then `steps` each timed alone (CPU time of the
-// thread, the same loop that times impulse2d: v3_protocol.h); then the final states are judged
-// as bench_compare judges them. Prints one line (format_runner_line) on stdout and nothing
+// thread, the same loop that times impulse2d: v3_protocol.h), the heap the world holds then
+// (`heap_in_use` after the steps less before building); then the final states are judged as
+// bench_compare judges them. Prints one line (format_runner_line) on stdout and nothing
 // else; errors go to stderr (exit 1, bad arguments exit 2). bench_v3 runs it.
 //
 // Usage: bench_v3_runner_<width> --scene NAME --steps N [--warmup W]
@@ -158,11 +159,13 @@ int main(int argc, char** argv) {
   try {
     const compare::CompareScene scene = bench_v3::scene_by_name(scene_name);
     std::vector<b2BodyId> bodies;
+    const double heap_before = bench_v3::heap_in_use();
     const b2WorldId world = build(scene, bodies);
     const float time_step = 1.0f / 60.0f;
     const int substeps = 4;
     const std::vector<double> times =
         bench_v3::timed_steps([&] { b2World_Step(world, time_step, substeps); }, warmup, steps);
+    const double heap_after = bench_v3::heap_in_use();
     bench_v3::RunResult result;
     result.scene = scene_name;
     result.width = width;
@@ -171,6 +174,7 @@ int main(int argc, char** argv) {
     result.warmup = warmup;
     result.median_ms = bench_v3::median(times);
     result.min_ms = *std::min_element(times.begin(), times.end());
+    result.heap_bytes = heap_after - heap_before;
     std::vector<lab::BodyState> states;
     read_states(bodies, states);
     bench_v3::judge(scene, states, result);
