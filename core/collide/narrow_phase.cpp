@@ -167,32 +167,45 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
   if (pool != nullptr && jobs != nullptr) {
     run_pair_jobs(bodies, pairs, reach, settings, dt, contacts, pool, *jobs);
   }
-  // This step's contacts are written over last step's in the same list: `write` never passes
-  // `read` while every new contact lands on a slot already read, so a kept contact is updated
-  // where it lies (no copy). A new contact with no read slot to land on moves the unread rest
-  // of the old list to `spill`, and the walk goes on reading from there.
+  // This step's contacts are written over last step's in the same list: slots [0, write) hold
+  // the new list, and the old contacts not read yet are those displaced into `spill` (a ring,
+  // oldest first) followed by the array's [array_read, old_count). Writing into a slot that
+  // still holds an unread old contact moves that contact to the ring's back first, so the ring
+  // holds no more contacts than the step has new ones ahead of the old (no allocation once warm,
+  // and no second copy of the list). A kept contact that lies where it is written is updated in
+  // place (no copy).
   const std::size_t old_count = contacts.size();
   std::size_t write = 0;
-  std::size_t read = 0;  // next unread old contact: in `contacts`, or in `spill` once spilled
-  bool spilled = false;
-  auto old_size = [&] { return spilled ? spill.size() : old_count; };
-  auto old_at = [&](std::size_t i) -> Contact& { return spilled ? spill[i] : contacts[i]; };
-  // The slot contact `write` goes to: the old contact at `read` when `replaces_old` (it is
-  // consumed), else one already read, else a new one after spilling.
-  auto place = [&](bool replaces_old) -> Contact& {
-    if (spilled) return contacts.emplace_back();
-    if (write == read) {
-      if (replaces_old) {
-        ++read;
-        return contacts[write];
-      }
-      if (spill.capacity() < contacts.capacity()) spill.reserve(contacts.capacity());
-      spill.assign(contacts.begin() + static_cast<std::ptrdiff_t>(read),
-                   contacts.begin() + static_cast<std::ptrdiff_t>(old_count));
-      contacts.resize(write);
-      spilled = true;
-      read = 0;
-      return contacts.emplace_back();
+  std::size_t array_read = 0;
+  std::size_t ring_head = 0;
+  std::size_t ring_count = 0;
+  auto ring_push = [&](const Contact& displaced) {
+    if (ring_count == spill.size()) {  // full: unroll it in order, then grow at its end
+      std::rotate(spill.begin(), spill.begin() + static_cast<std::ptrdiff_t>(ring_head), spill.end());
+      ring_head = 0;
+      spill.push_back(displaced);
+    } else {
+      spill[(ring_head + ring_count) % spill.size()] = displaced;
+    }
+    ++ring_count;
+  };
+  auto has_old = [&] { return ring_count > 0 || array_read < old_count; };
+  // The next unread old contact (valid while `has_old()`).
+  auto old_front = [&]() -> Contact& { return ring_count > 0 ? spill[ring_head] : contacts[array_read]; };
+  auto pop_old = [&] {
+    if (ring_count > 0) {
+      ring_head = (ring_head + 1) % spill.size();
+      --ring_count;
+    } else {
+      ++array_read;
+    }
+  };
+  // The slot of new contact `write`: an unread old contact there moves to the ring first.
+  auto slot = [&]() -> Contact& {
+    if (write >= contacts.size()) return contacts.emplace_back();
+    if (write == array_read && array_read < old_count) {
+      ring_push(contacts[array_read]);
+      ++array_read;
     }
     return contacts[write];
   };
@@ -207,23 +220,31 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       if (old.child_a != child_a) return old.child_a < child_a;
       return old.child_b < child_b;
     };
-    while (read < old_size() && before(old_at(read))) ++read;
-    const bool touched_before = read < old_size() && old_at(read).body_a == a.id &&
-                                old_at(read).body_b == b.id && old_at(read).child_a == child_a &&
-                                old_at(read).child_b == child_b;
+    while (has_old() && before(old_front())) pop_old();  // pairs that no longer meet
+    const bool touched_before = has_old() && old_front().body_a == a.id &&
+                                old_front().body_b == b.id && old_front().child_a == child_a &&
+                                old_front().child_b == child_b;
     const bool recycle = job != nullptr ? touched_before && job->recycle
                                         : touched_before &&
-                                              may_recycle(a, b, old_at(read),
+                                              may_recycle(a, b, old_front(),
                                                           settings.contact_recycle_distance,
                                                           settings.speculative_margin);
     if (recycle) {
-      const std::size_t old_index = read;
-      Contact& contact = place(/*replaces_old=*/true);
-      if (&contact != &old_at(old_index)) contact = old_at(old_index);
+      Contact* kept = nullptr;
+      if (ring_count == 0 && array_read == write) {
+        kept = &contacts[write];  // where it lies: updated in place
+        ++array_read;
+      } else {
+        const Contact old = old_front();
+        pop_old();
+        kept = &slot();
+        *kept = old;
+      }
+      Contact& contact = *kept;
       if (job == nullptr) recycle_manifold(a, b, contact);  // else done by the workers
       if (job != nullptr ? job->ghost : is_ghost(a, b, contact, settings, dt)) {
         // Its slot is left to the next contact placed (or dropped when the list ends).
-        if (spilled) contacts.pop_back();
+        if (write + 1 == contacts.size() && write >= old_count) contacts.pop_back();
         return;
       }
       if (job == nullptr) {
@@ -259,7 +280,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
     mix_materials(a, b, settings, contact);
     remember_manifold_pose(a, b, contact);
     if (touched_before) {
-      const Contact& old_contact = old_at(read);
+      const Contact& old_contact = old_front();
       contact.enabled = old_contact.enabled;
       // A disabled pair stays disabled while its shapes overlap (re-enabling then would pop a
       // body through a one-way platform); once they are apart again, with speculative contacts
@@ -278,7 +299,8 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       if (filter) contact.enabled = filter(view_of(a), view_of(b), manifold);
     }
     point_total += contact.point_count;
-    Contact& placed = place(/*replaces_old=*/touched_before);
+    if (touched_before) pop_old();  // replaced by the fresh manifold
+    Contact& placed = slot();
     placed = contact;
     if (visitor) visitor->visit(write, placed);
     ++write;
@@ -313,7 +335,7 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
       }
     }
   }
-  if (!spilled) contacts.resize(write);
+  contacts.resize(write);  // old contacts left unread (ring and array) no longer meet
   return point_total;
 }
 

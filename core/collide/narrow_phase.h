@@ -35,7 +35,7 @@ struct NarrowPhaseJob {
 /// from `pairs`, each pair collided with the speculative margin `settings.speculative_margin +
 /// reach[a] + reach[b]` (metres; `reach` per slot, see `speculative_reach.h`); kept contacts
 /// are updated in place. A contact whose points are all apart and that would only stop bodies
-/// passing each other within the coming `dt` seconds is left out (`is_ghost_contact`). `spill` is scratch space (reused: no allocation once warm). `filter`
+/// passing each other within the coming `dt` seconds is left out (`is_ghost_contact`). `spill` is scratch space: a ring for the old contacts that new ones displace before they are read, never more than the step's new contacts ahead of old ones (reused: no allocation once warm). `filter`
 /// may be empty. `visitor` (may be null) sees each contact of the new list as soon as it is
 /// written. Returns the number of manifold points made.
 ///

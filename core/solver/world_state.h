@@ -46,7 +46,7 @@ struct WorldState {
   std::vector<std::uint64_t> unconnected_pairs;
 
   std::vector<Contact> contacts;          ///< sorted by (a.index, b.index)
-  std::vector<Contact> spilled_contacts;  ///< the narrow phase's scratch (reused buffer)
+  std::vector<Contact> spilled_contacts;  ///< the narrow phase's ring of displaced old contacts (reused)
   std::vector<Contact> sleeping_contacts; ///< pairs with no moving body, sorted by pair
   std::vector<Contact> merged_contacts;   ///< scratch for sleeping_contacts (reused)
   std::shared_ptr<const StepSolver> solver;  ///< made for solver_method (re-made when it changes)
