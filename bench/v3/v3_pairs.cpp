@@ -38,17 +38,12 @@ void stability_row(std::ostream& out, const std::string& label, const RunResult&
 }  // namespace
 
 PairSummary summarize_pairs(const std::vector<double>& ratios) {
-  if (ratios.empty()) throw std::invalid_argument("no pairs to summarise");
-  for (const double ratio : ratios) {
-    if (!std::isfinite(ratio) || ratio <= 0.0) {
-      throw std::invalid_argument("a pair's ratio is not a positive number: " + std::to_string(ratio));
-    }
-  }
+  const Spread spread = spread_of(ratios);
   PairSummary summary;
   summary.ratios = ratios;
-  summary.median = median(ratios);
-  summary.min = *std::min_element(ratios.begin(), ratios.end());
-  summary.max = *std::max_element(ratios.begin(), ratios.end());
+  summary.median = spread.median;
+  summary.min = spread.min;
+  summary.max = spread.max;
   summary.all_below_one = summary.max < 1.0;
   summary.median_meets_goal = summary.median <= goal_ratio;
   return summary;

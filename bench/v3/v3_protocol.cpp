@@ -107,6 +107,20 @@ double median(std::vector<double> values) {
   return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
+Spread spread_of(const std::vector<double>& values) {
+  if (values.empty()) throw std::invalid_argument("no rounds to summarise");
+  for (const double value : values) {
+    if (!std::isfinite(value) || value <= 0.0) {
+      throw std::invalid_argument("a round's value is not a positive number: " + std::to_string(value));
+    }
+  }
+  Spread spread;
+  spread.median = median(values);
+  spread.min = *std::min_element(values.begin(), values.end());
+  spread.max = *std::max_element(values.begin(), values.end());
+  return spread;
+}
+
 void judge(const compare::CompareScene& scene, const std::vector<lab::BodyState>& states,
            RunResult& result) {
   result.stability = compare::Stability{};

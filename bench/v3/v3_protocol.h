@@ -46,6 +46,17 @@ std::vector<double> timed_steps(const std::function<void()>& step, int warmup, i
 /// The median of `values` (the mean of the two middle ones for an even count); 0 when empty.
 double median(std::vector<double> values);
 
+/// A value measured once per round, summarised over the rounds.
+struct Spread {
+  double median = 0.0;  ///< median of the rounds (`median`)
+  double min = 0.0;     ///< smallest
+  double max = 0.0;     ///< largest
+};
+
+/// The median and range of `values`; throws `std::invalid_argument` when `values` is empty or
+/// one is not finite and positive.
+Spread spread_of(const std::vector<double>& values);
+
 /// One run of one scene in one engine build: what a runner reports and bench_v3 measures of
 /// impulse2d alike.
 struct RunResult {

@@ -87,20 +87,6 @@ void write_width(std::ostream& out, const ScaleReport& report, const ScaleWidth&
 
 }  // namespace
 
-Spread spread_of(const std::vector<double>& values) {
-  if (values.empty()) throw std::invalid_argument("no rounds to summarise");
-  for (const double value : values) {
-    if (!std::isfinite(value) || value <= 0.0) {
-      throw std::invalid_argument("a round's value is not a positive number: " + std::to_string(value));
-    }
-  }
-  Spread spread;
-  spread.median = median(values);
-  spread.min = *std::min_element(values.begin(), values.end());
-  spread.max = *std::max_element(values.begin(), values.end());
-  return spread;
-}
-
 double micros_per_body(double ms_per_step, int bodies) {
   return 1e3 * ms_per_step / static_cast<double>(std::max(1, bodies));
 }

@@ -18,17 +18,6 @@ namespace impulse2d::bench_v3 {
 /// 33, goal 4: less than this). Printed beside the measured growth, never enforced.
 constexpr double scale_goal_growth = 1.3;
 
-/// A value measured once per round, summarised over the rounds.
-struct Spread {
-  double median = 0.0;  ///< median of the rounds (`median`)
-  double min = 0.0;     ///< smallest
-  double max = 0.0;     ///< largest
-};
-
-/// The median and range of `values`; throws `std::invalid_argument` when `values` is empty or
-/// one is not finite and positive.
-Spread spread_of(const std::vector<double>& values);
-
 /// CPU time per body per step, microseconds: 1000 `ms_per_step` / `bodies` (`bodies` >= 1).
 double micros_per_body(double ms_per_step, int bodies);
 
