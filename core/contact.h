@@ -108,6 +108,11 @@ struct Contact {
   /// recorded by prepare when contact events are on, while the contact is in the cache; valid
   /// for the awake, enabled contacts of the step just taken (set-aside ones are judged afresh).
   bool touching = false;
+  /// True while the points' `anchor_a/b`, `normal_mass` and `tangent_mass` are those prepare
+  /// found for this kept manifold (see contact_recycle.h) and this `mass`: prepared again
+  /// while the manifold is kept, the contact keeps them instead of computing the same values
+  /// anew. False for a manifold computed afresh; cleared whenever `mass` changes.
+  bool kept_masses = false;
   vec2 normal{0.0f, 0.0f};   ///< unit, from A to B
   int point_count = 0;       ///< 1 or 2
   PairMass mass;             ///< the two bodies' inverse masses, resolved at prepare

@@ -27,12 +27,26 @@ PairMass pair_mass_of(const Body& a, const Body& b, const SolverContext& context
                   context.rotation ? b.inverse_inertia : 0.0f};
 }
 
+void set_pair_mass(Contact& contact, const PairMass& mass) {
+  const PairMass& old = contact.mass;
+  if (!(mass.inverse_mass_a == old.inverse_mass_a && mass.inverse_mass_b == old.inverse_mass_b &&
+        mass.inverse_inertia_a == old.inverse_inertia_a && mass.inverse_inertia_b == old.inverse_inertia_b)) {
+    contact.kept_masses = false;
+  }
+  contact.mass = mass;
+}
+
 void prepare_contact(Contact& contact, const Body& a, const Body& b, const SolverContext& context) {
-  contact.mass = pair_mass_of(a, b, context);
+  set_pair_mass(contact, pair_mass_of(a, b, context));
   const vec2 normal = contact.normal;
   const vec2 tangent = tangent_of(normal);
   contact.approach_acceleration =
       -glm::dot(free_acceleration(b, context.gravity) - free_acceleration(a, context.gravity), normal);
+  // A kept manifold's offsets, and the effective masses found from them, are the same as when
+  // it was last prepared (while the masses are too): only its core points move with the bodies.
+  const bool keeps_masses = contact.recycled && contact.kept_masses;
+  const RecycledShapes shapes = recycled_shapes_of(a, b, contact);
+  const float rounding = shapes.rounding_a + shapes.rounding_b;
   float slip_sum = 0.0f;
   float load_sum = 0.0f;
   float carried_load = 0.0f;  // N s, before a cold solve drops it
@@ -40,9 +54,10 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
   float fastest_slip = 0.0f;  // m/s
   for (int i = 0; i < contact.point_count; ++i) {
     ContactPoint& point = contact.points[i];
-    point.rounding = rounding_of(a, contact.child_a) + rounding_of(b, contact.child_b);
+    point.rounding = rounding;
     if (contact.recycled) {
-      set_recycled_anchors(a, b, contact, point);
+      if (!keeps_masses) set_recycled_offsets(contact, point);
+      set_recycled_cores(a, b, contact, shapes, point);
     } else {
       point.anchor_a = point.point - a.transform.position;
       point.anchor_b = point.point - b.transform.position;
@@ -56,10 +71,12 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
     const float slip = glm::dot(velocity, tangent);
     slip_sum += slip;
     point.caught = -glm::dot(velocity, normal) > context.catch_speed;
-    const float k_normal = inverse_effective_mass(contact.mass, point, normal);
-    const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
-    point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
-    point.tangent_mass = k_tangent > 0.0f ? 1.0f / k_tangent : 0.0f;
+    if (!keeps_masses) {
+      const float k_normal = inverse_effective_mass(contact.mass, point, normal);
+      const float k_tangent = inverse_effective_mass(contact.mass, point, tangent);
+      point.normal_mass = k_normal > 0.0f ? 1.0f / k_normal : 0.0f;
+      point.tangent_mass = k_tangent > 0.0f ? 1.0f / k_tangent : 0.0f;
+    }
     fastest_slip = std::max(fastest_slip, std::fabs(slip));
     slip_need += std::fabs(slip) * point.tangent_mass;
     carried_load += point.normal_impulse;
@@ -74,6 +91,7 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
     if (!context.friction) point.tangent_impulse = 0.0f;
     load_sum += point.normal_impulse;
   }
+  contact.kept_masses = contact.recycled;
   contact.start_slip = slip_sum / static_cast<float>(contact.point_count);
   contact.start_load = load_sum;
   // Surfaces already slipping faster than static friction can stop within the step slide from

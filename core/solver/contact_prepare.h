@@ -19,6 +19,11 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
 /// reads of a prepared contact).
 PairMass pair_mass_of(const Body& a, const Body& b, const SolverContext& context);
 
+/// Sets `contact.mass` to `mass`, forgetting the effective masses kept with the old one
+/// (`Contact::kept_masses`) when it differs: every write of a prepared contact's mass goes
+/// through here.
+void set_pair_mass(Contact& contact, const PairMass& mass);
+
 /// Computes every enabled contact's pair masses, each point's anchors (world and local),
 /// effective masses along the normal and tangent, and the contact's closing acceleration from
 /// gravity and applied forces, and the slip it carries into the step. Call it before this

@@ -10,7 +10,7 @@
 /// Why it matters beyond speed: with manifolds collided afresh every step, a 20-box soft-step
 /// stack leans further step after step and falls within 15 s (Box2D v3 does the same with its
 /// recycling switched off); with recycled manifolds solved at the offsets they were found
-/// with (`set_recycled_anchors`), its sway decays as Box2D v3's does.
+/// with (`set_recycled_offsets`), its sway decays as Box2D v3's does.
 
 #include "core/solver/body_state.h"
 #include "core/contact.h"
@@ -37,38 +37,63 @@ bool may_recycle(const Body& a, const Body& b, const Contact& contact, float rec
 /// relative motion along the unchanged normal).
 void recycle_manifold(const Body& a, const Body& b, Contact& contact);
 
-/// The anchors a kept point is solved with this step (Box2D v3's): `anchor_a` and `anchor_b`
-/// are the offsets from each body's centre to the point as they were when the manifold was
-/// computed, not turned with the bodies since; `local_anchor_a/b` are the core points under
-/// the ends of those offsets now (`core_anchor`: a circle's centre), B's (for a circle B, A's)
-/// moved along the normal so that their separation starts the step at the recycled depth. Turning the offsets with the bodies instead (the points
-/// fixed in the material) let a 20-box soft-step stack lean over within 15 s, as collision
-/// afresh every step does; with the offsets kept it stands like Box2D v3's (3 cm of sway).
-/// Defined here so that the per-point prepare loop inlines it.
-inline void set_recycled_anchors(const Body& a, const Body& b, const Contact& contact, ContactPoint& point) {
+/// What a kept manifold's points need of the two shapes under them, the same for every point
+/// of the contact: found once per contact (`recycled_shapes_of`), not once per point.
+struct RecycledShapes {
+  bool round_a = false;   ///< A's shape is a circle: its core point is its centre
+  bool round_b = false;   ///< B's shape is a circle
+  float rounding_a = 0.0f;  ///< A's shape's rounding, metres (`rounding_of`)
+  float rounding_b = 0.0f;  ///< B's shape's rounding, metres
+  vec2 local_centre_a{0.0f, 0.0f};  ///< centre of A's shape in A's frame, metres (`local_centre`)
+  vec2 local_centre_b{0.0f, 0.0f};  ///< centre of B's shape in B's frame, metres
+  vec2 centre_a{0.0f, 0.0f};  ///< centre of A's shape in the world, metres (used where round)
+  vec2 centre_b{0.0f, 0.0f};  ///< centre of B's shape in the world, metres (used where round)
+};
+
+/// The shapes under `contact`'s points as `set_recycled_cores` reads them, at the bodies'
+/// current transforms.
+inline RecycledShapes recycled_shapes_of(const Body& a, const Body& b, const Contact& contact) {
+  RecycledShapes shapes;
+  shapes.round_a = is_circle(a, contact.child_a);
+  shapes.round_b = is_circle(b, contact.child_b);
+  shapes.rounding_a = rounding_of(a, contact.child_a);
+  shapes.rounding_b = rounding_of(b, contact.child_b);
+  shapes.local_centre_a = local_centre(a, contact.child_a);
+  shapes.local_centre_b = local_centre(b, contact.child_b);
+  shapes.centre_a = a.compound ? a.transform.apply(shapes.local_centre_a) : a.transform.position;
+  shapes.centre_b = b.compound ? b.transform.apply(shapes.local_centre_b) : b.transform.position;
+  return shapes;
+}
+
+/// The offsets a kept point is solved with this step (Box2D v3's): from each body's centre to
+/// the point as they were when the manifold was computed, not turned with the bodies since.
+/// They change only when the manifold is computed afresh. Turning the offsets with the bodies
+/// instead (the points fixed in the material) let a 20-box soft-step stack lean over within
+/// 15 s, as collision afresh every step does; with the offsets kept it stands like Box2D v3's
+/// (3 cm of sway).
+inline void set_recycled_offsets(const Contact& contact, ContactPoint& point) {
   point.anchor_a = contact.manifold_pose.rotation_a.rotate(point.recycle_anchor_a);
   point.anchor_b = contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
+}
+
+/// The core points (`local_anchor_a/b`, see `core_anchor`: a circle's centre) under the ends
+/// of a kept point's offsets (`set_recycled_offsets`) now, B's (for a circle B, A's) moved along
+/// the normal so that their separation starts the step at the recycled depth. Defined here so
+/// that the per-point prepare loop inlines it.
+inline void set_recycled_cores(const Body& a, const Body& b, const Contact& contact,
+                               const RecycledShapes& shapes, ContactPoint& point) {
   const vec2 normal = contact.normal;
-  const bool round_a = is_circle(a, contact.child_a);
-  const bool round_b = is_circle(b, contact.child_b);
-  // The core points (see `core_anchor`) under the ends of the offsets: a circle's centre.
-  auto centre_of = [](const Body& body, int child) {
-    return body.compound ? body.transform.apply(local_centre(body, child)) : body.transform.position;
-  };
-  vec2 core_a = round_a ? centre_of(a, contact.child_a)
-                        : a.transform.position + point.anchor_a - normal * rounding_of(a, contact.child_a);
-  vec2 core_b = round_b ? centre_of(b, contact.child_b)
-                        : b.transform.position + point.anchor_b + normal * rounding_of(b, contact.child_b);
-  // B's core (or, for a circle B, A's) moves along the normal so that the separation starts
-  // the step at the recycled depth; two circles' centres give their separation exactly.
+  vec2 core_a = shapes.round_a ? shapes.centre_a : a.transform.position + point.anchor_a - normal * shapes.rounding_a;
+  vec2 core_b = shapes.round_b ? shapes.centre_b : b.transform.position + point.anchor_b + normal * shapes.rounding_b;
+  // Two circles' centres give their separation exactly.
   const float excess = glm::dot(core_b - core_a, normal) - point.rounding + point.depth;
-  if (!round_b) {
+  if (!shapes.round_b) {
     core_b -= normal * excess;
-  } else if (!round_a) {
+  } else if (!shapes.round_a) {
     core_a += normal * excess;
   }
-  point.local_anchor_a = round_a ? local_centre(a, contact.child_a) : a.transform.apply_inverse(core_a);
-  point.local_anchor_b = round_b ? local_centre(b, contact.child_b) : b.transform.apply_inverse(core_b);
+  point.local_anchor_a = shapes.round_a ? shapes.local_centre_a : a.transform.apply_inverse(core_a);
+  point.local_anchor_b = shapes.round_b ? shapes.local_centre_b : b.transform.apply_inverse(core_b);
 }
 
 }  // namespace impulse2d

@@ -37,6 +37,12 @@
 #include <cstdint>
 #include <cstring>
 
+#if defined(__AVX2__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace impulse2d {
 namespace {
 
@@ -65,10 +71,32 @@ void store_lanes(void* target, Vector value) {
   std::memcpy(target, &value, sizeof value);
 }
 
-// a where mask is set, b elsewhere.
+// a where mask is set, b elsewhere (every mask lane is all ones or all zeros).
 template <class Floats, class Masks>
 Floats select_lanes(Masks mask, Floats a, Floats b) {
+#if defined(__AVX2__)
+  if constexpr (sizeof(Masks) == 32) {
+    return (Floats)_mm256_blendv_ps((__m256)b, (__m256)a, (__m256)mask);  // one instruction
+  } else {
+    return (Floats)(((Masks)a & mask) | ((Masks)b & ~mask));
+  }
+#else
   return (Floats)(((Masks)a & mask) | ((Masks)b & ~mask));
+#endif
+}
+
+// True when any lane of `mask` is set (every mask lane is all ones or all zeros).
+template <class Masks>
+bool any_lane(Masks mask) {
+#if defined(__AVX2__)
+  if constexpr (sizeof(Masks) == 32) return _mm256_movemask_ps((__m256)mask) != 0;
+#endif
+#if defined(__SSE2__)
+  if constexpr (sizeof(Masks) == 16) return _mm_movemask_ps((__m128)mask) != 0;
+#endif
+  std::int32_t any = 0;
+  for (std::size_t lane = 0; lane < sizeof(Masks) / sizeof(std::int32_t); ++lane) any |= mask[lane];
+  return any != 0;
 }
 
 template <class Floats>
@@ -222,11 +250,12 @@ inline __attribute__((always_inline)) void scatter_velocities(SolverBody* bodies
   }
 }
 
-// The lanes where `flag` is set in `flags`: -1 there, 0 elsewhere.
+// The lanes where `flag` (a single bit) is set in `flags`: -1 there, 0 elsewhere (an equality
+// test against the bit: one comparison, where `!= 0` takes a comparison and a negation).
 template <class Masks>
 Masks flag_lanes(Masks flags, std::int32_t flag) {
-  const Masks none = {};
-  return (flags & (none + flag)) != none;
+  const Masks bit = Masks{} + flag;
+  return (flags & bit) == bit;
 }
 
 // The block's per-contact constants and both sides' bodies.
@@ -435,6 +464,7 @@ typename LaneTypes<Lanes>::Masks solve_normal_pair(BlockState<Lanes>& state,
   const Floats zero = {};
   const Masks paired = flag_lanes(state.flags, block_point_pair) & target[0].active &
                        target[1].active;
+  if (!any_lane(paired)) return paired;  // nothing to do: no lane changes
   Floats anchor_ax[2], anchor_ay[2], anchor_bx[2], anchor_by[2], impulse[2], error[2], push[2];
   for (int slot = 0; slot < 2; ++slot) {
     anchor_ax[slot] = load_lanes<Floats>(points[slot].anchor_ax);
@@ -585,6 +615,8 @@ void solve_blocks(const ContactBlockArrays<Lanes>& arrays, SolverBody* bodies,
         normal_target(state, softness, 1, separation[1], solve.points[1], pass)};
     const auto served = solve_normal_pair(state, target, block.points, solve);
     for (int slot = 0; slot < 2; ++slot) {
+      // Where the pair solve served every lane the slot has, solving it alone changes nothing.
+      if (!any_lane(target[slot].active & ~served)) continue;
       solve_normal(state, target[slot], block.points[slot], solve.points[slot], served);
     }
     if (pass.friction) solve_friction(state, softness, drift, block.points, solve, pass);

@@ -322,7 +322,7 @@ void WideContactSolver::visit(std::size_t index, Contact& contact) {
     const Body& a = bodies[contact.body_a.index];
     const Body& b = bodies[contact.body_b.index];
     if (pool_ != nullptr) {
-      contact.mass = pair_mass_of(a, b, *context_);  // the rest in finish_step, shared
+      set_pair_mass(contact, pair_mass_of(a, b, *context_));  // the rest in finish_step, shared
     } else {
       prepare_contact(contact, a, b, *context_);
     }
