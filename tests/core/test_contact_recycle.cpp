@@ -96,3 +96,37 @@ TEST(ContactRecycle, WorldKeepsARestingPairsManifold) {
 }
 
 }  // namespace
+
+// A kept manifold keeps the offsets and effective masses prepare found for it
+// (Contact::kept_masses) instead of computing them again each step. A world restored from a
+// snapshot keeps none, so it computes them afresh: the two must go on bit for bit alike, also
+// across a change of a body's mass while its contacts are kept (which must drop what was kept).
+TEST(ContactRecycle, KeptEffectiveMassesGoOnLikeFreshOnesAcrossAMassChange) {
+  WorldSettings settings;
+  World world(settings);
+  BodyDef ground;
+  ground.type = BodyType::Static;
+  ground.position = {0.0f, -0.5f};
+  world.create_body(ground, make_oriented_box({5.0f, 0.5f}));
+  BodyDef box;
+  box.material = Material{"Box", 1.0f, 0.0f, 0.6f, 0.5f};
+  BodyId top;
+  for (int i = 0; i < 3; ++i) {
+    box.position = {0.1f * static_cast<float>(i), 0.5f + static_cast<float>(i)};
+    top = world.create_body(box, make_oriented_box({0.5f, 0.5f}));
+  }
+  for (int step = 0; step < 90; ++step) world.step();
+  int kept = 0;
+  for (const Contact& contact : world.contacts()) kept += contact.recycled && contact.kept_masses ? 1 : 0;
+  ASSERT_GT(kept, 0) << "the resting stack's contacts keep their manifolds and masses";
+
+  World restored(settings);
+  restored.restore_snapshot(world.save_snapshot());
+  for (const Contact& contact : restored.contacts()) EXPECT_FALSE(contact.kept_masses);
+  for (World* each : {&world, &restored}) each->set_material(top, Material{"Heavy", 4.0f, 0.0f, 0.6f, 0.5f});
+  for (int step = 0; step < 60; ++step) {
+    world.step();
+    restored.step();
+    ASSERT_EQ(world.state_hash(), restored.state_hash()) << "step " << step;
+  }
+}
