@@ -64,11 +64,30 @@ void collect_contact_events(WorldState& world) {
   std::vector<EventPair>& next = events.next;
   reserve_at_least(next, world.contacts.capacity() + world.sleeping_contacts.capacity());
   next.clear();
+  reserve_at_least(events.contact.begin, next.capacity());
+  reserve_at_least(events.contact.end, events.touching.capacity() + events.contact.end.size());
   // When every body asks for contact events (the default) no body need be read.
   const bool all_want = events.contact_event_bodies == world.living_body_count;
   auto wants = [&world, all_want](const Contact& contact) {
     return all_want || world.bodies[contact.body_a.index].enable_contact_events ||
            world.bodies[contact.body_b.index].enable_contact_events;
+  };
+  // This step's touching pairs come in key order, as last step's are kept: one walk over both
+  // finds the pairs that began (not touching before) and ended (touching before, not now).
+  const std::vector<EventPair>& before = events.touching;
+  std::size_t next_before = 0;  // last step's pairs below it have been matched or ended
+  auto end_before = [&events, &before, &next_before]() {
+    const EventPair& pair = before[next_before++];
+    events.contact.end.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
+  };
+  auto touches_now = [&](const EventPair& pair) {
+    while (next_before < before.size() && before[next_before].key() < pair.key()) end_before();
+    if (next_before < before.size() && before[next_before].key() == pair.key()) {
+      ++next_before;  // still touching
+    } else {
+      events.contact.begin.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
+    }
+    next.push_back(pair);
   };
   // Merge the awake and the set-aside contacts (each sorted by pair, disjoint): a pair that
   // fell asleep keeps touching. An awake contact's touch was judged by prepare this step (its
@@ -85,18 +104,9 @@ void collect_contact_events(WorldState& world) {
     const Contact& contact = take_awake ? awake[i++] : resting[j++];
     const bool touching = take_awake ? contact.enabled && contact.touching
                                      : touches_in_step(velocities, contact, slop, dt);
-    if (touching && wants(contact)) next.push_back(pair_of(contact));
+    if (touching && wants(contact)) touches_now(pair_of(contact));
   }
-  reserve_at_least(events.contact.begin, next.capacity());
-  reserve_at_least(events.contact.end, events.touching.capacity() + events.contact.end.size());
-  compare_pairs(
-      events.touching, next,
-      [&events](const EventPair& pair) {
-        events.contact.begin.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
-      },
-      [&events](const EventPair& pair) {
-        events.contact.end.push_back({shape_a_of(pair), shape_b_of(pair), pair.a, pair.b});
-      });
+  while (next_before < before.size()) end_before();
   std::swap(events.touching, next);
 }
 
