@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace impulse2d {
@@ -48,27 +47,6 @@ void validate_material(const Material& material, const std::string& where) {
           "dynamic_friction", "must be finite and >= 0");
   require(material.static_friction >= material.dynamic_friction, "static_friction",
           "must be >= dynamic_friction");
-}
-
-float mix_friction(float a, float b, FrictionMixing rule) {
-  switch (rule) {
-    case FrictionMixing::RootSumSquares: return std::sqrt(a * a + b * b);
-    case FrictionMixing::GeometricMean: return std::sqrt(a * b);
-    case FrictionMixing::Product: return a * b;
-    case FrictionMixing::Average: return 0.5f * (a + b);
-    case FrictionMixing::Minimum: return std::min(a, b);
-    case FrictionMixing::Maximum: return std::max(a, b);
-  }
-  return 0.0f;
-}
-
-float mix_restitution(float a, float b, RestitutionMixing rule) {
-  switch (rule) {
-    case RestitutionMixing::Minimum: return std::min(a, b);
-    case RestitutionMixing::Maximum: return std::max(a, b);
-    case RestitutionMixing::Average: return 0.5f * (a + b);
-  }
-  return 0.0f;
 }
 
 }  // namespace impulse2d

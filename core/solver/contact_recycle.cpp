@@ -11,26 +11,26 @@ namespace {
 // (Box2D v3's 0.98: about 11.5 degrees).
 constexpr float min_turn_cosine = 0.98f;
 
-// Where the bodies stand now: B's centre in A's frame (A's centre in B's frame when only B is
-// static: measured in a turning body's frame, a fixed body's centre seems to stay put while the
-// body rolls over it) and both rotations.
-ManifoldPose pose_of(const Body& a, const Body& b) {
-  const Rotation& qa = a.transform.rotation;
-  ManifoldPose pose;
+// B's centre in A's frame (A's centre in B's frame when only B is static: measured in a turning
+// body's frame, a fixed body's centre seems to stay put while the body rolls over it).
+vec2 relative_position_of(const Body& a, const Body& b) {
   if (b.type == BodyType::Static && a.type != BodyType::Static) {
-    pose.relative_position = b.transform.rotation.inverse_rotate(a.transform.position - b.transform.position);
-  } else {
-    pose.relative_position = qa.inverse_rotate(b.transform.position - a.transform.position);
+    return b.transform.rotation.inverse_rotate(a.transform.position - b.transform.position);
   }
-  pose.rotation_a = qa;
+  return a.transform.rotation.inverse_rotate(b.transform.position - a.transform.position);
+}
+
+// Where the bodies stand now: their relative position and both rotations.
+ManifoldPose pose_of(const Body& a, const Body& b) {
+  ManifoldPose pose;
+  pose.relative_position = relative_position_of(a, b);
+  pose.rotation_a = a.transform.rotation;
   pose.rotation_b = b.transform.rotation;
   return pose;
 }
 
-// B's rotation relative to A's in `pose`.
-Rotation relative_rotation(const ManifoldPose& pose) {
-  const Rotation& qa = pose.rotation_a;
-  const Rotation& qb = pose.rotation_b;
+// Rotation `qb` relative to rotation `qa`.
+Rotation relative_rotation(const Rotation& qa, const Rotation& qb) {
   return {qa.cosine * qb.cosine + qa.sine * qb.sine, qa.cosine * qb.sine - qa.sine * qb.cosine};
 }
 
@@ -66,19 +66,22 @@ bool may_recycle(const Body& a, const Body& b, const Contact& contact, float rec
                  float apart_distance) {
   if (!(recycle_distance > 0.0f) || !contact.enabled) return false;
   if (!allows_recycling(a) || !allows_recycling(b)) return false;
+  // Read in place: a `ManifoldPose` of now would be copied out to the stack and back.
   const ManifoldPose& then = contact.manifold_pose;
-  const ManifoldPose now = pose_of(a, b);
-  const float turn_cosine = std::min(cosine_between(now.rotation_a, then.rotation_a),
-                                     cosine_between(now.rotation_b, then.rotation_b));
+  const Rotation& rotation_a = a.transform.rotation;
+  const Rotation& rotation_b = b.transform.rotation;
+  const float turn_cosine = std::min(cosine_between(rotation_a, then.rotation_a),
+                                     cosine_between(rotation_b, then.rotation_b));
   if (!(turn_cosine > min_turn_cosine)) return false;
   bool touching = false;
   for (int i = 0; i < contact.point_count; ++i) touching = touching || contact.points[i].depth >= 0.0f;
   const float tolerance = touching ? recycle_distance : std::min(recycle_distance, apart_distance);
-  const float moved = std::sqrt(length_squared(now.relative_position - then.relative_position));
+  const float moved = std::sqrt(length_squared(relative_position_of(a, b) - then.relative_position));
   // The turn's share below is >= 0, so a shift alone at the tolerance already fails (and the
   // shapes' extents need not be looked up).
   if (!(moved < tolerance)) return false;
-  const float turned = std::fabs(sine_between(relative_rotation(now), relative_rotation(then)));
+  const float turned = std::fabs(sine_between(relative_rotation(rotation_a, rotation_b),
+                                              relative_rotation(then.rotation_a, then.rotation_b)));
   const float extent_a = a.type == BodyType::Static ? 0.0f : a.extent;
   const float extent_b = b.type == BodyType::Static ? 0.0f : b.extent;
   return moved + std::max(extent_a, extent_b) * turned < tolerance;
@@ -89,12 +92,27 @@ void recycle_manifold(const Body& a, const Body& b, Contact& contact) {
   const Transform xa = a.transform;
   const Transform xb = b.transform;
   const vec2 normal = contact.normal;
+  // The point midway between its two surface points, and its depth from how far they moved
+  // along the normal.
+  auto update = [normal](ContactPoint& point, vec2 on_a, vec2 on_b) {
+    point.point = 0.5f * (on_a + on_b);
+    point.depth = -(point.base_separation + glm::dot(on_b - on_a, normal));
+  };
+  const bool round_a = is_circle(a, contact.child_a);
+  const bool round_b = is_circle(b, contact.child_b);
+  if (!round_a && !round_b) {
+    // The common case, on its own: without the circles' cases beside it in the loop, the
+    // compiler keeps it short.
+    for (int i = 0; i < contact.point_count; ++i) {
+      ContactPoint& point = contact.points[i];
+      update(point, xa.apply(point.recycle_anchor_a), xb.apply(point.recycle_anchor_b));
+    }
+    return;
+  }
   // A circle's point stays where it was relative to its centre as the circle turns (the normal
   // is kept): its offset is turned by the rotation it was found at, not the current one.
   // (A compound's circle: its centre moves with the body, the point is kept where it was
   // relative to that centre.)
-  const bool round_a = is_circle(a, contact.child_a);
-  const bool round_b = is_circle(b, contact.child_b);
   const vec2 centre_a = local_centre(a, contact.child_a);
   const vec2 centre_b = local_centre(b, contact.child_b);
   for (int i = 0; i < contact.point_count; ++i) {
@@ -107,8 +125,7 @@ void recycle_manifold(const Body& a, const Body& b, Contact& contact) {
         !round_b ? xb.apply(point.recycle_anchor_b)
         : b.compound ? xb.apply(centre_b) + contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b - centre_b)
                      : xb.position + contact.manifold_pose.rotation_b.rotate(point.recycle_anchor_b);
-    point.point = 0.5f * (on_a + on_b);
-    point.depth = -(point.base_separation + glm::dot(on_b - on_a, normal));
+    update(point, on_a, on_b);
   }
 }
 
