@@ -75,14 +75,9 @@ void store_lanes(void* target, Vector value) {
 template <class Floats, class Masks>
 Floats select_lanes(Masks mask, Floats a, Floats b) {
 #if defined(__AVX2__)
-  if constexpr (sizeof(Masks) == 32) {
-    return (Floats)_mm256_blendv_ps((__m256)b, (__m256)a, (__m256)mask);  // one instruction
-  } else {
-    return (Floats)(((Masks)a & mask) | ((Masks)b & ~mask));
-  }
-#else
-  return (Floats)(((Masks)a & mask) | ((Masks)b & ~mask));
+  if constexpr (sizeof(Masks) == 32) return (Floats)_mm256_blendv_ps((__m256)b, (__m256)a, (__m256)mask);
 #endif
+  return (Floats)(((Masks)a & mask) | ((Masks)b & ~mask));
 }
 
 // True when any lane of `mask` is set (every mask lane is all ones or all zeros).
