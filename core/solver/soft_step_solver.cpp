@@ -23,12 +23,12 @@ constexpr int kJointPasses = 4;
 }  // namespace
 
 void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) const {
-  const float h = context.substep;
   std::vector<Body>& bodies = stages.solver_bodies();
   WideContactSolver& wide = stages.solver_wide_contacts();
   // Once: the sub-steps track each point's separation through its anchors. Each contact is
   // prepared and coloured as the narrow phase finishes it, while it is in the cache.
-  wide.begin_step(bodies, context, context.solver_lanes, stages.workers());
+  const bool joints = stages.has_joints();
+  wide.begin_step(bodies, context, context.solver_lanes, stages.workers(), /*allow_batches=*/!joints);
   stages.find_contacts(context.time_step, &wide);
   std::vector<Contact>& contacts = stages.solver_contacts();
   wide.finish_step(contacts);
@@ -40,6 +40,54 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
   // The sub-steps work on the compact body states; the bodies are written once at the end
   // (and around the bounce stages, which work on them).
   stages.begin_solver_bodies();
+  SolverBodies& states = stages.solver_body_states();
+  if (wide.batched()) {
+    solve_island_batches(stages, context, wide, states);
+  } else {
+    solve_pass_by_pass(stages, context, wide, may_bounce, shock);
+  }
+  finish_step(stages, context, wide);
+}
+
+void SoftStepSolver::solve_island_batches(SolverStages& stages, const SolverContext& context,
+                                          WideContactSolver& wide, SolverBodies& states) const {
+  // No joints, bounces or shock pass: the sub-steps of one batch of islands touch no body of
+  // another, so each batch runs all of them while its blocks and bodies are in the cache
+  // (each body sees the same operations in the same order as pass by pass: the same bits).
+  // The batches are independent work for the workers, and the rest batch (bodies without
+  // contacts) only integrates.
+  const float h = context.substep;
+  const IslandBatches& islands = wide.islands();
+  const std::size_t contact_batches = islands.batch_count();
+  SolverBody* solver_states = states.states();
+  parallel_for(stages.workers(), contact_batches + 1, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t batch = begin; batch < end; ++batch) {
+      const std::uint32_t* slots = islands.bodies_of(batch);
+      const std::size_t slot_count = islands.body_count(batch);
+      const bool has_contacts = batch < contact_batches;
+      for (int substep = 0; substep < context.substeps; ++substep) {
+        states.integrate_velocities(h, slots, slot_count);
+        if (has_contacts) {
+          if (context.warm_starting) wide.warm_start_batch(batch, solver_states);
+          for (int i = 0; i < context.velocity_iterations; ++i) {
+            wide.solve_batch(batch, context, /*use_bias=*/true, solver_states);
+          }
+        }
+        states.integrate_positions(h, slots, slot_count);
+        for (int i = 0; has_contacts && i < context.velocity_iterations; ++i) {
+          wide.solve_batch(batch, context, /*use_bias=*/false, solver_states);  // relax
+        }
+      }
+    }
+  });
+}
+
+void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContext& context,
+                                        WideContactSolver& wide, bool may_bounce,
+                                        bool shock) const {
+  const float h = context.substep;
+  std::vector<Body>& bodies = stages.solver_bodies();
+  std::vector<Contact>& contacts = stages.solver_contacts();
   SolverBodies& states = stages.solver_body_states();
   // Joints (Box2D v3's order): in every stage before the contacts, same sub-steps and relax.
   const bool joints = stages.has_joints();
@@ -91,6 +139,13 @@ void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) co
       wide.load_points(contacts);
     }
   }
+}
+
+void SoftStepSolver::finish_step(SolverStages& stages, const SolverContext& context,
+                                 WideContactSolver& wide) const {
+  std::vector<Body>& bodies = stages.solver_bodies();
+  std::vector<Contact>& contacts = stages.solver_contacts();
+  SolverBodies& states = stages.solver_body_states();
   states.store(bodies, stages.workers());
   if (states.has_bullets()) stages.sweep_bullets(context.time_step);
   // One walk in the list's order writes the impulses back and then, with friction, switches

@@ -7,6 +7,9 @@
 
 #include "core/solver/step_solver.h"
 
+#include "core/solver/solver_bodies.h"
+#include "core/solver/wide_contact_solver.h"
+
 namespace impulse2d {
 
 /// Collides once with a speculative margin covering the whole step, then runs `substeps`
@@ -16,6 +19,19 @@ namespace impulse2d {
 class SoftStepSolver final : public StepSolver {
  public:
   void step(SolverStages& stages, const SolverContext& context) const override;
+
+ private:
+  // The sub-steps when the wide solver laid its blocks out by island batch (`batched`): all
+  // sub-steps of one batch, then the next.
+  void solve_island_batches(SolverStages& stages, const SolverContext& context,
+                            WideContactSolver& wide, SolverBodies& states) const;
+  // The sub-steps over the whole world, pass by pass (joints, bounces and the shock pass).
+  void solve_pass_by_pass(SolverStages& stages, const SolverContext& context,
+                          WideContactSolver& wide, bool may_bounce, bool shock) const;
+  // After the sub-steps: the bodies written back, bullets swept, impulses stored and
+  // friction switched.
+  void finish_step(SolverStages& stages, const SolverContext& context,
+                   WideContactSolver& wide) const;
 };
 
 }  // namespace impulse2d

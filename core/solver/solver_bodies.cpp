@@ -10,6 +10,22 @@ namespace impulse2d {
 namespace {
 // Body slots a worker takes at least at a time.
 constexpr std::size_t min_slots_per_chunk = 256;
+
+// The slots begin, begin + 1, ..., end - 1.
+struct SlotRange {
+  std::size_t begin;
+  std::size_t end;
+  std::size_t size() const { return end - begin; }
+  std::size_t operator[](std::size_t k) const { return begin + k; }
+};
+
+// `count` slots listed at `slots`.
+struct SlotList {
+  const std::uint32_t* slots;
+  std::size_t count;
+  std::size_t size() const { return count; }
+  std::size_t operator[](std::size_t k) const { return slots[k]; }
+};
 }  // namespace
 
 void SolverBodies::begin_step(const std::vector<Body>& bodies,
@@ -57,17 +73,27 @@ void SolverBodies::begin_step(const std::vector<Body>& bodies,
 
 void SolverBodies::integrate_velocities(float dt, WorkerPool* pool) {
   parallel_for(pool, states_.size(), min_slots_per_chunk,
-               [&](std::size_t begin, std::size_t end) { integrate_velocities_of(dt, begin, end); });
+               [&](std::size_t begin, std::size_t end) { integrate_velocities_of(dt, SlotRange{begin, end}); });
+}
+
+void SolverBodies::integrate_velocities(float dt, const std::uint32_t* slots, std::size_t count) {
+  integrate_velocities_of(dt, SlotList{slots, count});
+}
+
+void SolverBodies::integrate_positions(float dt, const std::uint32_t* slots, std::size_t count) {
+  integrate_positions_of(dt, SlotList{slots, count});
 }
 
 void SolverBodies::integrate_positions(float dt, WorkerPool* pool) {
   parallel_for(pool, states_.size(), min_slots_per_chunk,
-               [&](std::size_t begin, std::size_t end) { integrate_positions_of(dt, begin, end); });
+               [&](std::size_t begin, std::size_t end) { integrate_positions_of(dt, SlotRange{begin, end}); });
 }
 
-void SolverBodies::integrate_velocities_of(float dt, std::size_t begin, std::size_t end) {
+template <class Slots>
+void SolverBodies::integrate_velocities_of(float dt, Slots slots) {
   const float max_speed_squared = max_linear_speed_ * max_linear_speed_;
-  for (std::size_t i = begin; i < end; ++i) {
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    const std::size_t i = slots[k];
     const BodyIntegration& integration = integration_[i];
     if ((integration.flags & flag_accelerates) == 0) continue;
     SolverBody& state = states_[i];
@@ -89,7 +115,8 @@ void SolverBodies::integrate_velocities_of(float dt, std::size_t begin, std::siz
   }
 }
 
-void SolverBodies::integrate_positions_of(float dt, std::size_t begin, std::size_t end) {
+template <class Slots>
+void SolverBodies::integrate_positions_of(float dt, Slots slots) {
   // Turned bodies get their cosine and sine four at a time (`cos_sin_4`, bit for bit as
   // `Rotation::from_angle`).
   std::size_t turned[4];
@@ -104,7 +131,8 @@ void SolverBodies::integrate_positions_of(float dt, std::size_t begin, std::size
     }
     pending = 0;
   };
-  for (std::size_t i = begin; i < end; ++i) {
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    const std::size_t i = slots[k];
     const std::uint32_t flags = integration_[i].flags;
     if ((flags & flag_moves) == 0) continue;
     SolverBody& state = states_[i];

@@ -53,6 +53,10 @@ class SolverBodies {
   /// `integrate_positions` of integrate.h on the compact state, over `dt` seconds (with a
   /// `pool`, as `integrate_velocities`).
   void integrate_positions(float dt, WorkerPool* pool = nullptr);
+  /// `integrate_velocities` over the `count` slots listed at `slots` only, on this thread.
+  void integrate_velocities(float dt, const std::uint32_t* slots, std::size_t count);
+  /// `integrate_positions` over the `count` slots listed at `slots` only, on this thread.
+  void integrate_positions(float dt, const std::uint32_t* slots, std::size_t count);
   /// Writes the velocity back to every slot the contacts may change, pose and angle to every
   /// slot that moves (with a `pool`, the slots shared among its workers).
   void store(std::vector<Body>& bodies, WorkerPool* pool = nullptr) const;
@@ -65,8 +69,11 @@ class SolverBodies {
   SolverBody* states() { return states_.data(); }
 
  private:
-  void integrate_velocities_of(float dt, std::size_t begin, std::size_t end);
-  void integrate_positions_of(float dt, std::size_t begin, std::size_t end);
+  // Over the slots slots[0] .. slots[slots.size() - 1] (a range of slots or a list of them).
+  template <class Slots>
+  void integrate_velocities_of(float dt, Slots slots);
+  template <class Slots>
+  void integrate_positions_of(float dt, Slots slots);
 
   std::vector<SolverBody> states_;
   std::vector<BodyIntegration> integration_;

@@ -63,6 +63,13 @@ void for_each_point(Blocks& packed, Contacts& contacts, Visit visit) {
   }
 }
 
+// The blocks [first, first + count) of `arrays`.
+template <int Lanes>
+ContactBlockArrays<Lanes> block_range(const ContactBlockArrays<Lanes>& arrays, std::size_t first,
+                                      std::size_t count) {
+  return {arrays.blocks + first, arrays.solves + first, arrays.sticks + first, count};
+}
+
 // Point slot `slot` of lane `lane` left without a point: nothing to solve, no impulse to apply.
 template <int Lanes>
 void clear_point(ContactBlock<Lanes>& block, ContactBlockSolve<Lanes>& solve, int slot, int lane) {
@@ -272,8 +279,56 @@ void WideContactSolver::place(std::size_t index, int colour, const Contact& cont
   const std::size_t block = lane == 0 ? blocks.open_block() : blocks.count - 1;
   blocks.contact_index[block * Lanes + static_cast<std::size_t>(lane)] = static_cast<std::int32_t>(index);
   lane_of_contact_.push_back(static_cast<std::int32_t>(block * Lanes + static_cast<std::size_t>(lane)));
-  if (pool_ == nullptr) {
-    pack_contact(contact, blocks.blocks[block], blocks.solves[block], blocks.sticks[block], lane);
+  pack_contact(contact, blocks.blocks[block], blocks.solves[block], blocks.sticks[block], lane);
+}
+
+template <int Lanes>
+void WideContactSolver::place_in_batches(std::size_t contact_count) {
+  const std::size_t batches = batched_ ? islands_.batch_count() : 1;
+  placed_batches_ = batches;
+  const std::size_t row = batches + 1;
+  constexpr std::size_t colour_rows = ContactColouring::max_colours + 1;
+  // Contacts of each colour and batch, then (a running sum over each colour's batches) the
+  // first block of each batch: batch_blocks_[colour * row + batch].
+  batch_blocks_.assign(colour_rows * row, 0);
+  std::size_t recorded = 0;  // solvable contacts so far: the islands' record of each
+  for (std::size_t i = 0; i < contact_count; ++i) {
+    const int colour = colouring_.colour_of(i);
+    if (colour < 0) continue;
+    const std::size_t batch = batched_ ? islands_.batch_of_contact(recorded) : 0;
+    ++recorded;
+    ++batch_blocks_[static_cast<std::size_t>(colour) * row + batch + 1];
+  }
+  // Each colour's next free lane of each batch (block * Lanes + lane).
+  next_lane_.resize(colour_rows * batches);
+  Colours<Lanes>& packed = colours<Lanes>();
+  for (std::size_t colour = 0; colour < colour_rows; ++colour) {
+    const std::size_t per_block = colour == ContactColouring::max_colours ? 1 : Lanes;
+    std::uint32_t* first = batch_blocks_.data() + colour * row;
+    std::uint32_t blocks = 0;
+    for (std::size_t batch = 0; batch < batches; ++batch) {
+      next_lane_[colour * batches + batch] = blocks * Lanes;
+      blocks += static_cast<std::uint32_t>((first[batch + 1] + per_block - 1) / per_block);
+      first[batch + 1] = blocks;
+    }
+    ColourBlocks<Lanes>& colour_blocks = packed[colour];
+    while (colour_blocks.count < blocks) colour_blocks.open_block();
+  }
+  lane_of_contact_.resize(contact_count);
+  recorded = 0;
+  for (std::size_t i = 0; i < contact_count; ++i) {
+    const int colour = colouring_.colour_of(i);
+    if (colour < 0) {
+      lane_of_contact_[i] = -1;
+      continue;
+    }
+    const std::size_t batch = batched_ ? islands_.batch_of_contact(recorded) : 0;
+    ++recorded;
+    std::uint32_t& next = next_lane_[static_cast<std::size_t>(colour) * batches + batch];
+    const std::uint32_t lane = next;
+    next += colour == ContactColouring::max_colours ? Lanes : 1;  // the overflow: a block each
+    packed[static_cast<std::size_t>(colour)].contact_index[lane] = static_cast<std::int32_t>(i);
+    lane_of_contact_[i] = static_cast<std::int32_t>(lane);
   }
 }
 
@@ -281,17 +336,20 @@ template <int Lanes>
 void WideContactSolver::clear_unused_lanes() {
   Colours<Lanes>& packed = colours<Lanes>();
   for (int colour = 0; colour < packed_colours_; ++colour) {
-    const int used = static_cast<int>(colouring_.count(colour) % Lanes);
-    if (used == 0) continue;
     ColourBlocks<Lanes>& blocks = packed[static_cast<std::size_t>(colour)];
-    const std::size_t last = blocks.count - 1;
-    for (int lane = used; lane < Lanes; ++lane) {
-      clear_lane(blocks.blocks[last], blocks.solves[last], lane);
-      // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
-      // other block of the colour touches, so workers sharing the colour never read a body
-      // another one is writing.
-      blocks.blocks[last].body_a[lane] = blocks.blocks[last].body_a[0];
-      blocks.blocks[last].body_b[lane] = blocks.blocks[last].body_b[0];
+    // Only a batch's last block can be partly used; lane 0 of every block is.
+    for (std::size_t block = 0; block < blocks.count; ++block) {
+      const std::int32_t* contact_index = blocks.contact_index.data() + block * Lanes;
+      if (contact_index[Lanes - 1] >= 0) continue;
+      for (int lane = 1; lane < Lanes; ++lane) {
+        if (contact_index[lane] >= 0) continue;
+        clear_lane(blocks.blocks[block], blocks.solves[block], lane);
+        // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
+        // other block of the colour touches, so workers sharing the colour never read a body
+        // another one is writing.
+        blocks.blocks[block].body_a[lane] = blocks.blocks[block].body_a[0];
+        blocks.blocks[block].body_b[lane] = blocks.blocks[block].body_b[0];
+      }
     }
   }
   ColourBlocks<Lanes>& overflow = packed[ContactColouring::max_colours];
@@ -301,8 +359,14 @@ void WideContactSolver::clear_unused_lanes() {
 }
 
 void WideContactSolver::begin_step(const std::vector<Body>& bodies, const SolverContext& context,
-                                   int lanes, WorkerPool* pool) {
+                                   int lanes, WorkerPool* pool, bool allow_batches) {
   pool_ = pool;
+  allow_batches_ = allow_batches;
+  // Lanes are given as contacts are visited (packing each while it is in the cache) unless a
+  // pool packs them, or the last step had island batches to lay out (likely again).
+  deferred_ = pool != nullptr || (allow_batches && last_batch_count_ >= 2);
+  batched_ = false;
+  if (allow_batches) islands_.begin(bodies.size());
   if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
   lanes_ = lanes;
   has_elastic_contacts_ = false;
@@ -332,6 +396,13 @@ void WideContactSolver::visit(std::size_t index, Contact& contact) {
   }
   const int colour = colouring_.add(contact);
   if (colour >= 0 && contact.restitution > 0.0f) has_elastic_contacts_ = true;
+  if (colour >= 0 && allow_batches_) {
+    const std::vector<Body>& bodies = *bodies_;
+    const std::uint32_t a = contact.body_a.index;
+    const std::uint32_t b = contact.body_b.index;
+    islands_.add_contact(a, bodies[a].type != BodyType::Static, b, bodies[b].type != BodyType::Static);
+  }
+  if (deferred_) return;  // lanes given in finish_step
   if (lanes_ == 8) {
     place<8>(index, colour, contact);
   } else {
@@ -341,6 +412,18 @@ void WideContactSolver::visit(std::size_t index, Contact& contact) {
 
 template <int Lanes>
 void WideContactSolver::finish_packing(std::vector<Contact>& contacts) {
+  if (deferred_) place_in_batches<Lanes>(contacts.size());
+  if (deferred_ && pool_ == nullptr) {
+    // Prepared as they were visited: packed here, in the list's order.
+    Colours<Lanes>& packed = colours<Lanes>();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      if (lane_of_contact_[i] < 0) continue;
+      ColourBlocks<Lanes>& blocks = packed[static_cast<std::size_t>(colouring_.colour_of(i))];
+      const std::size_t block = static_cast<std::size_t>(lane_of_contact_[i]) / Lanes;
+      const int lane = static_cast<int>(static_cast<std::size_t>(lane_of_contact_[i]) % Lanes);
+      pack_contact(contacts[i], blocks.blocks[block], blocks.solves[block], blocks.sticks[block], lane);
+    }
+  }
   if (pool_ != nullptr) {
     const std::vector<Body>& bodies = *bodies_;
     const SolverContext& context = *context_;
@@ -363,8 +446,19 @@ void WideContactSolver::finish_packing(std::vector<Contact>& contacts) {
 }
 
 void WideContactSolver::finish_step(std::vector<Contact>& contacts) {
-  lane_of_contact_.resize(contacts.size(), -1);  // every contact was visited: no change
+  if (!deferred_) lane_of_contact_.resize(contacts.size(), -1);  // all visited: no change
   packed_colours_ = colouring_.colour_count();
+  if (allow_batches_) {
+    islands_.make_batches();
+    last_batch_count_ = islands_.batch_count();
+    // The bounce and shock stages work on the whole world between the passes.
+    const bool bounces = context_->restitution && has_elastic_contacts_;
+    batched_ = deferred_ && islands_.batch_count() >= 2 && !bounces && !has_heavy_on_light_;
+    if (batched_) {
+      const std::vector<Body>& bodies = *bodies_;
+      islands_.gather_bodies([&bodies](std::size_t slot) { return bodies[slot].type != BodyType::Static; });
+    }
+  }
   if (lanes_ == 8) {
     finish_packing<8>(contacts);
   } else {
@@ -404,11 +498,16 @@ namespace {
 // Blocks a worker takes at least at a time (a block is a few dozen nanoseconds of work).
 constexpr std::size_t min_blocks_per_chunk = 16;
 
-// The blocks [first, first + count) of `arrays`.
-template <int Lanes>
-ContactBlockArrays<Lanes> block_range(const ContactBlockArrays<Lanes>& arrays, std::size_t first,
-                                      std::size_t count) {
-  return {arrays.blocks + first, arrays.solves + first, arrays.sticks + first, count};
+// The kernels' settings of a soft (`use_bias`) or relax pass.
+WidePassSettings pass_settings(const SolverContext& context, bool use_bias) {
+  WidePassSettings pass;
+  pass.inverse_substep = 1.0f / context.substep;
+  pass.static_softness = context.static_softness;
+  pass.dynamic_softness = context.dynamic_softness;
+  pass.push_max_speed = context.push_max_speed;
+  pass.use_bias = use_bias;
+  pass.friction = context.friction;
+  return pass;
 }
 
 }  // namespace
@@ -424,6 +523,52 @@ void WideContactSolver::for_each_colour(WorkerPool* pool, Pass pass) {
   }
   // The overflow's contacts may share bodies: one after another.
   pass(packed[ContactColouring::max_colours].arrays());
+}
+
+template <int Lanes>
+ContactBlockArrays<Lanes> WideContactSolver::batch_arrays(int colour, std::size_t batch) {
+  const std::uint32_t* first = batch_blocks_.data() + static_cast<std::size_t>(colour) * (placed_batches_ + 1);
+  return block_range(colours<Lanes>()[static_cast<std::size_t>(colour)].arrays(), first[batch],
+                     first[batch + 1] - first[batch]);
+}
+
+template <int Lanes, class Pass>
+void WideContactSolver::for_each_colour_of_batch(std::size_t batch, Pass pass) {
+  for (int colour = 0; colour < packed_colours_; ++colour) {
+    const ContactBlockArrays<Lanes> arrays = batch_arrays<Lanes>(colour, batch);
+    if (arrays.count > 0) pass(arrays);
+  }
+  pass(batch_arrays<Lanes>(ContactColouring::max_colours, batch));
+}
+
+void WideContactSolver::warm_start_batch(std::size_t batch, SolverBody* bodies) {
+#if defined(__x86_64__)
+  if (lanes_ == 8) {
+    for_each_colour_of_batch<8>(batch, [&](const ContactBlockArrays<8>& arrays) {
+      warm_start_contact_blocks_8(arrays.blocks, arrays.count, bodies);
+    });
+    return;
+  }
+#endif
+  for_each_colour_of_batch<4>(batch, [&](const ContactBlockArrays<4>& arrays) {
+    warm_start_contact_blocks_4(arrays.blocks, arrays.count, bodies);
+  });
+}
+
+void WideContactSolver::solve_batch(std::size_t batch, const SolverContext& context,
+                                    bool use_bias, SolverBody* bodies) {
+  const WidePassSettings pass = pass_settings(context, use_bias);
+#if defined(__x86_64__)
+  if (lanes_ == 8) {
+    for_each_colour_of_batch<8>(batch, [&](const ContactBlockArrays<8>& arrays) {
+      solve_contact_blocks_8(arrays, bodies, pass);
+    });
+    return;
+  }
+#endif
+  for_each_colour_of_batch<4>(batch, [&](const ContactBlockArrays<4>& arrays) {
+    solve_contact_blocks_4(arrays, bodies, pass);
+  });
 }
 
 void WideContactSolver::warm_start(SolverBody* bodies, WorkerPool* pool) {
@@ -442,13 +587,7 @@ void WideContactSolver::warm_start(SolverBody* bodies, WorkerPool* pool) {
 
 void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies,
                               WorkerPool* pool) {
-  WidePassSettings pass;
-  pass.inverse_substep = 1.0f / context.substep;
-  pass.static_softness = context.static_softness;
-  pass.dynamic_softness = context.dynamic_softness;
-  pass.push_max_speed = context.push_max_speed;
-  pass.use_bias = use_bias;
-  pass.friction = context.friction;
+  const WidePassSettings pass = pass_settings(context, use_bias);
 #if defined(__x86_64__)
   if (lanes_ == 8) {
     for_each_colour<8>(pool, [&](const ContactBlockArrays<8>& arrays) {

@@ -15,6 +15,7 @@
 #include "core/contact.h"
 #include "core/solver/contact_block.h"
 #include "core/solver/contact_colouring.h"
+#include "core/solver/island_batches.h"
 #include "core/solver/worker_pool.h"
 #include "core/solver/contact_visitor.h"
 #include "core/solver/solver_body.h"
@@ -33,11 +34,14 @@ class WideContactSolver final : public ContactVisitor {
 
   /// Starts a step between `bodies` in blocks of `lanes` (4 or 8, 8 only where
   /// `widest_lanes()` is 8; 0: the widest). `bodies` and `context` are kept by reference until
-  /// `finish_step`. With a `pool`, `visit` only colours each contact (from its `PairMass`) and
-  /// gives it its lane, and `finish_step` prepares and packs the contacts on the pool's workers
-  /// (each contact is its own work: the same bits).
+  /// `finish_step`. With a `pool`, `visit` only colours each contact (from its `PairMass`), and
+  /// `finish_step` gives each its lane and prepares and packs the contacts on the pool's
+  /// workers (each contact is its own work: the same bits). With `allow_batches` (the step
+  /// has no joints), the contacts are also grouped into island batches (`island_batches.h`);
+  /// when the step has two or more and no bounce or shock stage, each batch's blocks are kept
+  /// together in every colour (`batched`).
   void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes,
-                  WorkerPool* pool = nullptr);
+                  WorkerPool* pool = nullptr, bool allow_batches = false);
   /// Prepares the step's next contact (as `prepare_contacts` does, if enabled), colours it and
   /// packs it into the next lane of its colour's blocks; called for every contact of the list,
   /// in order, between `begin_step` and `finish_step` (by the narrow phase).
@@ -78,6 +82,17 @@ class WideContactSolver final : public ContactVisitor {
   bool has_heavy_on_light() const { return has_heavy_on_light_; }
   /// Lanes per block of this step (4 or 8).
   int lanes() const { return lanes_; }
+  /// True when this step's blocks are laid out batch by batch (see `begin_step`): the soft
+  /// step may then run all sub-steps of one batch (`warm_start_batch`, `solve_batch`) before
+  /// the next.
+  bool batched() const { return batched_; }
+  /// The step's island batches (valid when `batched`).
+  const IslandBatches& islands() const { return islands_; }
+  /// `warm_start` for the blocks of island batch `batch` only (when `batched`).
+  void warm_start_batch(std::size_t batch, SolverBody* bodies);
+  /// `solve` for the blocks of island batch `batch` only (when `batched`), on this thread.
+  void solve_batch(std::size_t batch, const SolverContext& context, bool use_bias,
+                   SolverBody* bodies);
   /// Colours of this step's contacts (the overflow not counted).
   int colour_count() const { return colouring_.colour_count(); }
 
@@ -122,13 +137,21 @@ class WideContactSolver final : public ContactVisitor {
     }
   }
   /// Gives the list's contact `index` (of colour `colour`, -1: not solved) the next lane of its
-  /// colour and, without a pool, packs it there.
+  /// colour and packs it there (when the lanes are given as contacts are visited).
   template <int Lanes>
   void place(std::size_t index, int colour, const Contact& contact);
-  /// Clears the lanes no contact took: each colour's last block after its last contact, and
-  /// every overflow block's but the first.
+  /// Gives every solvable contact of the list its lane, colour by colour and within a colour
+  /// batch by batch (one batch unless `batched_`), each batch's contacts in the list's order,
+  /// and records each batch's blocks in `batch_blocks_`.
+  template <int Lanes>
+  void place_in_batches(std::size_t contact_count);
+  /// Clears the lanes no contact took: in each colour the lanes after a batch's last contact,
+  /// and every overflow block's but the first.
   template <int Lanes>
   void clear_unused_lanes();
+  /// The blocks of island batch `batch` in colour `colour` (as `batch_blocks_` holds them).
+  template <int Lanes>
+  ContactBlockArrays<Lanes> batch_arrays(int colour, std::size_t batch);
   /// `finish_step` at `Lanes` lanes.
   template <int Lanes>
   void finish_packing(std::vector<Contact>& contacts);
@@ -139,16 +162,30 @@ class WideContactSolver final : public ContactVisitor {
   /// among `pool`'s workers, then over the overflow blocks on this thread.
   template <int Lanes, class Pass>
   void for_each_colour(WorkerPool* pool, Pass pass);
+  /// Runs `pass(arrays)` over island batch `batch`'s blocks of each colour in turn, the
+  /// overflow last, on this thread.
+  template <int Lanes, class Pass>
+  void for_each_colour_of_batch(std::size_t batch, Pass pass);
 
   int lanes_ = 4;
   int packed_colours_ = 0;  ///< colours of this step (the overflow not counted)
   bool has_elastic_contacts_ = false;
   bool has_heavy_on_light_ = false;
+  bool allow_batches_ = false;     // this step's `begin_step` argument
+  bool deferred_ = false;          // lanes given in finish_step, not as each contact is visited
+  bool batched_ = false;           // see batched()
+  std::size_t last_batch_count_ = 0;  // island batches of the last step that allowed them
   float shock_mass_ratio_ = 0.0f;  // of this step's context, when it asks for shock propagation
   const std::vector<Body>* bodies_ = nullptr;  // between begin_step and finish_step
   const SolverContext* context_ = nullptr;     // between begin_step and finish_step
   WorkerPool* pool_ = nullptr;                 // between begin_step and finish_step
   ContactColouring colouring_;
+  IslandBatches islands_;
+  /// Per colour (the overflow last) and batch: the index of the batch's first block among the
+  /// colour's blocks, entry colour * (batches + 1) + batch; the next entry ends the range.
+  std::vector<std::uint32_t> batch_blocks_;
+  std::size_t placed_batches_ = 1;  // batches of the layout in batch_blocks_
+  std::vector<std::uint32_t> next_lane_;  // place_in_batches' next lane of each colour and batch
   Colours<4> colours_4_;
   Colours<8> colours_8_;
   /// Per contact of the list: its lane among its colour's blocks' lanes (block * lanes +

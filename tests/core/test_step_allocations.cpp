@@ -79,6 +79,35 @@ TEST(StepAllocations, SteadyStateStepWithWorkersAllocatesNothing) {
   }
 }
 
+TEST(StepAllocations, SteadyStateStepBatchedByIslandAllocatesNothing) {
+  // Forty separate pyramids without restitution: the soft step lays its blocks out island
+  // batch by island batch and runs the batches' sub-steps one after another (or on workers).
+  for (const int workers : {1, 2}) {
+    WorldSettings settings;
+    settings.worker_count = workers;
+    World world(settings);
+    BodyDef ground;
+    ground.type = BodyType::Static;
+    ground.position = {200, -1};
+    world.create_body(ground, make_box({400, 1}));
+    const Material crate{"Crate", 1.0f, 0.0f, 0.6f, 0.6f};
+    for (int p = 0; p < 40; ++p) {
+      for (int row = 0; row < 10; ++row) {
+        for (int i = 0; i < 10 - row; ++i) {
+          BodyDef box;
+          box.material = crate;
+          box.position = {14.0f * static_cast<float>(p) + static_cast<float>(i) - 0.5f * static_cast<float>(9 - row),
+                          0.5f + static_cast<float>(row)};
+          world.create_body(box, make_oriented_box({0.5f, 0.5f}));
+        }
+      }
+    }
+    allocations_during(world, 60);
+    const long steady = allocations_during(world, 60);
+    EXPECT_EQ(steady, 0) << workers << " workers: contacts " << world.stats().contact_count;
+  }
+}
+
 // A caller's task system that allocates nothing itself: it runs each task's items backwards,
 // one at a time, before `enqueue` returns.
 void* run_backwards(TaskFunction task, int item_count, int, void* task_context, void*) {
