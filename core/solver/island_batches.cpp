@@ -12,14 +12,13 @@ void IslandBatches::begin(std::size_t slot_count) {
 }
 
 std::uint32_t IslandBatches::root_of(std::uint32_t slot) {
-  std::uint32_t root = slot;
-  while (parent_[root] != root) root = parent_[root];
-  while (parent_[slot] != root) {  // path compression
-    const std::uint32_t next = parent_[slot];
-    parent_[slot] = root;
-    slot = next;
+  // Path halving: each slot on the way is pointed at its grandparent (one walk).
+  while (parent_[slot] != slot) {
+    const std::uint32_t grandparent = parent_[parent_[slot]];
+    parent_[slot] = grandparent;
+    slot = grandparent;
   }
-  return root;
+  return slot;
 }
 
 void IslandBatches::add_contact(std::uint32_t a, bool a_joins, std::uint32_t b, bool b_joins) {

@@ -1,6 +1,7 @@
 // The steady-state step allocates nothing: once buffers have grown to fit a scene, stepping
 // it reuses them (every solver method, every broad phase). Counted by
 // tests/support/allocation_counter.cpp, compiled into this binary only.
+#include "core/solver/world_state.h"
 #include "core/world.h"
 
 #include <gtest/gtest.h>
@@ -80,7 +81,7 @@ TEST(StepAllocations, SteadyStateStepWithWorkersAllocatesNothing) {
 }
 
 TEST(StepAllocations, SteadyStateStepBatchedByIslandAllocatesNothing) {
-  // Forty separate pyramids without restitution: the soft step lays its blocks out island
+  // 72 separate pyramids without restitution: the soft step lays its blocks out island
   // batch by island batch and runs the batches' sub-steps one after another (or on workers).
   for (const int workers : {1, 2}) {
     WorldSettings settings;
@@ -88,10 +89,10 @@ TEST(StepAllocations, SteadyStateStepBatchedByIslandAllocatesNothing) {
     World world(settings);
     BodyDef ground;
     ground.type = BodyType::Static;
-    ground.position = {200, -1};
-    world.create_body(ground, make_box({400, 1}));
+    ground.position = {500, -1};
+    world.create_body(ground, make_box({1000, 1}));
     const Material crate{"Crate", 1.0f, 0.0f, 0.6f, 0.6f};
-    for (int p = 0; p < 40; ++p) {
+    for (int p = 0; p < 72; ++p) {
       for (int row = 0; row < 10; ++row) {
         for (int i = 0; i < 10 - row; ++i) {
           BodyDef box;
@@ -105,6 +106,7 @@ TEST(StepAllocations, SteadyStateStepBatchedByIslandAllocatesNothing) {
     allocations_during(world, 60);
     const long steady = allocations_during(world, 60);
     EXPECT_EQ(steady, 0) << workers << " workers: contacts " << world.stats().contact_count;
+    EXPECT_TRUE(WorldState::of(world).wide_contacts.batched()) << workers << " workers";
   }
 }
 
