@@ -38,9 +38,9 @@ class WideContactSolver final : public ContactVisitor {
   /// `finish_step` gives each its lane and prepares and packs the contacts on the pool's
   /// workers (each contact is its own work: the same bits). With `allow_batches` (the step
   /// has no joints), the contacts are also grouped into island batches (`island_batches.h`);
-  /// when the step has enough of them (two with a pool, four on one thread: below that the
-  /// blocks stay in the cache anyway) and no bounce or shock stage, each batch's blocks are
-  /// kept together in every colour (`batched`).
+  /// when the step has enough of them (two with a pool, 32 on one thread, where only the
+  /// memory traffic is saved) and no bounce or shock stage, each batch's blocks are kept
+  /// together in every colour (`batched`).
   void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes,
                   WorkerPool* pool = nullptr, bool allow_batches = false);
   /// Prepares the step's next contact (as `prepare_contacts` does, if enabled), colours it and

@@ -87,11 +87,12 @@ TEST(StepAllocations, SteadyStateStepBatchedByIslandAllocatesNothing) {
     WorldSettings settings;
     settings.worker_count = workers;
     World world(settings);
+    const Material crate{"Crate", 1.0f, 0.0f, 0.6f, 0.6f};  // no restitution: no bounce stage
     BodyDef ground;
     ground.type = BodyType::Static;
+    ground.material = crate;
     ground.position = {500, -1};
     world.create_body(ground, make_box({1000, 1}));
-    const Material crate{"Crate", 1.0f, 0.0f, 0.6f, 0.6f};
     for (int p = 0; p < 72; ++p) {
       for (int row = 0; row < 10; ++row) {
         for (int i = 0; i < 10 - row; ++i) {
@@ -106,7 +107,8 @@ TEST(StepAllocations, SteadyStateStepBatchedByIslandAllocatesNothing) {
     allocations_during(world, 60);
     const long steady = allocations_during(world, 60);
     EXPECT_EQ(steady, 0) << workers << " workers: contacts " << world.stats().contact_count;
-    EXPECT_TRUE(WorldState::of(world).wide_contacts.batched()) << workers << " workers";
+    // Four batches: batched with workers (one thread waits for 32; solved pass by pass).
+    EXPECT_EQ(WorldState::of(world).wide_contacts.batched(), workers > 1) << workers << " workers";
   }
 }
 
