@@ -370,12 +370,18 @@ void WideContactSolver::clear_unused_lanes() {
 void WideContactSolver::begin_step(const std::vector<Body>& bodies, const SolverContext& context,
                                    int lanes, WorkerPool* pool, bool allow_batches) {
   pool_ = pool;
-  allow_batches_ = allow_batches;
+  // Islands are looked for only where the last step could have been batched: enough contacts
+  // to fill the batches needed (a batch closes at target_contacts or more) and no bounce or
+  // shock stage.
+  const std::size_t needed = min_batches(pool);
+  finds_islands_ = allow_batches && !last_step_unbatchable_ &&
+                   last_contact_count_ > (needed - 1) * IslandBatches::target_contacts;
+  if (!finds_islands_) last_batch_count_ = 0;
   // Lanes are given as contacts are visited (packing each while it is in the cache) unless a
   // pool packs them, or the last step had island batches to lay out (likely again).
-  deferred_ = pool != nullptr || (allow_batches && last_batch_count_ >= min_batches(pool));
+  deferred_ = pool != nullptr || last_batch_count_ >= needed;
   batched_ = false;
-  if (allow_batches) islands_.begin(bodies.size());
+  if (finds_islands_) islands_.begin(bodies.size());
   if (lanes == 0) lanes = widest_lanes();  // 4 or 8 otherwise (validate_settings)
   lanes_ = lanes;
   has_elastic_contacts_ = false;
@@ -405,7 +411,7 @@ void WideContactSolver::visit(std::size_t index, Contact& contact) {
   }
   const int colour = colouring_.add(contact);
   if (colour >= 0 && contact.restitution > 0.0f) has_elastic_contacts_ = true;
-  if (colour >= 0 && allow_batches_) {
+  if (colour >= 0 && finds_islands_) {
     const std::vector<Body>& bodies = *bodies_;
     const std::uint32_t a = contact.body_a.index;
     const std::uint32_t b = contact.body_b.index;
@@ -457,13 +463,13 @@ void WideContactSolver::finish_packing(std::vector<Contact>& contacts) {
 void WideContactSolver::finish_step(std::vector<Contact>& contacts) {
   if (!deferred_) lane_of_contact_.resize(contacts.size(), -1);  // all visited: no change
   packed_colours_ = colouring_.colour_count();
-  if (allow_batches_) {
+  // The bounce and shock stages work on the whole world between the passes.
+  last_step_unbatchable_ = (context_->restitution && has_elastic_contacts_) || has_heavy_on_light_;
+  last_contact_count_ = contacts.size();
+  if (finds_islands_) {
     islands_.make_batches();
     last_batch_count_ = islands_.batch_count();
-    // The bounce and shock stages work on the whole world between the passes.
-    const bool bounces = context_->restitution && has_elastic_contacts_;
-    batched_ = deferred_ && islands_.batch_count() >= min_batches(pool_) && !bounces &&
-               !has_heavy_on_light_;
+    batched_ = deferred_ && islands_.batch_count() >= min_batches(pool_) && !last_step_unbatchable_;
     if (batched_) {
       const std::vector<Body>& bodies = *bodies_;
       islands_.gather_bodies([&bodies](std::size_t slot) { return bodies[slot].type != BodyType::Static; });

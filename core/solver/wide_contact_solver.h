@@ -172,10 +172,12 @@ class WideContactSolver final : public ContactVisitor {
   int packed_colours_ = 0;  ///< colours of this step (the overflow not counted)
   bool has_elastic_contacts_ = false;
   bool has_heavy_on_light_ = false;
-  bool allow_batches_ = false;     // this step's `begin_step` argument
+  bool finds_islands_ = false;     // this step records its contacts' islands
   bool deferred_ = false;          // lanes given in finish_step, not as each contact is visited
   bool batched_ = false;           // see batched()
-  std::size_t last_batch_count_ = 0;  // island batches of the last step that allowed them
+  bool last_step_unbatchable_ = false;  // the last step had a bounce or shock stage
+  std::size_t last_contact_count_ = 0;  // contacts of the last step
+  std::size_t last_batch_count_ = 0;    // island batches of the last step (0: not looked for)
   float shock_mass_ratio_ = 0.0f;  // of this step's context, when it asks for shock propagation
   const std::vector<Body>* bodies_ = nullptr;  // between begin_step and finish_step
   const SolverContext* context_ = nullptr;     // between begin_step and finish_step
