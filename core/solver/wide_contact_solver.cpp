@@ -367,7 +367,9 @@ void WideContactSolver::clear_unused_lanes() {
   Colours<Lanes>& packed = colours<Lanes>();
   for (int colour = 0; colour < packed_colours_; ++colour) {
     ColourBlocks<Lanes>& blocks = packed[static_cast<std::size_t>(colour)];
-    for (std::size_t block = 0; block < blocks.count; ++block) clear_unused_lanes_of(blocks, block, false);
+    // Packed as visited, a colour is one batch: only its last block can be partly used.
+    const std::size_t first = deferred_ || blocks.count == 0 ? 0 : blocks.count - 1;
+    for (std::size_t block = first; block < blocks.count; ++block) clear_unused_lanes_of(blocks, block, false);
   }
   ColourBlocks<Lanes>& overflow = packed[ContactColouring::max_colours];
   for (std::size_t block = 0; block < overflow.count; ++block) clear_unused_lanes_of(overflow, block, true);
