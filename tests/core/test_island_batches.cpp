@@ -170,6 +170,14 @@ TEST(IslandBatches, BatchedStepsAreBitIdenticalToOneThreadPassByPass) {
     falling.material = crate();
     falling.position = {0.5f * kSpacing, 12.0f};
     world.create_body(falling, make_oriented_box({0.4f, 0.4f}));
+    // A kinematic paddle turning between two pyramids pushes both: the contacts never move
+    // it, but it moves, so it joins them into one island (integrated with that batch).
+    BodyDef paddle;
+    paddle.type = BodyType::Kinematic;
+    paddle.material = crate();
+    paddle.position = {3.5f * kSpacing, 0.6f};
+    paddle.angular_velocity = 1.5f;
+    world.create_body(paddle, make_oriented_box({6.0f, 0.1f}));
     for (int step = 0; step < 120; ++step) world.step();
     EXPECT_EQ(WorldState::of(world).wide_contacts.batched(), workers > 1) << workers << " workers";
     hashes.push_back(world.state_hash());
