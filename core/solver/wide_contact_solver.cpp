@@ -63,14 +63,6 @@ void for_each_point(Blocks& packed, Contacts& contacts, Visit visit) {
   }
 }
 
-// Island batches a step needs before the soft step runs them one after another. With
-// workers, two batches are already two independent jobs (one job a step instead of a few per
-// colour per pass). On one thread, only the memory traffic is saved, against the cost of
-// finding the batches and packing after the narrow phase (~4 % more instructions): measured
-// on a 2 MB-L2 Xeon, batching 400 pyramids (22 batches, 9 MB of blocks) gave 0.98x the time at
-// 8 lanes and 1.07x at 4, and 1820 pyramids (100 batches) 0.92x and 1.01x. So one thread
-// batches from 32 batches on (some 13 MB of blocks).
-std::size_t min_batches(const WorkerPool* pool) { return pool != nullptr ? 2 : 32; }
 
 // The blocks [first, first + count) of `arrays`.
 template <int Lanes>
@@ -415,7 +407,7 @@ void WideContactSolver::begin_step(const std::vector<Body>& bodies, const Solver
   // Islands are looked for only where the last step could have been batched: enough contacts
   // to fill the batches needed (a batch closes at target_contacts or more) and no bounce or
   // shock stage.
-  const std::size_t needed = min_batches(pool);
+  const std::size_t needed = min_island_batches_;
   finds_islands_ = allow_batches && !last_step_unbatchable_ &&
                    last_contact_count_ > (needed - 1) * IslandBatches::target_contacts;
   if (!finds_islands_) last_batch_count_ = 0;
@@ -529,7 +521,7 @@ void WideContactSolver::finish_step(std::vector<Contact>& contacts) {
   if (finds_islands_) {
     islands_.make_batches();
     last_batch_count_ = islands_.batch_count();
-    batched_ = deferred_ && islands_.batch_count() >= min_batches(pool_) && !last_step_unbatchable_;
+    batched_ = deferred_ && islands_.batch_count() >= min_island_batches_ && !last_step_unbatchable_;
     if (batched_) {
       const std::vector<Body>& bodies = *bodies_;
       islands_.gather_bodies([&bodies](std::size_t slot) { return bodies[slot].type != BodyType::Static; });

@@ -119,11 +119,10 @@ TEST(IslandBatches, BatchesCloseAtTheirTargetAndNeverSplitAnIsland) {
 }
 
 TEST(IslandBatches, EachPyramidOfABatchedWorldMovesBitForBitAsIfAlone) {
-  // The default settings (the soft step) but for two workers: four batches are batched with
-  // workers (one thread waits for 32).
-  WorldSettings settings;
-  settings.worker_count = 2;
-  World world(settings);
+  // The default settings (the soft step, one thread), batched from two batches on (by default
+  // a world needs 32, some 65,000 contacts).
+  World world;
+  WorldState::of(world).wide_contacts.set_min_island_batches(2);
   build_pyramids(world, kPyramids, kRows, kSpacing);
   for (int step = 0; step < 90; ++step) world.step();
   // The step really ran batch by batch: contacts for more than three batches, no bounce or
@@ -133,7 +132,7 @@ TEST(IslandBatches, EachPyramidOfABatchedWorldMovesBitForBitAsIfAlone) {
   ASSERT_GE(WorldState::of(world).wide_contacts.islands().batch_count(), 4u);
   const std::size_t boxes = static_cast<std::size_t>(kRows * (kRows + 1) / 2);
   for (int only = 0; only < kPyramids; ++only) {
-    World alone;  // one worker, one island: pass by pass
+    World alone;  // one island: pass by pass
     build_pyramids(alone, kPyramids, kRows, kSpacing, only);
     for (int step = 0; step < 90; ++step) alone.step();
     EXPECT_FALSE(WorldState::of(alone).wide_contacts.batched());  // one island: pass by pass
@@ -151,13 +150,15 @@ TEST(IslandBatches, EachPyramidOfABatchedWorldMovesBitForBitAsIfAlone) {
 }
 
 TEST(IslandBatches, BatchedStepsAreBitIdenticalToOneThreadPassByPass) {
-  // One worker: four batches are too few to batch on one thread, so the world is solved pass
-  // by pass; two and four workers solve it batch by batch, the batches shared among them.
+  // One worker at the default (four batches are too few) solves the world pass by pass; two
+  // and four workers, batched from two batches on, solve it batch by batch, the batches
+  // shared among them.
   std::vector<std::uint64_t> hashes;
   for (const int workers : {1, 2, 4}) {
     WorldSettings settings;
     settings.worker_count = workers;
     World world(settings);
+    if (workers > 1) WorldState::of(world).wide_contacts.set_min_island_batches(2);
     build_pyramids(world, kPyramids, kRows, kSpacing);
     // A box thrown into the first pyramid mid-run joins nothing else, and one falling alone
     // lands in the rest batch until it touches the ground.
