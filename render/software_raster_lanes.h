@@ -219,12 +219,8 @@ bool same_every_row(const RowLimit& limit) {
 class FrameColumns {
  public:
   FrameColumns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, bool outline)
-      : FrameColumns(primitive, shape, primitive.frame_lower, primitive.frame_upper, outline) {}
-
-  // The same for the rectangle [lower, upper] of the frame instead of the primitive's.
-  FrameColumns(const SoftwarePrimitive& primitive, const ShapeVertex& shape, vec2 lower, vec2 upper, bool outline)
       : left_(primitive.left), right_(primitive.right) {
-    limits(shape, lower, upper, outer_);
+    limits(shape, primitive.frame_lower, primitive.frame_upper, outer_);
     const vec2 hole(shape.box[0] - shape.box[3] - 0.5f - 2.0f * span_slack,
                     shape.box[1] - shape.box[3] - 0.5f - 2.0f * span_slack);
     has_hole_ = outline && hole.x > 0.0f && hole.y > 0.0f;
@@ -300,34 +296,6 @@ class FrameColumns {
   bool fixed_ = false;     // the columns are `fixed_spans_` / `fixed_sides_` on rows that pass
   RowSpans fixed_spans_;   // on a row inside the rectangle and outside the hole
   RowSpans fixed_sides_;   // on a row inside the hole
-};
-
-// The columns of each row that an arrow may cover: those of its shaft's rectangle (the line,
-// |x| <= box.x + 0.5, |y| <= box.y + 0.5) and of its head's (from the head's base, less half a
-// pixel, to the frame's end, the frame's full height), together: outside both the coverage (the
-// larger of the shaft's and the head's) is 0. The frame alone would scan the head's width along
-// the whole shaft.
-class ArrowColumns {
- public:
-  ArrowColumns(const SoftwarePrimitive& primitive, const ShapeVertex& shape)
-      : shaft_(primitive, shape, vec2(-(shape.box[0] + 0.5f), -(shape.box[1] + 0.5f)),
-               vec2(shape.box[0] + 0.5f, shape.box[1] + 0.5f), false),
-        head_(primitive, shape, vec2(shape.head[0] - 0.5f, primitive.frame_lower.y), primitive.frame_upper, false) {}
-
-  RowSpans operator()(float y) const {
-    const RowSpans shaft = shaft_(y);
-    const RowSpans head = head_(y);
-    if (head.count == 0) return shaft;
-    if (shaft.count == 0) return head;
-    RowSpans both = shaft;
-    both.first[0] = std::min(shaft.first[0], head.first[0]);
-    both.last[0] = std::max(shaft.last[0], head.last[0]);
-    return both;
-  }
-
- private:
-  FrameColumns shaft_;
-  FrameColumns head_;
 };
 
 // The columns of row centre `y` within the disc's reach (`frame_upper.x`) of its centre.
@@ -479,15 +447,15 @@ inline __attribute__((always_inline)) void blend_span(std::uint8_t* row_pixels, 
 
 // Blends `shade(x, y)` (F::width premultiplied colours at the window pixel centres x, the
 // centres of neighbouring pixels of the row at y) over the pixels of `primitive` in window rows
-// [first_row, last_row], in each row those `columns(y)` gives: the same bytes as `blend` with the
-// same formulas one pixel at a time.
+// [first_row, last_row], in each row those `columns(y)` gives, `columns = make_columns()` (made
+// only when needed): the same bytes as `blend` with the same formulas one pixel at a time.
 // With eight lanes, spans of at most four pixels (a steep line's rows, a dot's top and bottom) are
 // drawn two to a group (`blend_pair`), in the order they come; the pixels are those of
 // one span at a time, since each lane is shaded at its own pixel centre and the two spans' pixels
 // are apart.
-template <typename F, typename Columns, typename Shade>
-void blend_lanes(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame, const Columns& columns,
-                 const Shade& shade) {
+template <typename F, typename MakeColumns, typename Shade>
+void blend_lanes(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame,
+                 const MakeColumns& make_columns, const Shade& shade) {
   const std::size_t stride = frame.stride();
   ThinSpan waiting;
   bool is_waiting = false;
@@ -513,6 +481,7 @@ void blend_lanes(const SoftwarePrimitive& primitive, int first_row, int last_row
     for (; row <= top; ++row) blend_alone(row_span(row));
     return;
   }
+  const auto columns = make_columns();
   for (int row = std::max(primitive.bottom, first_row); row <= std::min(primitive.top, last_row); ++row) {
     const float y = static_cast<float>(row) + 0.5f;
     const RowSpans spans = columns(y);
@@ -543,19 +512,19 @@ void blend_lanes(const SoftwarePrimitive& primitive, int first_row, int last_row
 // Blends `shade(px, py)` of F::width pixel centres p in the shape's frame (origin and unit x
 // axis), F::width at a time (`blend_lanes`); for the axis-aligned frame (axis (1, 0): discs,
 // bounding boxes, panels) p is exactly (x - ox, y - oy), computed without the rotation.
-template <typename F, typename Columns, typename Shade>
+template <typename F, typename MakeColumns, typename Shade>
 void blend_in_frame(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame,
-                    const Columns& columns, const ShapeVertex& shape, const Shade& shade) {
+                    const MakeColumns& make_columns, const ShapeVertex& shape, const Shade& shade) {
   const F origin_x(shape.frame[0]);
   const F origin_y(shape.frame[1]);
   if (shape.frame[2] == 1.0f && shape.frame[3] == 0.0f) {
-    blend_lanes<F>(primitive, first_row, last_row, frame, columns,
+    blend_lanes<F>(primitive, first_row, last_row, frame, make_columns,
                    [=](F x, F y) { return shade(x - origin_x, y - origin_y); });
     return;
   }
   const F axis_x(shape.frame[2]);
   const F axis_y(shape.frame[3]);
-  blend_lanes<F>(primitive, first_row, last_row, frame, columns, [=](F x, F y) {
+  blend_lanes<F>(primitive, first_row, last_row, frame, make_columns, [=](F x, F y) {
     const F dx = x - origin_x;
     const F dy = y - origin_y;
     return shade(dx * axis_x + dy * axis_y, axis_x * dy - axis_y * dx);
@@ -741,25 +710,25 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
       const Rgba line = normalised(shape.line);
-      const auto columns = [&](float y) { return disc_columns(primitive, shape, y); };
+      const auto make_columns = [&] { return [&](float y) { return disc_columns(primitive, shape, y); }; };
       // A dot (no ring) or a ring alone: with the other colour's alpha 0, `fill_under_line` is
       // `premultiplied` of the one colour, bit for bit (x * 1, x + 0 and 0 * y are exact for the
       // finite, non-negative values here), so the other's coverage is not computed.
       if (line.a == 0.0f) {
-        blend_in_frame<F>(primitive, first_row, last_row, frame, columns, shape, [=](F px, F py) {
+        blend_in_frame<F>(primitive, first_row, last_row, frame, make_columns, shape, [=](F px, F py) {
           const F r = sqrt(px * px + py * py);
           return premultiplied(fill, saturate(F(shape.disc[0] + 0.5f) - r));
         });
         return;
       }
       if (fill.a == 0.0f) {
-        blend_in_frame<F>(primitive, first_row, last_row, frame, columns, shape, [=](F px, F py) {
+        blend_in_frame<F>(primitive, first_row, last_row, frame, make_columns, shape, [=](F px, F py) {
           const F r = sqrt(px * px + py * py);
           return premultiplied(line, saturate(F(shape.disc[1] + 0.5f) - r) * saturate(r - shape.disc[2] + 0.5f));
         });
         return;
       }
-      blend_in_frame<F>(primitive, first_row, last_row, frame, columns, shape, [=](F px, F py) {
+      blend_in_frame<F>(primitive, first_row, last_row, frame, make_columns, shape, [=](F px, F py) {
         const F r = sqrt(px * px + py * py);
         const F disc = saturate(F(shape.disc[0] + 0.5f) - r);
         const F ring = saturate(F(shape.disc[1] + 0.5f) - r) * saturate(r - shape.disc[2] + 0.5f);
@@ -774,8 +743,8 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
         return;
       }
       const Rgba fill = normalised(shape.fill);
-      blend_in_frame<F>(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, shape.box[3] > 0.0f),
-                        shape, [=](F px, F py) {
+      blend_in_frame<F>(primitive, first_row, last_row, frame,
+                        [&] { return FrameColumns(primitive, shape, shape.box[3] > 0.0f); }, shape, [=](F px, F py) {
                           F coverage = rectangle(px, py, shape.box[0], shape.box[1]);
                           if (shape.box[3] > 0.0f) {
                             coverage = coverage -
@@ -788,8 +757,8 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::arrow: {
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend_in_frame<F>(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, false), shape,
-                        [=](F px, F py) {
+      blend_in_frame<F>(primitive, first_row, last_row, frame, [&] { return FrameColumns(primitive, shape, false); },
+                        shape, [=](F px, F py) {
                           const F side = (px - shape.head[1]) * shape.head[2] + abs(py) * shape.head[3];
                           const F head = saturate(F(0.5f) - max(max(shape.head[0] - px, px - shape.head[1]), side));
                           return premultiplied(fill, max(rectangle(px, py, shape.box[0], shape.box[1]), head));
