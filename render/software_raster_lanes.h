@@ -449,10 +449,10 @@ inline __attribute__((always_inline)) void blend_span(std::uint8_t* row_pixels, 
 // centres of neighbouring pixels of the row at y) over the pixels of `primitive` in window rows
 // [first_row, last_row], in each row those `columns(y)` gives, `columns = make_columns()` (made
 // only when needed): the same bytes as `blend` with the same formulas one pixel at a time.
-// With eight lanes, spans of at most four pixels (a steep line's rows, a dot's top and bottom) are
-// drawn two to a group (`blend_pair`), in the order they come; the pixels are those of
-// one span at a time, since each lane is shaded at its own pixel centre and the two spans' pixels
-// are apart.
+// With eight lanes, spans of at most four pixels (a long steep line's rows, a large disc's top and
+// bottom rows) are drawn two to a group (`blend_pair`), in the order they come; the pixels are
+// those of one span at a time, since each lane is shaded at its own pixel centre and the two
+// spans' pixels are apart. A mark at most a group wide skips the columns altogether (below).
 template <typename F, typename MakeColumns, typename Shade>
 void blend_lanes(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame,
                  const MakeColumns& make_columns, const Shade& shade) {
