@@ -459,7 +459,7 @@ void blend_lanes(const SoftwarePrimitive& primitive, int first_row, int last_row
   const std::size_t stride = frame.stride();
   ThinSpan waiting;
   bool is_waiting = false;
-  const auto blend_alone = [&](const ThinSpan& span) {
+  const auto blend_alone = [&](const ThinSpan& span) __attribute__((always_inline)) {
     blend_span<F>(span.row_pixels, span.first, span.last, frame.width,
                   [&](int column) { return shade(F::ramp(static_cast<float>(column) + 0.5f), F(span.y)); });
   };
