@@ -32,6 +32,24 @@ struct Float8 {
     const __m256 below = _mm256_cmp_ps(indices(), _mm256_set1_ps(static_cast<float>(count)), _CMP_LT_OQ);
     return {_mm256_and_ps(below, _mm256_set1_ps(1.0f))};
   }
+  /// Two runs of four: lanes `low`, `low` + 1, `low` + 2, `low` + 3, then `high` ... `high` + 3: the
+  /// columns of two spans of up to four pixels shaded as one group (each lane as `ramp` gives it).
+  static Float8 ramp_halves(float low, float high) {
+    return {_mm256_add_ps(_mm256_setr_ps(low, low, low, low, high, high, high, high), half_indices())};
+  }
+  /// `low` in lanes 0..3, `high` in lanes 4..7.
+  static Float8 halves(float low, float high) {
+    return {_mm256_setr_ps(low, low, low, low, high, high, high, high)};
+  }
+  /// 1 in the first `low_count` lanes (0..4) of lanes 0..3 and the first `high_count` of lanes
+  /// 4..7, 0 in the others.
+  static Float8 first_lanes_halves(int low_count, int high_count) {
+    const __m256 counts = _mm256_setr_ps(static_cast<float>(low_count), static_cast<float>(low_count),
+                                         static_cast<float>(low_count), static_cast<float>(low_count),
+                                         static_cast<float>(high_count), static_cast<float>(high_count),
+                                         static_cast<float>(high_count), static_cast<float>(high_count));
+    return {_mm256_and_ps(_mm256_cmp_ps(half_indices(), counts, _CMP_LT_OQ), _mm256_set1_ps(1.0f))};
+  }
   /// 1 in lane i when bit `min(max(base[i] + offset, 0), 255)` of the 256 bits `words` (bit j is
   /// bit j % 32 of word j / 32) is set, else 0.
   static Float8 bits(const std::uint32_t* words, const std::int32_t* base, std::int32_t offset) {
@@ -48,6 +66,7 @@ struct Float8 {
 
  private:
   static __m256 indices() { return _mm256_set_ps(7.0f, 6.0f, 5.0f, 4.0f, 3.0f, 2.0f, 1.0f, 0.0f); }
+  static __m256 half_indices() { return _mm256_setr_ps(0.0f, 1.0f, 2.0f, 3.0f, 0.0f, 1.0f, 2.0f, 3.0f); }
 };
 
 /// Lane-wise sum.
@@ -80,8 +99,15 @@ struct Pixels8 {
   Float8 b;       ///< blue, 0..255, integral
 
   /// Eight RGBA pixels from `at` (32 bytes).
-  static Pixels8 load(const std::uint8_t* at) {
-    const __m256i bytes = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(at));
+  static Pixels8 load(const std::uint8_t* at) { return of_bytes(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(at))); }
+
+  /// Four RGBA pixels from `low` (16 bytes) in lanes 0..3 and four from `high` in lanes 4..7.
+  static Pixels8 load_halves(const std::uint8_t* low, const std::uint8_t* high) {
+    return of_bytes(_mm256_loadu2_m128i(reinterpret_cast<const __m128i*>(high), reinterpret_cast<const __m128i*>(low)));
+  }
+
+  /// Eight RGBA pixels of `bytes` (pixel i in lane i).
+  static Pixels8 of_bytes(__m256i bytes) {
     const __m256i low = _mm256_set1_epi32(0xFF);
     return Pixels8{bytes, _mm256_cvtepi32_ps(_mm256_and_si256(bytes, low)),
                    _mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(bytes, 8), low)),
@@ -93,13 +119,26 @@ struct Pixels8 {
   /// of a float does, and alpha as it was; a pixel whose lane of `alpha` is not above 0 (or NaN)
   /// keeps its bytes.
   void store(std::uint8_t* at, Float8 red, Float8 green, Float8 blue, Float8 alpha) const {
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(at), blended(red, green, blue, alpha));
+  }
+
+  /// `store` of lanes 0..3 to `low` (16 bytes) and of lanes 4..7 to `high`: the pixels of
+  /// `load_halves`. The two must not overlap.
+  void store_halves(std::uint8_t* low, std::uint8_t* high, Float8 red, Float8 green, Float8 blue, Float8 alpha) const {
+    _mm256_storeu2_m128i(reinterpret_cast<__m128i*>(high), reinterpret_cast<__m128i*>(low),
+                         blended(red, green, blue, alpha));
+  }
+
+ private:
+  // The bytes `store` writes.
+  __m256i blended(Float8 red, Float8 green, Float8 blue, Float8 alpha) const {
     const __m256i low = _mm256_set1_epi32(0xFF);
     const auto channel = [&](Float8 value) { return _mm256_and_si256(_mm256_cvttps_epi32(value.v), low); };
     const __m256i colour = _mm256_or_si256(_mm256_or_si256(channel(red), _mm256_slli_epi32(channel(green), 8)),
                                            _mm256_or_si256(_mm256_slli_epi32(channel(blue), 16),
                                                            _mm256_andnot_si256(_mm256_set1_epi32(0x00FFFFFF), bytes)));
     const __m256i write = _mm256_castps_si256(_mm256_cmp_ps(alpha.v, _mm256_setzero_ps(), _CMP_GT_OQ));
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(at), _mm256_blendv_epi8(bytes, colour, write));
+    return _mm256_blendv_epi8(bytes, colour, write);
   }
 };
 

@@ -27,7 +27,9 @@ struct SoftwarePrimitive {
   int right = -1;                           ///< last column
   int top = -1;                             ///< last row from the bottom
   /// Disc, box and arrow kinds: the rectangle of the primitive's own frame (`ShapeVertex::frame`)
-  /// outside which its coverage is 0, so rows are scanned only where it lies.
+  /// outside which its coverage is 0, so rows are scanned only where it lies. It must hold every
+  /// pixel of positive coverage: a mark at most a group of lanes wide is drawn over its whole
+  /// bounds, and the pixels outside this rectangle keep their bytes only because they get none.
   vec2 frame_lower = vec2(-1.0e30f);
   vec2 frame_upper = vec2(1.0e30f);  ///< see `frame_lower`
 };

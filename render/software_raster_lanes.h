@@ -339,19 +339,76 @@ void blend(const SoftwarePrimitive& primitive, int first_row, int last_row, Fram
   }
 }
 
+// A colour channel of premultiplied `value` over the pixel's `byte` with `keep` = 1 - alpha, as
+// `blend_pixel` computes it before the conversion: (value + byte / 255 keep), at most 1, times
+// 255, plus a half (truncated on store: rounded half up).
+template <typename F>
+inline __attribute__((always_inline)) F blended_channel(F value, F byte, F keep) {
+  return min(value + byte / F(255.0f) * keep, F(1.0f)) * F(255.0f) + F(0.5f);
+}
+
 // Blends `source` (the premultiplied colours of F::width pixels) over the opaque pixels at
-// `target`, as `blend` does one pixel at a time: (source + byte / 255 (1 - alpha)), at most 1,
-// times 255, rounded half up; alpha stays; pixels with nothing over them (`alpha` not above 0)
-// keep their bytes, and a group of such pixels (an arrow's frame beside its shaft) is not read
-// at all. Always inlined: a call passes `source` through memory (7 % more instructions in the
-// layers).
+// `target`, as `blend` does one pixel at a time (`blended_channel`); alpha stays; pixels with
+// nothing over them (`alpha` not above 0) keep their bytes, and a group of such pixels (an
+// arrow's frame beside its shaft) is not read at all. Always inlined: a call passes `source`
+// through memory (7 % more instructions in the layers).
 template <typename F>
 inline __attribute__((always_inline)) void blend_group(std::uint8_t* target, const Premultiplied<F>& source, F alpha) {
   if (!any_positive(alpha)) return;
   const typename F::Pixels old = F::Pixels::load(target);
   const F keep = F(1.0f) - source.a;
-  const auto channel = [&](F value, F byte) { return min(value + byte / F(255.0f) * keep, F(1.0f)) * F(255.0f) + F(0.5f); };
-  old.store(target, channel(source.r, old.r), channel(source.g, old.g), channel(source.b, old.b), alpha);
+  old.store(target, blended_channel(source.r, old.r, keep), blended_channel(source.g, old.g, keep),
+            blended_channel(source.b, old.b, keep), alpha);
+}
+
+// `blend_group` of four pixels at `low` (lanes 0..3) and four at `high` (lanes 4..7), which must
+// not overlap; eight lanes only.
+template <typename F>
+inline __attribute__((always_inline)) void blend_group_halves(std::uint8_t* low, std::uint8_t* high,
+                                                              const Premultiplied<F>& source, F alpha) {
+  if constexpr (F::width == 8) {
+    if (!any_positive(alpha)) return;
+    const typename F::Pixels old = F::Pixels::load_halves(low, high);
+    const F keep = F(1.0f) - source.a;
+    old.store_halves(low, high, blended_channel(source.r, old.r, keep), blended_channel(source.g, old.g, keep),
+                     blended_channel(source.b, old.b, keep), alpha);
+  }
+}
+
+// A span of at most four pixels of a row, waiting to share a group of eight lanes with another.
+struct ThinSpan {
+  std::uint8_t* row_pixels = nullptr;  // its row of the frame
+  int first = 0;                       // its columns: [first, last]
+  int last = -1;
+  float y = 0.0f;                      // the row's pixel centre
+};
+
+// Whether the pixels [first, last] of a row of a frame `width` pixels wide are a `ThinSpan` that
+// shares a group (only with eight lanes): at most four, and the four from `first` inside the row.
+template <typename F>
+bool is_thin(int first, int last, int width) {
+  return F::width == 8 && last - first < 4 && first + 4 <= width;
+}
+
+// Whether the thin spans `low` and `high` can be drawn as one group: four pixels from each first
+// column, which must not overlap (they may be of one row).
+inline bool may_pair(const ThinSpan& low, const ThinSpan& high) {
+  return low.row_pixels != high.row_pixels || low.first + 4 <= high.first || high.first + 4 <= low.first;
+}
+
+// Blends `shade(x, y)` over the pixels of two thin spans at once, `low` in lanes 0..3 and `high`
+// in lanes 4..7 (each lane with its own pixel centre, so each pixel gets the bytes `blend_span`
+// gives it); eight lanes only.
+template <typename F, typename Shade>
+inline __attribute__((always_inline)) void blend_pair(const ThinSpan& low, const ThinSpan& high, const Shade& shade) {
+  if constexpr (F::width == 8) {
+    const Premultiplied<F> source = shade(F::ramp_halves(static_cast<float>(low.first) + 0.5f,
+                                                         static_cast<float>(high.first) + 0.5f),
+                                          F::halves(low.y, high.y));
+    blend_group_halves(low.row_pixels + static_cast<std::size_t>(low.first) * 4,
+                       high.row_pixels + static_cast<std::size_t>(high.first) * 4, source,
+                       source.a * F::first_lanes_halves(low.last - low.first + 1, high.last - high.first + 1));
+  }
 }
 
 // Blends `source` (the premultiplied colours of F::width pixels) over the fewer than F::width
@@ -390,39 +447,84 @@ inline __attribute__((always_inline)) void blend_span(std::uint8_t* row_pixels, 
 
 // Blends `shade(x, y)` (F::width premultiplied colours at the window pixel centres x, the
 // centres of neighbouring pixels of the row at y) over the pixels of `primitive` in window rows
-// [first_row, last_row], in each row those `columns(y)` gives: the same bytes as `blend` with the
-// same formulas one pixel at a time.
-template <typename F, typename Columns, typename Shade>
-void blend_lanes(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame, const Columns& columns,
-                 const Shade& shade) {
+// [first_row, last_row], in each row those `columns(y)` gives, `columns = make_columns()` (made
+// only when needed): the same bytes as `blend` with the same formulas one pixel at a time.
+// With eight lanes, spans of at most four pixels (a long steep line's rows, a large disc's top and
+// bottom rows) are drawn two to a group (`blend_pair`), in the order they come; the pixels are
+// those of one span at a time, since each lane is shaded at its own pixel centre and the two
+// spans' pixels are apart. A mark at most a group wide skips the columns altogether (below).
+template <typename F, typename MakeColumns, typename Shade>
+void blend_lanes(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame,
+                 const MakeColumns& make_columns, const Shade& shade) {
   const std::size_t stride = frame.stride();
+  ThinSpan waiting;
+  bool is_waiting = false;
+  const auto blend_alone = [&](const ThinSpan& span) __attribute__((always_inline)) {
+    blend_span<F>(span.row_pixels, span.first, span.last, frame.width,
+                  [&](int column) { return shade(F::ramp(static_cast<float>(column) + 0.5f), F(span.y)); });
+  };
+  if (primitive.right - primitive.left < F::width) {
+    // A mark at most a group wide (a dot, a short or steep line, a bar): every row of its bounds
+    // is one group (two rows to a group when it is at most four pixels wide), without finding
+    // the row's columns. The pixels beyond the columns have coverage 0 (the columns hold every
+    // pixel of positive coverage, with a margin), so they keep their bytes, as unvisited.
+    const int bottom = std::max(primitive.bottom, first_row);
+    const int top = std::min(primitive.top, last_row);
+    const auto row_span = [&](int row) {
+      return ThinSpan{frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride, primitive.left,
+                      primitive.right, static_cast<float>(row) + 0.5f};
+    };
+    int row = bottom;
+    if (is_thin<F>(primitive.left, primitive.right, frame.width)) {
+      for (; row < top; row += 2) blend_pair<F>(row_span(row), row_span(row + 1), shade);
+    }
+    for (; row <= top; ++row) blend_alone(row_span(row));
+    return;
+  }
+  const auto columns = make_columns();
   for (int row = std::max(primitive.bottom, first_row); row <= std::min(primitive.top, last_row); ++row) {
     const float y = static_cast<float>(row) + 0.5f;
     const RowSpans spans = columns(y);
     std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
     for (int span = 0; span < spans.count; ++span) {
-      blend_span<F>(row_pixels, spans.first[span], spans.last[span], frame.width,
-                    [&](int column) { return shade(F::ramp(static_cast<float>(column) + 0.5f), F(y)); });
+      const ThinSpan current{row_pixels, spans.first[span], spans.last[span], y};
+      if (!is_thin<F>(current.first, current.last, frame.width)) {
+        blend_alone(current);
+        continue;
+      }
+      if (!is_waiting) {
+        waiting = current;
+        is_waiting = true;
+        continue;
+      }
+      if (may_pair(waiting, current)) {
+        blend_pair<F>(waiting, current, shade);
+        is_waiting = false;
+      } else {
+        blend_alone(waiting);
+        waiting = current;
+      }
     }
   }
+  if (is_waiting) blend_alone(waiting);
 }
 
 // Blends `shade(px, py)` of F::width pixel centres p in the shape's frame (origin and unit x
 // axis), F::width at a time (`blend_lanes`); for the axis-aligned frame (axis (1, 0): discs,
 // bounding boxes, panels) p is exactly (x - ox, y - oy), computed without the rotation.
-template <typename F, typename Columns, typename Shade>
+template <typename F, typename MakeColumns, typename Shade>
 void blend_in_frame(const SoftwarePrimitive& primitive, int first_row, int last_row, Frame& frame,
-                    const Columns& columns, const ShapeVertex& shape, const Shade& shade) {
+                    const MakeColumns& make_columns, const ShapeVertex& shape, const Shade& shade) {
   const F origin_x(shape.frame[0]);
   const F origin_y(shape.frame[1]);
   if (shape.frame[2] == 1.0f && shape.frame[3] == 0.0f) {
-    blend_lanes<F>(primitive, first_row, last_row, frame, columns,
+    blend_lanes<F>(primitive, first_row, last_row, frame, make_columns,
                    [=](F x, F y) { return shade(x - origin_x, y - origin_y); });
     return;
   }
   const F axis_x(shape.frame[2]);
   const F axis_y(shape.frame[3]);
-  blend_lanes<F>(primitive, first_row, last_row, frame, columns, [=](F x, F y) {
+  blend_lanes<F>(primitive, first_row, last_row, frame, make_columns, [=](F x, F y) {
     const F dx = x - origin_x;
     const F dy = y - origin_y;
     return shade(dx * axis_x + dy * axis_y, axis_x * dy - axis_y * dx);
@@ -469,6 +571,29 @@ void draw_axis_box(const SoftwarePrimitive& primitive, const ShapeVertex& shape,
   for (int set = 0; set < 2; ++set) {
     const RowSpans* const spans = sets[set];
     if (spans == nullptr) continue;
+    if constexpr (F::width == 8) {
+      // An outline's sides beside the hole, each at most four pixels wide: both in one group.
+      if (spans->count == 2 && is_thin<F>(spans->first[0], spans->last[0], frame.width) &&
+          is_thin<F>(spans->first[1], spans->last[1], frame.width) && spans->first[0] + 4 <= spans->first[1]) {
+        const F px = F::ramp_halves(static_cast<float>(spans->first[0]) + 0.5f,
+                                    static_cast<float>(spans->first[1]) + 0.5f) -
+                     origin_x;
+        const F outer_column = saturate(F(outer_x) - abs(px));
+        const F inner_column = saturate(F(inner_x) - abs(px));
+        const F lanes = F::first_lanes_halves(spans->last[0] - spans->first[0] + 1, spans->last[1] - spans->first[1] + 1);
+        for (int k = 0; k < set_row_count[set]; ++k) {
+          const int row = set_rows[set][k];
+          const int i = row - bottom;
+          F coverage = outer_column * F(outer_row[i]);
+          if (outline) coverage = coverage - inner_column * F(inner_row[i]);
+          std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
+          const Premultiplied<F> source = premultiplied(fill, coverage);
+          blend_group_halves(row_pixels + static_cast<std::size_t>(spans->first[0]) * 4,
+                             row_pixels + static_cast<std::size_t>(spans->first[1]) * 4, source, source.a * lanes);
+        }
+        continue;
+      }
+    }
     for (int span = 0; span < spans->count; ++span) {
       for (int column = spans->first[span]; column <= spans->last[span]; column += F::width) {
         const F px = F::ramp(static_cast<float>(column) + 0.5f) - origin_x;
@@ -521,8 +646,11 @@ void draw_text_run(const SoftwarePrimitive& primitive, const TextVertex& run, in
       // The pixel centre below the run's top (y down), the font row under it, and the row's
       // factor of the coverage.
       const float qy = run.run[1] - (static_cast<float>(row) + 0.5f);
+      const float row_coverage = saturate(std::min(qy, run.run[3] - qy) + 0.5f);
+      // The run's margin rows (half a pixel beyond its top and bottom): coverage 0 everywhere.
+      if (!(row_coverage > 0.0f)) continue;
       const int font_row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
-      const F inside_row(saturate(std::min(qy, run.run[3] - qy) + 0.5f));
+      const F inside_row(row_coverage);
       // GL's rows count from the bottom; the frame's from the top.
       std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
       for (int column = first_column; column <= last_column; column += F::width) {
@@ -582,8 +710,25 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
       const Rgba line = normalised(shape.line);
-      const auto columns = [&](float y) { return disc_columns(primitive, shape, y); };
-      blend_in_frame<F>(primitive, first_row, last_row, frame, columns, shape, [=](F px, F py) {
+      const auto make_columns = [&] { return [&](float y) { return disc_columns(primitive, shape, y); }; };
+      // A dot (no ring) or a ring alone: with the other colour's alpha 0, `fill_under_line` is
+      // `premultiplied` of the one colour, bit for bit (x * 1, x + 0 and 0 * y are exact for the
+      // finite, non-negative values here), so the other's coverage is not computed.
+      if (line.a == 0.0f) {
+        blend_in_frame<F>(primitive, first_row, last_row, frame, make_columns, shape, [=](F px, F py) {
+          const F r = sqrt(px * px + py * py);
+          return premultiplied(fill, saturate(F(shape.disc[0] + 0.5f) - r));
+        });
+        return;
+      }
+      if (fill.a == 0.0f) {
+        blend_in_frame<F>(primitive, first_row, last_row, frame, make_columns, shape, [=](F px, F py) {
+          const F r = sqrt(px * px + py * py);
+          return premultiplied(line, saturate(F(shape.disc[1] + 0.5f) - r) * saturate(r - shape.disc[2] + 0.5f));
+        });
+        return;
+      }
+      blend_in_frame<F>(primitive, first_row, last_row, frame, make_columns, shape, [=](F px, F py) {
         const F r = sqrt(px * px + py * py);
         const F disc = saturate(F(shape.disc[0] + 0.5f) - r);
         const F ring = saturate(F(shape.disc[1] + 0.5f) - r) * saturate(r - shape.disc[2] + 0.5f);
@@ -598,8 +743,8 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
         return;
       }
       const Rgba fill = normalised(shape.fill);
-      blend_in_frame<F>(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, shape.box[3] > 0.0f),
-                        shape, [=](F px, F py) {
+      blend_in_frame<F>(primitive, first_row, last_row, frame,
+                        [&] { return FrameColumns(primitive, shape, shape.box[3] > 0.0f); }, shape, [=](F px, F py) {
                           F coverage = rectangle(px, py, shape.box[0], shape.box[1]);
                           if (shape.box[3] > 0.0f) {
                             coverage = coverage -
@@ -612,8 +757,8 @@ void draw_primitive(const SoftwareBatch& batch, const SoftwarePrimitive& primiti
     case PrimitiveKind::arrow: {
       const ShapeVertex shape = batch.shapes[primitive.index];
       const Rgba fill = normalised(shape.fill);
-      blend_in_frame<F>(primitive, first_row, last_row, frame, FrameColumns(primitive, shape, false), shape,
-                        [=](F px, F py) {
+      blend_in_frame<F>(primitive, first_row, last_row, frame, [&] { return FrameColumns(primitive, shape, false); },
+                        shape, [=](F px, F py) {
                           const F side = (px - shape.head[1]) * shape.head[2] + abs(py) * shape.head[3];
                           const F head = saturate(F(0.5f) - max(max(shape.head[0] - px, px - shape.head[1]), side));
                           return premultiplied(fill, max(rectangle(px, py, shape.box[0], shape.box[1]), head));

@@ -113,7 +113,11 @@ SoftwareBatch every_kind() {
         shape.head[1] = size + 3.0f;
         shape.head[2] = 0.6f;
         shape.head[3] = 0.8f;
-        add_shape(batch, PrimitiveKind::arrow, shape, vec2(-size, -4.0f), vec2(size + 3.0f, 4.0f));
+        // The frame holds every pixel of positive coverage, as `PrimitiveRenderer::draw_arrow`'s
+        // does (the rasteriser relies on it): the head from half a pixel before its base, and as
+        // far out as its mitred edge reaches (7 * 0.6 / 0.8 + 0.5 (1 + 0.6) / 0.8 - 0.5 = 5.75).
+        add_shape(batch, PrimitiveKind::arrow, shape, vec2(std::min(-size, shape.head[0]), -5.75f),
+                  vec2(size + 3.0f, 5.75f));
         break;
       }
       case 4: {  // a text run
@@ -173,6 +177,70 @@ SoftwareBatch every_kind() {
   return batch;
 }
 
+// Hundreds of marks a few pixels across, as the overlays draw them on a crowded scene: dots
+// (fill alone), rings alone, dots with a ring, lines and bars at every angle, short arrows, small
+// bounding-box outlines; placed anywhere, across band boundaries and the frame's edges. Their
+// rows are one group (or two to a group), their spans a few pixels.
+SoftwareBatch small_marks() {
+  SoftwareBatch batch;
+  Sequence sequence;
+  for (int i = 0; i < 900; ++i) {
+    const float centre_x = sequence.between(-4.0f, kFrameWidth + 4.0f);
+    const float centre_y = sequence.between(-4.0f, kFrameHeight + 4.0f);
+    const float angle = i % 5 == 0 ? 1.5707963f * static_cast<float>(i % 4) : sequence.between(0.0f, 6.2831853f);
+    ShapeVertex shape;
+    shape.frame[0] = centre_x;
+    shape.frame[1] = centre_y;
+    colour(shape.fill, sequence);
+    const float size = sequence.between(0.5f, 7.0f);
+    switch (i % 6) {
+      case 0:
+      case 1: {  // a dot, a ring alone, or both
+        const int variant = i % 3;
+        shape.disc[0] = variant == 1 ? -1.0e6f : size * 0.5f;
+        if (variant != 0) {
+          colour(shape.line, sequence);
+          shape.disc[1] = size * 0.5f + 0.75f;
+          shape.disc[2] = size * 0.5f - 0.75f;
+        }
+        if (variant == 1) shape.fill[3] = 0;
+        const float reach = std::max(shape.disc[0], shape.disc[1]);
+        add_shape(batch, PrimitiveKind::disc, shape, vec2(-reach), vec2(reach));
+        break;
+      }
+      case 2: {  // a line (0.75 px half width) or a bar (1 to 2 px), rotated
+        shape.frame[2] = std::cos(angle);
+        shape.frame[3] = std::sin(angle);
+        shape.box[0] = size;
+        shape.box[1] = i % 4 == 0 ? 0.75f : sequence.between(1.0f, 2.0f);
+        add_shape(batch, PrimitiveKind::box, shape, -vec2(shape.box[0], shape.box[1]), vec2(shape.box[0], shape.box[1]));
+        break;
+      }
+      case 3: {  // a short arrow with a head 7 px long and 6 wide (less when short)
+        shape.frame[2] = std::cos(angle);
+        shape.frame[3] = std::sin(angle);
+        const float head = std::min(7.0f, size);
+        shape.box[0] = size * 0.5f;
+        shape.box[1] = 0.75f;
+        shape.head[0] = size * 0.5f;
+        shape.head[1] = size * 0.5f + head;
+        shape.head[2] = 0.394f;
+        shape.head[3] = 0.919f;
+        add_shape(batch, PrimitiveKind::arrow, shape, vec2(-shape.box[0], -3.5f), vec2(shape.head[1], 3.5f));
+        break;
+      }
+      default: {  // a bounding-box outline one line (1.5 px) wide
+        shape.box[0] = size + 0.75f;
+        shape.box[1] = sequence.between(0.5f, 7.0f) + 0.75f;
+        shape.box[3] = 1.5f;
+        add_shape(batch, PrimitiveKind::box, shape, -vec2(shape.box[0], shape.box[1]), vec2(shape.box[0], shape.box[1]));
+        break;
+      }
+    }
+  }
+  return batch;
+}
+
 // An opaque frame with a different colour at every pixel.
 Frame background() {
   Frame frame;
@@ -186,8 +254,8 @@ Frame background() {
   return frame;
 }
 
-Frame drawn(const SoftwareBatch& batch, RasterLanes lanes) {
-  SoftwareRaster raster(2, lanes);
+Frame drawn(const SoftwareBatch& batch, RasterLanes lanes, int threads = 2) {
+  SoftwareRaster raster(threads, lanes);
   EXPECT_EQ(raster.lanes(), lanes);
   Frame frame = background();
   raster.draw(batch, frame);
@@ -213,4 +281,21 @@ TEST(RenderSoftwareLanes, EightLanesGiveTheBytesOfFour) {
   }
   EXPECT_EQ(differing, 0u) << "first differing byte " << first << " (pixel " << first / 4 % kFrameWidth << ", "
                            << first / 4 / kFrameWidth << " from the top)";
+}
+
+// Marks a few pixels across take their own ways through the rasteriser (a group per row of their
+// bounds, two rows or two spans to a group with eight lanes): the frame is the same at either
+// width and any thread count, and the same as the rasteriser gave before those ways (24f302d,
+// which found each row's columns and drew each span alone).
+TEST(RenderSoftwareLanes, SmallMarksGiveTheSameBytesAtAnyWidthAndThreadCount) {
+  const SoftwareBatch batch = small_marks();
+  ASSERT_GT(batch.primitives.size(), 800u);
+  const Frame four = drawn(batch, RasterLanes::four, 1);
+  EXPECT_NE(four.hash(), background().hash());
+  EXPECT_EQ(four.hash(), drawn(batch, RasterLanes::four, 3).hash());
+  if (SoftwareRaster::eight_lanes_available()) {
+    EXPECT_EQ(four.hash(), drawn(batch, RasterLanes::eight, 1).hash());
+    EXPECT_EQ(four.hash(), drawn(batch, RasterLanes::eight, 3).hash());
+  }
+  EXPECT_EQ(four.hash(), 0xbdfc7a1d98347930ull) << std::hex << "hash 0x" << four.hash();
 }
