@@ -58,8 +58,6 @@ void SoftStepSolver::solve_island_batches(SolverStages& stages, const SolverCont
   // contacts) only integrates.
   const float h = context.substep;
   const IslandBatches& islands = wide.islands();
-  std::vector<Contact>& contacts = stages.solver_contacts();
-  const std::vector<Body>& bodies = stages.solver_bodies();
   const std::size_t contact_batches = islands.batch_count();
   SolverBody* solver_states = states.states();
   parallel_for(stages.workers(), contact_batches + 1, 1, [&](std::size_t begin, std::size_t end) {
@@ -67,7 +65,6 @@ void SoftStepSolver::solve_island_batches(SolverStages& stages, const SolverCont
       const std::uint32_t* slots = islands.bodies_of(batch);
       const std::size_t slot_count = islands.body_count(batch);
       const bool has_contacts = batch < contact_batches;
-      if (has_contacts) wide.pack_batch(batch, contacts, bodies, context);
       for (int substep = 0; substep < context.substeps; ++substep) {
         states.integrate_velocities(h, slots, slot_count);
         if (has_contacts) {

@@ -334,70 +334,30 @@ void WideContactSolver::place_in_batches(std::size_t contact_count) {
 }
 
 template <int Lanes>
-void WideContactSolver::clear_unused_lanes_of(ColourBlocks<Lanes>& blocks, std::size_t block,
-                                              bool overflow) {
-  if (overflow) {  // one contact a block, in lane 0
-    for (int lane = 1; lane < Lanes; ++lane) clear_lane(blocks.blocks[block], blocks.solves[block], lane);
-    return;
-  }
-  // Only a batch's last block can be partly used; lane 0 of every block is.
-  const std::int32_t* contact_index = blocks.contact_index.data() + block * Lanes;
-  if (contact_index[Lanes - 1] >= 0) return;
-  for (int lane = 1; lane < Lanes; ++lane) {
-    if (contact_index[lane] >= 0) continue;
-    clear_lane(blocks.blocks[block], blocks.solves[block], lane);
-    // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
-    // other block of the colour touches, so workers sharing the colour never read a body
-    // another one is writing.
-    blocks.blocks[block].body_a[lane] = blocks.blocks[block].body_a[0];
-    blocks.blocks[block].body_b[lane] = blocks.blocks[block].body_b[0];
-  }
-}
-
-template <int Lanes>
 void WideContactSolver::clear_unused_lanes() {
   Colours<Lanes>& packed = colours<Lanes>();
   for (int colour = 0; colour < packed_colours_; ++colour) {
     ColourBlocks<Lanes>& blocks = packed[static_cast<std::size_t>(colour)];
-    // Packed as visited, a colour is one batch: only its last block can be partly used.
+    // Packed as visited, a colour is one batch: only its last block can be partly used;
+    // else only a batch's last block can be. Lane 0 of every block is used.
     const std::size_t first = deferred_ || blocks.count == 0 ? 0 : blocks.count - 1;
-    for (std::size_t block = first; block < blocks.count; ++block) clear_unused_lanes_of(blocks, block, false);
+    for (std::size_t block = first; block < blocks.count; ++block) {
+      const std::int32_t* contact_index = blocks.contact_index.data() + block * Lanes;
+      if (contact_index[Lanes - 1] >= 0) continue;
+      for (int lane = 1; lane < Lanes; ++lane) {
+        if (contact_index[lane] >= 0) continue;
+        clear_lane(blocks.blocks[block], blocks.solves[block], lane);
+        // Lane 0's bodies, not slot 0's: the unused lane reads (never writes) bodies that no
+        // other block of the colour touches, so workers sharing the colour never read a body
+        // another one is writing.
+        blocks.blocks[block].body_a[lane] = blocks.blocks[block].body_a[0];
+        blocks.blocks[block].body_b[lane] = blocks.blocks[block].body_b[0];
+      }
+    }
   }
   ColourBlocks<Lanes>& overflow = packed[ContactColouring::max_colours];
-  for (std::size_t block = 0; block < overflow.count; ++block) clear_unused_lanes_of(overflow, block, true);
-}
-
-template <int Lanes>
-void WideContactSolver::pack_batch_blocks(std::size_t batch, std::vector<Contact>& contacts,
-                                          const std::vector<Body>& bodies,
-                                          const SolverContext& context) {
-  Colours<Lanes>& packed = colours<Lanes>();
-  auto pack_colour = [&](int colour) {
-    ColourBlocks<Lanes>& blocks = packed[static_cast<std::size_t>(colour)];
-    const std::uint32_t* first = batch_blocks_.data() + static_cast<std::size_t>(colour) * (placed_batches_ + 1);
-    for (std::size_t block = first[batch]; block < first[batch + 1]; ++block) {
-      for (int lane = 0; lane < Lanes; ++lane) {
-        const std::int32_t index = blocks.contact_index[block * Lanes + static_cast<std::size_t>(lane)];
-        if (index < 0) continue;
-        Contact& contact = contacts[static_cast<std::size_t>(index)];
-        if (prepares_in_batches_) {
-          prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
-        }
-        pack_contact(contact, blocks.blocks[block], blocks.solves[block], blocks.sticks[block], lane);
-      }
-      clear_unused_lanes_of(blocks, block, colour == ContactColouring::max_colours);
-    }
-  };
-  for (int colour = 0; colour < packed_colours_; ++colour) pack_colour(colour);
-  pack_colour(ContactColouring::max_colours);
-}
-
-void WideContactSolver::pack_batch(std::size_t batch, std::vector<Contact>& contacts,
-                                   const std::vector<Body>& bodies, const SolverContext& context) {
-  if (lanes_ == 8) {
-    pack_batch_blocks<8>(batch, contacts, bodies, context);
-  } else {
-    pack_batch_blocks<4>(batch, contacts, bodies, context);
+  for (std::size_t block = 0; block < overflow.count; ++block) {
+    for (int lane = 1; lane < Lanes; ++lane) clear_lane(overflow.blocks[block], overflow.solves[block], lane);
   }
 }
 
@@ -462,24 +422,6 @@ void WideContactSolver::visit(std::size_t index, Contact& contact) {
 template <int Lanes>
 void WideContactSolver::finish_packing(std::vector<Contact>& contacts) {
   if (deferred_) place_in_batches<Lanes>(contacts.size());
-  prepares_in_batches_ = batched_ && pool_ != nullptr;
-  if (batched_) {
-    // Each batch's contacts are packed (with a pool, prepared first) by the batch's own job
-    // (`pack_batch`), just before its sub-steps read them; here only the contacts no batch
-    // solves are prepared.
-    if (pool_ != nullptr) {
-      const std::vector<Body>& bodies = *bodies_;
-      const SolverContext& context = *context_;
-      parallel_for(pool_, contacts.size(), 256, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-          Contact& contact = contacts[i];
-          if (lane_of_contact_[i] >= 0 || !contact.enabled) continue;
-          prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
-        }
-      });
-    }
-    return;
-  }
   if (deferred_ && pool_ == nullptr) {
     // Prepared as they were visited: packed here, in the list's order.
     Colours<Lanes>& packed = colours<Lanes>();

@@ -90,7 +90,8 @@ class WideContactSolver final : public ContactVisitor {
   /// finding the batches and packing after the narrow phase (~4 % more instructions); measured
   /// on a 2 MB-L2 Xeon against pass by pass: 400 pyramids (22 batches, 9 MB of blocks) 0.98x
   /// the time at 8 lanes, 1.07x at 4 lanes and 1.02-1.09x with two workers (whose colours
-  /// share out as well as the batches do); 1820 pyramids (100 batches) 0.92x, 1.01x and 0.98-1.05x.
+  /// share out as well as the batches do); 1820 pyramids (122 batches) 0.91x, 0.99x and
+  /// 0.98-1.05x (medians of 3-4 alternated pairs).
   static constexpr std::size_t default_min_island_batches = 32;
   /// See `default_min_island_batches`.
   std::size_t min_island_batches() const { return min_island_batches_; }
@@ -99,12 +100,6 @@ class WideContactSolver final : public ContactVisitor {
   void set_min_island_batches(std::size_t batches) { min_island_batches_ = batches; }
   /// The step's island batches (valid when `batched`).
   const IslandBatches& islands() const { return islands_; }
-  /// Packs the contacts of island batch `batch` into its blocks (when `batched`; with a pool,
-  /// prepares them first), on this thread: the batch's job calls it before its sub-steps, so
-  /// the blocks are written where they are about to be read. `bodies` and `context` are the
-  /// step's, as `begin_step` had them.
-  void pack_batch(std::size_t batch, std::vector<Contact>& contacts,
-                  const std::vector<Body>& bodies, const SolverContext& context);
   /// `warm_start` for the blocks of island batch `batch` only (when `batched`).
   void warm_start_batch(std::size_t batch, SolverBody* bodies);
   /// `solve` for the blocks of island batch `batch` only (when `batched`), on this thread.
@@ -166,14 +161,6 @@ class WideContactSolver final : public ContactVisitor {
   /// and every overflow block's but the first.
   template <int Lanes>
   void clear_unused_lanes();
-  /// `clear_unused_lanes` for block `block` of `blocks` (the overflow's when `overflow`), once
-  /// its used lanes are packed.
-  template <int Lanes>
-  void clear_unused_lanes_of(ColourBlocks<Lanes>& blocks, std::size_t block, bool overflow);
-  /// `pack_batch` at `Lanes` lanes.
-  template <int Lanes>
-  void pack_batch_blocks(std::size_t batch, std::vector<Contact>& contacts,
-                         const std::vector<Body>& bodies, const SolverContext& context);
   /// The blocks of island batch `batch` in colour `colour` (as `batch_blocks_` holds them).
   template <int Lanes>
   ContactBlockArrays<Lanes> batch_arrays(int colour, std::size_t batch);
@@ -200,7 +187,6 @@ class WideContactSolver final : public ContactVisitor {
   bool finds_islands_ = false;     // this step records its contacts' islands
   bool deferred_ = false;          // lanes given in finish_step, not as each contact is visited
   bool batched_ = false;           // see batched()
-  bool prepares_in_batches_ = false;  // pack_batch prepares its contacts (a pool's step)
   bool last_step_unbatchable_ = false;  // the last step had a bounce or shock stage
   std::size_t last_contact_count_ = 0;  // contacts of the last step
   std::size_t last_batch_count_ = 0;    // island batches of the last step (0: not looked for)
