@@ -42,9 +42,11 @@ class WideContactSolver final : public ContactVisitor {
   /// batch's blocks are kept together in every colour (`batched`).
   void begin_step(const std::vector<Body>& bodies, const SolverContext& context, int lanes,
                   WorkerPool* pool = nullptr, bool allow_batches = false);
-  /// Prepares the step's next contact (as `prepare_contacts` does, if enabled), colours it and
-  /// packs it into the next lane of its colour's blocks; called for every contact of the list,
-  /// in order, between `begin_step` and `finish_step` (by the narrow phase).
+  /// Prepares the step's next contact (as `prepare_contacts` does, if enabled), colours it,
+  /// records it for the island batches when they are looked for, and packs it into the next
+  /// lane of its colour's blocks unless the lanes are given in `finish_step` (with a pool, or
+  /// when the last step was batched); called for every contact of the list, in order, between
+  /// `begin_step` and `finish_step` (by the narrow phase).
   void visit(std::size_t index, Contact& contact) override;
   /// Ends the packing of the step's `contacts`, all visited (with a pool: prepares and packs
   /// them), and clears the lanes no contact took.
