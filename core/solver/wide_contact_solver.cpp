@@ -551,64 +551,63 @@ void WideContactSolver::for_each_colour_of_batch(std::size_t batch, Pass pass) {
   pass(batch_arrays<Lanes>(ContactColouring::max_colours, batch));
 }
 
-void WideContactSolver::warm_start_batch(std::size_t batch, SolverBody* bodies) {
+template <class Kernel>
+void WideContactSolver::run_pass(WorkerPool* pool, const std::size_t* batch, Kernel kernel) {
 #if defined(__x86_64__)
   if (lanes_ == 8) {
-    for_each_colour_of_batch<8>(batch, [&](const ContactBlockArrays<8>& arrays) {
-      warm_start_contact_blocks_8(arrays.blocks, arrays.count, bodies);
-    });
+    if (batch != nullptr) {
+      for_each_colour_of_batch<8>(*batch, kernel);
+    } else {
+      for_each_colour<8>(pool, kernel);
+    }
     return;
   }
 #endif
-  for_each_colour_of_batch<4>(batch, [&](const ContactBlockArrays<4>& arrays) {
-    warm_start_contact_blocks_4(arrays.blocks, arrays.count, bodies);
-  });
+  if (batch != nullptr) {
+    for_each_colour_of_batch<4>(*batch, kernel);
+  } else {
+    for_each_colour<4>(pool, kernel);
+  }
+}
+
+namespace {
+
+// The kernels of each lane count, chosen by the blocks' type.
+void warm_start_kernel(const ContactBlockArrays<4>& arrays, SolverBody* bodies) {
+  warm_start_contact_blocks_4(arrays.blocks, arrays.count, bodies);
+}
+void solve_kernel(const ContactBlockArrays<4>& arrays, SolverBody* bodies, const WidePassSettings& pass) {
+  solve_contact_blocks_4(arrays, bodies, pass);
+}
+#if defined(__x86_64__)
+void warm_start_kernel(const ContactBlockArrays<8>& arrays, SolverBody* bodies) {
+  warm_start_contact_blocks_8(arrays.blocks, arrays.count, bodies);
+}
+void solve_kernel(const ContactBlockArrays<8>& arrays, SolverBody* bodies, const WidePassSettings& pass) {
+  solve_contact_blocks_8(arrays, bodies, pass);
+}
+#endif
+
+}  // namespace
+
+void WideContactSolver::warm_start_batch(std::size_t batch, SolverBody* bodies) {
+  run_pass(nullptr, &batch, [&](const auto& arrays) { warm_start_kernel(arrays, bodies); });
 }
 
 void WideContactSolver::solve_batch(std::size_t batch, const SolverContext& context,
                                     bool use_bias, SolverBody* bodies) {
   const WidePassSettings pass = pass_settings(context, use_bias);
-#if defined(__x86_64__)
-  if (lanes_ == 8) {
-    for_each_colour_of_batch<8>(batch, [&](const ContactBlockArrays<8>& arrays) {
-      solve_contact_blocks_8(arrays, bodies, pass);
-    });
-    return;
-  }
-#endif
-  for_each_colour_of_batch<4>(batch, [&](const ContactBlockArrays<4>& arrays) {
-    solve_contact_blocks_4(arrays, bodies, pass);
-  });
+  run_pass(nullptr, &batch, [&](const auto& arrays) { solve_kernel(arrays, bodies, pass); });
 }
 
 void WideContactSolver::warm_start(SolverBody* bodies, WorkerPool* pool) {
-#if defined(__x86_64__)
-  if (lanes_ == 8) {
-    for_each_colour<8>(pool, [&](const ContactBlockArrays<8>& arrays) {
-      warm_start_contact_blocks_8(arrays.blocks, arrays.count, bodies);
-    });
-    return;
-  }
-#endif
-  for_each_colour<4>(pool, [&](const ContactBlockArrays<4>& arrays) {
-    warm_start_contact_blocks_4(arrays.blocks, arrays.count, bodies);
-  });
+  run_pass(pool, nullptr, [&](const auto& arrays) { warm_start_kernel(arrays, bodies); });
 }
 
 void WideContactSolver::solve(const SolverContext& context, bool use_bias, SolverBody* bodies,
                               WorkerPool* pool) {
   const WidePassSettings pass = pass_settings(context, use_bias);
-#if defined(__x86_64__)
-  if (lanes_ == 8) {
-    for_each_colour<8>(pool, [&](const ContactBlockArrays<8>& arrays) {
-      solve_contact_blocks_8(arrays, bodies, pass);
-    });
-    return;
-  }
-#endif
-  for_each_colour<4>(pool, [&](const ContactBlockArrays<4>& arrays) {
-    solve_contact_blocks_4(arrays, bodies, pass);
-  });
+  run_pass(pool, nullptr, [&](const auto& arrays) { solve_kernel(arrays, bodies, pass); });
 }
 
 }  // namespace impulse2d

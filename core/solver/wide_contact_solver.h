@@ -180,6 +180,11 @@ class WideContactSolver final : public ContactVisitor {
   /// overflow last, on this thread.
   template <int Lanes, class Pass>
   void for_each_colour_of_batch(std::size_t batch, Pass pass);
+  /// Runs `kernel(arrays)` at this step's lane count over every colour's blocks (shared among
+  /// `pool`'s workers, as `for_each_colour`) or, with a `batch`, over that island batch's only
+  /// (`for_each_colour_of_batch`); `kernel` takes the blocks of either width.
+  template <class Kernel>
+  void run_pass(WorkerPool* pool, const std::size_t* batch, Kernel kernel);
 
   int lanes_ = 4;
   int packed_colours_ = 0;  ///< colours of this step (the overflow not counted)
