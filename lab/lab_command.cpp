@@ -254,6 +254,25 @@ void run_stability(const LabArguments& arguments, const LabPlan& plan, const fs:
   }
 }
 
+/// `interrupted` worded for a user of `command`: nothing was written, `folder` is as it was.
+demos::Interrupted nothing_written(const std::string& command, const std::string& folder,
+                                   const demos::Interrupted& interrupted) {
+  return demos::Interrupted(interrupted.signal_number(),
+                            command + " interrupted by " + demos::signal_name(interrupted.signal_number()) +
+                                ": nothing written, " + folder + " is as it was");
+}
+
+/// Runs `plan_work` (which steps scenes to estimate the work, so a signal may stop it) and
+/// returns its plan; a signal says that nothing was written, as one during the work does.
+template <typename PlanWork>
+auto planned(const std::string& command, const std::string& folder, PlanWork plan_work) {
+  try {
+    return plan_work();
+  } catch (const demos::Interrupted& interrupted) {
+    throw nothing_written(command, folder, interrupted);
+  }
+}
+
 /// Runs `work` writing into `output`'s staging folder and commits it. A signal becomes an
 /// `Interrupted` saying the folder is as it was; another failure names the files in the output
 /// folder's terms.
@@ -264,9 +283,7 @@ void as_one_unit(const std::string& command, const std::string& folder, OutputTr
     work();
     output.commit();
   } catch (const demos::Interrupted& interrupted) {
-    throw demos::Interrupted(interrupted.signal_number(),
-                             command + " interrupted by " + demos::signal_name(interrupted.signal_number()) +
-                                 ": nothing written, " + folder + " is as it was");
+    throw nothing_written(command, folder, interrupted);
   } catch (const demos::UsageError&) {
     throw;
   } catch (const std::exception& error) {
@@ -333,7 +350,7 @@ void plan_lab(const LabArguments& arguments, std::ostream& out) {
 }
 
 void run_lab(const LabArguments& arguments, std::ostream& out) {
-  const LabPlan plan = make_lab_plan(arguments);
+  const LabPlan plan = planned("lab", arguments.out, [&] { return make_lab_plan(arguments); });
   for (const Engine peer : {Engine::Box2d, Engine::Chipmunk}) {
     const std::string note = engine_note(peer);
     if (arguments.peers && arguments.sweep && !note.empty()) {

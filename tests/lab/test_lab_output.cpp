@@ -4,16 +4,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 
 #include "lab/json_number.h"
+#include "lab/lab_command.h"
 #include "lab/lab_output.h"
 #include "lab/option_numbers.h"
 #include "lab/work_budget.h"
+#include "scene/interrupt.h"
 #include "scene/usage_error.h"
 
 namespace {
@@ -144,6 +150,37 @@ TEST_F(LabOutputTest, ACommitReplacesWhatCleanNamesAndMovesEverythingIn) {
   EXPECT_FALSE(fs::exists(out / "charts" / "old.png"));
   EXPECT_EQ(read(out / "notes.txt"), "keep");
   EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 3);  // no staging left
+}
+
+// A signal that arrives while `lab` still plans (it steps each scenario to estimate the work) is
+// worded like one during the work: nothing written, --out as it was. The signal is raised before
+// the run, so the planning is what it stops; a child process runs it, since a received signal
+// cannot be taken back.
+TEST(LabInterrupt, ASignalWhilePlanningSaysNothingWasWritten) {
+  const fs::path out = fs::temp_directory_path() / "impulse2d_lab_interrupted_while_planning";
+  fs::remove_all(out);
+  EXPECT_EXIT(
+      {
+        demos::install_interrupt_handlers();
+        std::raise(SIGINT);
+        lab::LabArguments arguments;
+        arguments.quick = true;
+        arguments.only = {"pyramid_20"};
+        arguments.stability = false;
+        arguments.quiet = true;
+        arguments.out = out.string();
+        std::ostringstream report;
+        try {
+          lab::run_lab(arguments, report);
+        } catch (const demos::Interrupted& interrupted) {
+          std::fprintf(stderr, "%s\n", interrupted.what());
+          std::exit(interrupted.exit_status());
+        }
+        std::exit(0);
+      },
+      ::testing::ExitedWithCode(128 + SIGINT),
+      "^lab interrupted by SIGINT: nothing written, .*impulse2d_lab_interrupted_while_planning is as it was");
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
