@@ -3,6 +3,7 @@
 #include "core/collide.h"
 #include "core/solver/contact_friction_state.h"
 #include "core/solver/contact_recycle.h"
+#include "core/solver/prefetch.h"
 #include "core/collide/speculative_meeting.h"
 
 #include <algorithm>
@@ -100,6 +101,17 @@ namespace {
 // Pairs a worker takes at least at a time.
 constexpr std::size_t min_pairs_per_chunk = 32;
 
+// How many pairs ahead of the one being updated the walks ask the cache for the pair's bodies
+// and old contact (about one old contact per pair): far enough for a miss to the L3 cache to
+// land in time, near enough for what it brings to stay in L1.
+constexpr std::size_t pairs_prefetched_ahead = 8;
+
+// Asks the cache for the bodies of `pair` (no effect on results).
+void prefetch_pair(const std::vector<Body>& bodies, const BodyPair& pair) {
+  prefetch_bytes(bodies[pair.first], 0, body_contact_bytes);
+  prefetch_bytes(bodies[pair.second], 0, body_contact_bytes);
+}
+
 // The speculative margin (metres) pair (a, b) is collided with (`reach` per slot).
 float pair_margin(const Body& a, const Body& b, const std::vector<float>& reach,
                   const WorldSettings& settings) {
@@ -126,6 +138,10 @@ void run_pair_jobs(const std::vector<Body>& bodies, const std::vector<BodyPair>&
     std::size_t read = static_cast<std::size_t>(
         std::lower_bound(contacts.begin(), contacts.end(), pairs[begin], precedes) - contacts.begin());
     for (std::size_t i = begin; i < end; ++i) {
+      if (i + pairs_prefetched_ahead < end) {
+        prefetch_pair(bodies, pairs[i + pairs_prefetched_ahead]);
+        if (read + pairs_prefetched_ahead < contacts.size()) prefetch_bytes(contacts[read + pairs_prefetched_ahead]);
+      }
       const BodyPair& pair = pairs[i];
       const Body& a = bodies[pair.first];
       const Body& b = bodies[pair.second];
@@ -170,6 +186,11 @@ class ContactListRewrite {
  public:
   ContactListRewrite(std::vector<Contact>& contacts, std::vector<Contact>& spill)
       : contacts_(contacts), spill_(spill), old_count_(contacts.size()) {}
+
+  // Asks the cache for the old contact `ahead` contacts after the next (no effect on results).
+  void prefetch_old(std::size_t ahead) const {
+    if (ring_count_ == 0 && array_read_ + ahead < old_count_) prefetch_bytes(contacts_[array_read_ + ahead]);
+  }
 
   // True while an old contact is left to read.
   bool has_old() const { return ring_count_ > 0 || array_read_ < old_count_; }
@@ -323,6 +344,9 @@ class NarrowPhaseWalk {
     }
   }
 
+  // Asks the cache for the old contact `ahead` contacts after the next (no effect on results).
+  void prefetch_old(std::size_t ahead) const { list_.prefetch_old(ahead); }
+
   // Ends the list; returns the number of manifold points made.
   int finish() {
     list_.finish();
@@ -438,6 +462,10 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
   if (have_jobs) run_pair_jobs(bodies, pairs, reach, settings, dt, contacts, pool, *jobs);
   NarrowPhaseWalk walk(reach, settings, dt, filter, visitor, contacts, spill);
   for (std::size_t p = 0; p < pairs.size(); ++p) {
+    if (p + pairs_prefetched_ahead < pairs.size()) {
+      prefetch_pair(bodies, pairs[p + pairs_prefetched_ahead]);
+      walk.prefetch_old(pairs_prefetched_ahead);
+    }
     const Body& a = bodies[pairs[p].first];
     const Body& b = bodies[pairs[p].second];
     if (a.compound || b.compound) {

@@ -4,13 +4,16 @@
 
 #include "core/body.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace impulse2d {
 
 /// The state the world keeps for one body. Users read it through `World::body(id)`.
-/// The fields the step reads for every contact and sub-step come first, so that they share
-/// the first two cache lines; the shape and material (read by the narrow phase alone) last.
+/// The fields that the narrow phase and contact preparation read for every contact come
+/// first, the material's coefficients included, so that they fill the first two cache lines
+/// (128 bytes on x86-64 with GCC's std::string: `body_contact_bytes`); the rest (sleep, interpolation, events, the shape's
+/// geometry) after them.
 struct Body {
   BodyId id;                  ///< this body's handle
   BodyType type = BodyType::Dynamic;  ///< how it moves
@@ -26,13 +29,6 @@ struct Body {
   vec2 force{0.0f, 0.0f};  ///< N, accumulated until the next step, then cleared
   float torque = 0.0f;     ///< N m, accumulated until the next step, then cleared
   float gravity_scale = 1.0f;    ///< multiplies the world's gravity
-  float linear_damping = 0.0f;   ///< 1/s
-  float angular_damping = 0.0f;  ///< 1/s
-  float mass = 0.0f;             ///< kg (0 for static and kinematic bodies)
-  float inertia = 0.0f;          ///< kg m^2 about the centre of mass
-  vec2 previous_position{0.0f, 0.0f};  ///< at the start of the last step (for interpolation)
-  float previous_angle = 0.0f;          ///< at the start of the last step
-  float sleep_time = 0.0f;       ///< seconds the body has been slow
   /// Farthest distance (m) of the shape's surface from the centre of mass (`shape_extent`),
   /// kept here beside the fields contact recycling reads, away from the shape's cold bytes.
   float extent = 0.0f;
@@ -41,6 +37,14 @@ struct Body {
   float rounding = 0.0f;
   bool compound = false;         ///< its shapes are `children` (and not `shape`)
   bool speculative = true;       ///< its pairs get speculative contacts
+  Material material;          ///< what it is made of (its coefficients mixed for each contact)
+  float linear_damping = 0.0f;   ///< 1/s
+  float angular_damping = 0.0f;  ///< 1/s
+  float mass = 0.0f;             ///< kg (0 for static and kinematic bodies)
+  float inertia = 0.0f;          ///< kg m^2 about the centre of mass
+  vec2 previous_position{0.0f, 0.0f};  ///< at the start of the last step (for interpolation)
+  float previous_angle = 0.0f;          ///< at the start of the last step
+  float sleep_time = 0.0f;       ///< seconds the body has been slow
   std::uint32_t collision_layers = 1;  ///< bitmask
   Aabb aabb;                     ///< world bounds, updated each step
   std::uint64_t user_data = 0;   ///< the caller's value
@@ -50,13 +54,16 @@ struct Body {
   bool sensor_detects_static = false; ///< as a sensor: also reports static bodies
   bool enable_sensor_events = true;   ///< sensors see it
   bool has_sensor_shapes = false;     ///< a compound body with a sensor among its shapes
-  Material material;          ///< what it is made of
   /// In body-local coordinates, centroid at the origin; a compound body's first shape (for
   /// the rules that look at one shape's kind: never its geometry, which `children` holds).
   Shape shape;
   /// A compound body's shapes, placed in the body's frame; empty for a body of one shape.
   std::vector<BodyShape> children;
 };
+
+/// The bytes at the start of a `Body` that the narrow phase and contact preparation read for a
+/// kept contact (all but its shape's geometry): two cache lines where the layout allows.
+constexpr std::size_t body_contact_bytes = offsetof(Body, linear_damping);
 
 /// `body`'s core point (body frame, metres) under its surface point `surface` (world metres),
 /// where `outward` (unit, world) is the surface's normal there: a circle's centre (exactly

@@ -2,6 +2,7 @@
 
 #include "core/solver/contact_prepare.h"
 #include "core/solver/contact_solver_internal.h"
+#include "core/solver/prefetch.h"
 #include "core/solver/shock_propagation.h"
 #include "core/solver/wide_contact_kernels.h"
 
@@ -17,14 +18,6 @@ static_assert(max_manifold_points == 2, "ContactBlock has two point slots per la
 // in colour order a contact's index is not predictable from the last one's, so without the
 // hint every ~300-byte contact is a run of cache misses.
 constexpr std::size_t prefetch_distance = 8;
-
-// Asks the cache for bytes [begin, end) of `contact` (no effect on results).
-void prefetch_contact(const Contact& contact, std::size_t begin = 0,
-                      std::size_t end = sizeof(Contact)) {
-  const char* bytes = reinterpret_cast<const char*>(&contact);
-  for (std::size_t offset = begin; offset < end; offset += 64) __builtin_prefetch(bytes + offset);
-  __builtin_prefetch(bytes + end - 1);
-}
 
 // The bytes of a contact that writing impulses back and reading bounce plans touch: the point
 // count and its points (the rest of its ~300 bytes need not be fetched).
@@ -47,8 +40,7 @@ void for_each_point(Blocks& packed, Contacts& contacts, Visit visit) {
       for (int lane = 0; lane < Lanes; ++lane) {
         const std::int32_t index = contact_index[(b + ahead) * Lanes + lane];
         if (index >= 0) {
-          prefetch_contact(contacts[static_cast<std::size_t>(index)], point_state_begin,
-                           point_state_end);
+          prefetch_bytes(contacts[static_cast<std::size_t>(index)], point_state_begin, point_state_end);
         }
       }
     }
