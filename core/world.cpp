@@ -442,6 +442,7 @@ void World::step() {
   SolverStages stages(world);
   SolverContext context = resolve_solver_context(world.settings);
   context.touch_velocities = touch_velocities(world.events);
+  world.wide_contacts.forget_touch_tally();  // a solver that does not visit leaves it invalid
   world.solver->step(stages, context);
   // Whatever the stages did not time themselves is the solver's own work.
   world.stats.solver_ms = elapsed_ms(solve_start) - world.stats.broad_phase_ms -

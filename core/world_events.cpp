@@ -61,8 +61,24 @@ void compare_pairs(const std::vector<EventPair>& before, const std::vector<Event
   }
 }
 
+// True when this step's touches are last step's (see `WorldEvents::touching_is_current`): every
+// contact touching now is a contact whose flag said so before the step and did not change, so
+// the pairs touching now are among last step's, and as many of them means all of them.
+bool touches_unchanged(const WorldState& world, bool all_want) {
+  const WorldEvents& events = world.events;
+  const WideContactSolver::TouchTally& tally = world.wide_contacts.touch_tally();
+  return events.touching_is_current && !events.always_walk && tally.valid && !tally.changed &&
+         all_want && world.sleeping_contacts.empty() && tally.touching == events.touching.size();
+}
+
 void collect_contact_events(WorldState& world) {
   WorldEvents& events = world.events;
+  // When every body asks for contact events (the default) no body need be read.
+  const bool all_want = events.contact_event_bodies == world.living_body_count;
+  if (touches_unchanged(world, all_want)) {
+    ++events.walks_skipped;
+    return;  // nothing began or ended: `touching` stays as it is
+  }
   const float slop = world.settings.slop;
   const float dt = world.settings.time_step;
   std::vector<EventPair>& next = events.next;
@@ -70,8 +86,6 @@ void collect_contact_events(WorldState& world) {
   next.clear();
   reserve_at_least(events.contact.begin, next.capacity());
   reserve_at_least(events.contact.end, events.touching.capacity() + events.contact.end.size());
-  // When every body asks for contact events (the default) no body need be read.
-  const bool all_want = events.contact_event_bodies == world.living_body_count;
   auto wants = [&world, all_want](const Contact& contact) {
     return all_want || world.bodies[contact.body_a.index].enable_contact_events ||
            world.bodies[contact.body_b.index].enable_contact_events;
@@ -114,6 +128,10 @@ void collect_contact_events(WorldState& world) {
   }
   while (next_before < before.size()) end_before();
   std::swap(events.touching, next);
+  // The flags of the awake contacts made `touching` (the walk read each); with contacts set
+  // aside (judged here, not by prepare) or bodies that do not ask, the next step walks again.
+  const WideContactSolver::TouchTally& tally = world.wide_contacts.touch_tally();
+  events.touching_is_current = tally.valid && all_want && resting.empty();
 }
 
 // A hit is an impact: a point approaching faster than the threshold that the step must stop,
@@ -246,7 +264,11 @@ FreeVelocities touch_velocities(const WorldEvents& events) {
 
 void collect_step_events(WorldState& world) {
   WorldEvents& events = world.events;
-  if (collects_contact_events(events)) collect_contact_events(world);
+  if (collects_contact_events(events)) {
+    collect_contact_events(world);
+  } else {
+    events.touching_is_current = false;  // the flags are not judged while no one asks
+  }
   if (events.hit_event_bodies > 0) collect_hit_events(world);
   if (events.sensor_bodies > 0 || !events.sensor_overlaps.empty()) collect_sensor_events(world);
 }

@@ -42,6 +42,17 @@ struct WorldEvents {
   std::vector<EventPair> removed_touches; ///< ended by remove_body since the last step
   std::vector<EventPair> removed_overlaps;///< ended by remove_body since the last step
 
+  /// True when `touching` is exactly the pairs of the awake contacts whose `touching` flag
+  /// was set after the last step, with no contacts set aside (asleep) and every body asking
+  /// for contact events: then a step whose touch tally (`WideContactSolver::TouchTally`)
+  /// found no flag changed and as many touching contacts began and ended nothing, and the
+  /// walk over the contacts is skipped. False after any other collect (and in a new world).
+  bool touching_is_current = false;
+  /// Steps whose contact events were found without the walk (for tests).
+  std::uint64_t walks_skipped = 0;
+  /// Tests: always walk the contacts (the events must be the same).
+  bool always_walk = false;
+
   ContactEvents contact;  ///< the caller's buffers (last step's events)
   SensorEvents sensor;    ///< the caller's buffers (last step's events)
 

@@ -419,6 +419,9 @@ class NarrowPhaseWalk {
         contact.enabled = filter_ ? filter_(view_of(a), view_of(b), manifold) : true;
       }
       contact.sliding = old_contact.sliding;
+      // What the pair's touch was (`enabled && touching`, as the events after the last step
+      // saw it): the step's touch tally then sees a change only where the touch changes.
+      contact.touching = old_contact.enabled && old_contact.touching;
       contact.steps_at_static_limit = old_contact.steps_at_static_limit;
       contact.limit_slip = old_contact.limit_slip;
       carry_over_impulses(old_contact, contact);

@@ -6,6 +6,7 @@
 #include "core/solver/shock_propagation.h"
 #include "core/solver/wide_contact_kernels.h"
 
+#include <atomic>
 #include <cstddef>
 
 namespace impulse2d {
@@ -375,6 +376,8 @@ void WideContactSolver::begin_step(const std::vector<Body>& bodies, const Solver
   shock_mass_ratio_ = context.shock_propagation ? shock_mass_ratio(context.velocity_iterations) : 0.0f;
   bodies_ = &bodies;
   context_ = &context;
+  touch_tally_ = TouchTally{};
+  touch_tally_.valid = context.touch_velocities.linear != nullptr;
   colouring_.begin(bodies.size());
   lane_of_contact_.clear();
   for (auto& blocks : colours_4_) blocks.count = 0;
@@ -389,7 +392,10 @@ void WideContactSolver::visit(std::size_t index, Contact& contact) {
     if (pool_ != nullptr) {
       set_pair_mass(contact, pair_mass_of(a, b, *context_));  // the rest in finish_step, shared
     } else {
+      const bool touched = contact.touching;
       prepare_contact(contact, a, b, *context_);
+      touch_tally_.changed = touch_tally_.changed || contact.touching != touched;
+      touch_tally_.touching += contact.touching ? 1 : 0;
     }
     if (shock_mass_ratio_ > 0.0f && !has_heavy_on_light_) {
       has_heavy_on_light_ = is_heavy_on_light(contact, shock_mass_ratio_);
@@ -429,11 +435,19 @@ void WideContactSolver::finish_packing(std::vector<Contact>& contacts) {
     const std::vector<Body>& bodies = *bodies_;
     const SolverContext& context = *context_;
     Colours<Lanes>& packed = colours<Lanes>();
+    // Each chunk tallies its touches and adds them once (the sums do not depend on the split).
+    std::atomic<std::size_t> touching{0};
+    std::atomic<bool> changed{false};
     parallel_for(pool_, contacts.size(), 64, [&](std::size_t begin, std::size_t end) {
+      std::size_t chunk_touching = 0;
+      bool chunk_changed = false;
       for (std::size_t i = begin; i < end; ++i) {
         Contact& contact = contacts[i];
         if (contact.enabled) {
+          const bool touched = contact.touching;
           prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
+          chunk_changed = chunk_changed || contact.touching != touched;
+          chunk_touching += contact.touching ? 1 : 0;
         }
         if (lane_of_contact_[i] < 0) continue;
         ColourBlocks<Lanes>& blocks = packed[static_cast<std::size_t>(colouring_.colour_of(i))];
@@ -441,7 +455,11 @@ void WideContactSolver::finish_packing(std::vector<Contact>& contacts) {
         const int lane = static_cast<int>(static_cast<std::size_t>(lane_of_contact_[i]) % Lanes);
         pack_contact(contact, blocks.blocks[block], blocks.solves[block], blocks.sticks[block], lane);
       }
+      touching.fetch_add(chunk_touching, std::memory_order_relaxed);
+      if (chunk_changed) changed.store(true, std::memory_order_relaxed);
     });
+    touch_tally_.touching += touching.load();
+    touch_tally_.changed = touch_tally_.changed || changed.load();
   }
   clear_unused_lanes<Lanes>();
 }

@@ -103,6 +103,22 @@ class WideContactSolver final : public ContactVisitor {
   void set_min_island_batches(std::size_t batches) { min_island_batches_ = batches; }
   /// The step's island batches (valid when `batched`).
   const IslandBatches& islands() const { return islands_; }
+
+  /// What this step's prepare found of the contacts' touch (`Contact::touching`, judged when
+  /// the context has touch velocities), for the events after the step.
+  struct TouchTally {
+    /// True when this step visited and judged every contact of the list (a soft step with
+    /// contact events on): only then do the other two describe it.
+    bool valid = false;
+    /// True when some contact's `enabled && touching` differs from what its flag held before
+    /// the step (a contact new to the list holds false, or its predecessor's value).
+    bool changed = false;
+    std::size_t touching = 0;  ///< contacts enabled and touching
+  };
+  /// The tally of the last step that judged the touches since `forget_touch_tally`.
+  const TouchTally& touch_tally() const { return touch_tally_; }
+  /// Marks the tally invalid (a step whose solver does not visit leaves it so).
+  void forget_touch_tally() { touch_tally_ = TouchTally{}; }
   /// `warm_start` for the blocks of island batch `batch` only (when `batched`).
   void warm_start_batch(std::size_t batch, SolverBody* bodies);
   /// `solve` for the blocks of island batch `batch` only (when `batched`), on this thread.
@@ -199,6 +215,7 @@ class WideContactSolver final : public ContactVisitor {
   std::size_t last_contact_count_ = 0;  // contacts of the last step
   std::size_t last_batch_count_ = 0;    // island batches of the last step (0: not looked for)
   float shock_mass_ratio_ = 0.0f;  // of this step's context, when it asks for shock propagation
+  TouchTally touch_tally_;
   const std::vector<Body>* bodies_ = nullptr;  // between begin_step and finish_step
   const SolverContext* context_ = nullptr;     // between begin_step and finish_step
   WorkerPool* pool_ = nullptr;                 // between begin_step and finish_step
