@@ -120,7 +120,9 @@ void collect_contact_events(WorldState& world) {
         j == resting.size() ||
         (i < awake.size() && pair_of(awake[i]).key() < pair_of(resting[j]).key());
     // The walk reads one cache line of each contact, far apart: ask for the lines ahead.
-    if (i + events_prefetch_distance < awake.size()) prefetch_bytes(awake[i + events_prefetch_distance], 0, 64);
+    if (i + events_prefetch_distance < awake.size()) {
+      prefetch_bytes(awake[i + events_prefetch_distance], 0, 64);
+    }
     const Contact& contact = take_awake ? awake[i++] : resting[j++];
     const bool touching = take_awake ? contact.enabled && contact.touching
                                      : touches_in_step(velocities, contact, slop, dt);

@@ -140,7 +140,8 @@ void run_pair_jobs(const std::vector<Body>& bodies, const std::vector<BodyPair>&
     for (std::size_t i = begin; i < end; ++i) {
       if (i + pairs_prefetched_ahead < end) {
         prefetch_pair(bodies, pairs[i + pairs_prefetched_ahead]);
-        if (read + pairs_prefetched_ahead < contacts.size()) prefetch_bytes(contacts[read + pairs_prefetched_ahead]);
+        const std::size_t old_ahead = read + pairs_prefetched_ahead;
+        if (old_ahead < contacts.size()) prefetch_bytes(contacts[old_ahead]);
       }
       const BodyPair& pair = pairs[i];
       const Body& a = bodies[pair.first];
@@ -189,7 +190,9 @@ class ContactListRewrite {
 
   // Asks the cache for the old contact `ahead` contacts after the next (no effect on results).
   void prefetch_old(std::size_t ahead) const {
-    if (ring_count_ == 0 && array_read_ + ahead < old_count_) prefetch_bytes(contacts_[array_read_ + ahead]);
+    if (ring_count_ == 0 && array_read_ + ahead < old_count_) {
+      prefetch_bytes(contacts_[array_read_ + ahead]);
+    }
   }
 
   // True while an old contact is left to read.

@@ -12,8 +12,8 @@ namespace impulse2d {
 /// The state the world keeps for one body. Users read it through `World::body(id)`.
 /// The fields that the narrow phase and contact preparation read for every contact come
 /// first, the material's coefficients included, so that they fill the first two cache lines
-/// (128 bytes on x86-64 with GCC's std::string: `body_contact_bytes`); the rest (sleep, interpolation, events, the shape's
-/// geometry) after them.
+/// (128 bytes on x86-64 with GCC's std::string: `body_contact_bytes`); the rest (sleep,
+/// interpolation, events, the shape's geometry) after them.
 struct Body {
   BodyId id;                  ///< this body's handle
   BodyType type = BodyType::Dynamic;  ///< how it moves

@@ -12,7 +12,8 @@ namespace impulse2d {
 
 /// Asks the cache for bytes [begin, end) of `object` (every 64-byte line they touch).
 template <class Object>
-inline void prefetch_bytes(const Object& object, std::size_t begin = 0, std::size_t end = sizeof(Object)) {
+inline void prefetch_bytes(const Object& object, std::size_t begin = 0,
+                           std::size_t end = sizeof(Object)) {
   const char* bytes = reinterpret_cast<const char*>(&object);
   for (std::size_t offset = begin; offset < end; offset += 64) __builtin_prefetch(bytes + offset);
   __builtin_prefetch(bytes + end - 1);
