@@ -23,9 +23,6 @@ EventPair pair_of(const Contact& contact) {
   return EventPair{contact.body_a, contact.body_b, contact.child_a, contact.child_b};
 }
 
-// Contacts ahead of the one read that the walk over the contacts asks the memory for.
-constexpr std::size_t events_prefetch_distance = 8;
-
 bool key_less(const EventPair& a, const EventPair& b) { return a.key() < b.key(); }
 
 FreeVelocities free_velocities(const WorldEvents& events) {
@@ -120,8 +117,8 @@ void collect_contact_events(WorldState& world) {
         j == resting.size() ||
         (i < awake.size() && pair_of(awake[i]).key() < pair_of(resting[j]).key());
     // The walk reads one cache line of each contact, far apart: ask for the lines ahead.
-    if (i + events_prefetch_distance < awake.size()) {
-      prefetch_bytes(awake[i + events_prefetch_distance], 0, 64);
+    if (i + prefetch_items_ahead < awake.size()) {
+      prefetch_bytes(awake[i + prefetch_items_ahead], 0, 64);
     }
     const Contact& contact = take_awake ? awake[i++] : resting[j++];
     const bool touching = take_awake ? contact.enabled && contact.touching

@@ -101,12 +101,9 @@ namespace {
 // Pairs a worker takes at least at a time.
 constexpr std::size_t min_pairs_per_chunk = 32;
 
-// How many pairs ahead of the one being updated the walks ask the cache for the pair's bodies
-// and old contact (about one old contact per pair): far enough for a miss to the L3 cache to
-// land in time, near enough for what it brings to stay in L1.
-constexpr std::size_t pairs_prefetched_ahead = 8;
 
-// Asks the cache for the bodies of `pair` (no effect on results).
+// Asks the cache for the bodies of `pair` (no effect on results). The walks ask for the pair
+// `prefetch_items_ahead` ahead and its old contact (about one old contact per pair).
 void prefetch_pair(const std::vector<Body>& bodies, const BodyPair& pair) {
   prefetch_bytes(bodies[pair.first], 0, body_contact_bytes);
   prefetch_bytes(bodies[pair.second], 0, body_contact_bytes);
@@ -138,9 +135,9 @@ void run_pair_jobs(const std::vector<Body>& bodies, const std::vector<BodyPair>&
     std::size_t read = static_cast<std::size_t>(
         std::lower_bound(contacts.begin(), contacts.end(), pairs[begin], precedes) - contacts.begin());
     for (std::size_t i = begin; i < end; ++i) {
-      if (i + pairs_prefetched_ahead < end) {
-        prefetch_pair(bodies, pairs[i + pairs_prefetched_ahead]);
-        const std::size_t old_ahead = read + pairs_prefetched_ahead;
+      if (i + prefetch_items_ahead < end) {
+        prefetch_pair(bodies, pairs[i + prefetch_items_ahead]);
+        const std::size_t old_ahead = read + prefetch_items_ahead;
         if (old_ahead < contacts.size()) prefetch_bytes(contacts[old_ahead]);
       }
       const BodyPair& pair = pairs[i];
@@ -468,9 +465,9 @@ int update_contacts(const std::vector<Body>& bodies, const std::vector<BodyPair>
   if (have_jobs) run_pair_jobs(bodies, pairs, reach, settings, dt, contacts, pool, *jobs);
   NarrowPhaseWalk walk(reach, settings, dt, filter, visitor, contacts, spill);
   for (std::size_t p = 0; p < pairs.size(); ++p) {
-    if (p + pairs_prefetched_ahead < pairs.size()) {
-      prefetch_pair(bodies, pairs[p + pairs_prefetched_ahead]);
-      walk.prefetch_old(pairs_prefetched_ahead);
+    if (p + prefetch_items_ahead < pairs.size()) {
+      prefetch_pair(bodies, pairs[p + prefetch_items_ahead]);
+      walk.prefetch_old(prefetch_items_ahead);
     }
     const Body& a = bodies[pairs[p].first];
     const Body& b = bodies[pairs[p].second];

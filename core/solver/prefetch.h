@@ -10,6 +10,10 @@
 
 namespace impulse2d {
 
+/// How many objects ahead of the one being read a walk asks the cache for: far enough for a
+/// miss to the L3 cache to land in time, near enough for what it brings to stay in L1.
+constexpr std::size_t prefetch_items_ahead = 8;
+
 /// Asks the cache for bytes [begin, end) of `object` (every 64-byte line they touch).
 template <class Object>
 inline void prefetch_bytes(const Object& object, std::size_t begin = 0,

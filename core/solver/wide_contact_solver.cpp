@@ -15,10 +15,13 @@ namespace {
 
 static_assert(max_manifold_points == 2, "ContactBlock has two point slots per lane");
 
-// How many contacts ahead of the one being copied the walks in colour order ask the cache for:
-// in colour order a contact's index is not predictable from the last one's, so without the
-// hint every ~300-byte contact is a run of cache misses.
-constexpr std::size_t prefetch_distance = 8;
+// Prepares `contact` (`prepare_contact`) and returns true when its touch flag changed.
+bool prepare_noting_touch(Contact& contact, const Body& a, const Body& b,
+                          const SolverContext& context) {
+  const bool touched = contact.touching;
+  prepare_contact(contact, a, b, context);
+  return contact.touching != touched;
+}
 
 // The bytes of a contact that writing impulses back and reading bounce plans touch: the point
 // count and its points (the rest of its ~300 bytes need not be fetched).
@@ -35,7 +38,10 @@ void for_each_point(Blocks& packed, Contacts& contacts, Visit visit) {
   constexpr int Lanes = Blocks::lanes;
   const std::size_t block_count = packed.count;
   const std::vector<std::int32_t>& contact_index = packed.contact_index;
-  const std::size_t ahead = prefetch_distance / Lanes + 1;  // blocks
+  // The contacts `prefetch_items_ahead` on are asked for: in colour order a contact's index is
+  // not predictable from the last one's, so without the hint every ~300-byte contact is a run
+  // of cache misses.
+  const std::size_t ahead = prefetch_items_ahead / Lanes + 1;  // blocks
   for (std::size_t b = 0; b < block_count; ++b) {
     if (b + ahead < block_count) {
       for (int lane = 0; lane < Lanes; ++lane) {
@@ -392,9 +398,7 @@ void WideContactSolver::visit(std::size_t index, Contact& contact) {
     if (pool_ != nullptr) {
       set_pair_mass(contact, pair_mass_of(a, b, *context_));  // the rest in finish_step, shared
     } else {
-      const bool touched = contact.touching;
-      prepare_contact(contact, a, b, *context_);
-      touch_tally_.changed = touch_tally_.changed || contact.touching != touched;
+      touch_tally_.changed = prepare_noting_touch(contact, a, b, *context_) || touch_tally_.changed;
       touch_tally_.touching += contact.touching ? 1 : 0;
     }
     if (shock_mass_ratio_ > 0.0f && !has_heavy_on_light_) {
@@ -444,9 +448,9 @@ void WideContactSolver::finish_packing(std::vector<Contact>& contacts) {
       for (std::size_t i = begin; i < end; ++i) {
         Contact& contact = contacts[i];
         if (contact.enabled) {
-          const bool touched = contact.touching;
-          prepare_contact(contact, bodies[contact.body_a.index], bodies[contact.body_b.index], context);
-          chunk_changed = chunk_changed || contact.touching != touched;
+          const Body& a = bodies[contact.body_a.index];
+          const Body& b = bodies[contact.body_b.index];
+          chunk_changed = prepare_noting_touch(contact, a, b, context) || chunk_changed;
           chunk_touching += contact.touching ? 1 : 0;
         }
         if (lane_of_contact_[i] < 0) continue;

@@ -236,21 +236,20 @@ class WideContactSolver final : public ContactVisitor {
 template <int Lanes, class Then>
 void WideContactSolver::store_impulses_in_order(std::vector<Contact>& contacts, Then then) const {
   // The blocks are in colour order, not the list's: each contact's lanes (and the contact) are
-  // asked for `contacts_ahead` contacts before they are read.
-  constexpr std::size_t contacts_ahead = 8;
+  // asked for `prefetch_items_ahead` contacts before they are read.
   const Colours<Lanes>& packed = colours<Lanes>();
   const std::size_t count = contacts.size();
   for (std::size_t i = 0; i < count; ++i) {
-    if (i + contacts_ahead < count && lane_of_contact_[i + contacts_ahead] >= 0) {
-      const auto next = static_cast<std::size_t>(lane_of_contact_[i + contacts_ahead]);
-      const ColourBlocks<Lanes>& colour = packed[static_cast<std::size_t>(colouring_.colour_of(i + contacts_ahead))];
+    if (i + prefetch_items_ahead < count && lane_of_contact_[i + prefetch_items_ahead] >= 0) {
+      const auto next = static_cast<std::size_t>(lane_of_contact_[i + prefetch_items_ahead]);
+      const ColourBlocks<Lanes>& colour = packed[static_cast<std::size_t>(colouring_.colour_of(i + prefetch_items_ahead))];
       for (const BlockPointImpulse<Lanes>& point : colour.blocks[next / Lanes].points) {
         __builtin_prefetch(&point.normal_impulse[next % Lanes]);
         __builtin_prefetch(&point.tangent_impulse[next % Lanes]);
       }
       __builtin_prefetch(&colour.solves[next / Lanes].friction_at_limit[next % Lanes]);
     }
-    if (i + contacts_ahead < count) prefetch_bytes(contacts[i + contacts_ahead]);
+    if (i + prefetch_items_ahead < count) prefetch_bytes(contacts[i + prefetch_items_ahead]);
     Contact& contact = contacts[i];
     if (lane_of_contact_[i] >= 0) {
       const ColourBlocks<Lanes>& colour = packed[static_cast<std::size_t>(colouring_.colour_of(i))];
