@@ -18,6 +18,21 @@ struct PairMass {
   float inverse_inertia_b = 0.0f;  ///< 1/(kg m^2), 0 when B does not rotate
 };
 
+/// What the wide solver solves a two-point manifold with, found from the points' anchors and
+/// effective masses and kept with them while they are kept (`Contact::kept_pair_solve`).
+struct PairSolve {
+  /// False when the points' normal effective-mass matrix is too ill-conditioned to solve them
+  /// as a pair (they are then solved one after the other, and the masses below are 0).
+  bool solvable = false;
+  /// Inverse (kg) of the two points' normal effective-mass matrix, row by row (the matrix is
+  /// symmetric).
+  float mass_00 = 0.0f;
+  float mass_01 = 0.0f;  ///< off-diagonal of that inverse, kg
+  float mass_11 = 0.0f;  ///< second diagonal entry of that inverse, kg
+  /// Effective mass (kg) along the tangent at the middle of the two points.
+  float middle_tangent_mass = 0.0f;
+};
+
 /// The solver's state for one manifold point.
 struct ContactPoint {
   vec2 point{0.0f, 0.0f};      ///< world position, metres, midway between the two surfaces
@@ -125,6 +140,9 @@ struct Contact {
   /// (limit mu_d * Pn) or when it began with its surfaces slipping; back to false when its
   /// relative tangential speed returns to rest.
   bool sliding = false;
+  /// True while `pair_solve` holds what the wide solver found for these effective masses
+  /// (prepare clears it whenever it computes them afresh, see `kept_masses`).
+  bool kept_pair_solve = false;
   /// Relative acceleration (m/s^2) with which applied forces and gravity drive the bodies
   /// together along the normal (positive: closing); used to time a bounce within the step.
   float approach_acceleration = 0.0f;
@@ -142,6 +160,7 @@ struct Contact {
   /// the steps (a per-step push) makes each step start faster than it ends.
   float limit_slip = -1.0f;
   ManifoldPose manifold_pose;  ///< the bodies' pose when the manifold was last computed
+  PairSolve pair_solve;        ///< the wide solver's values of a two-point manifold
 };
 
 /// True when `a` comes before `b` in the order contact lists keep: by A's slot, B's slot, then

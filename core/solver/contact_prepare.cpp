@@ -45,6 +45,7 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
   // A kept manifold's offsets, and the effective masses found from them, are the same as when
   // it was last prepared (while the masses are too): only its core points move with the bodies.
   const bool keeps_masses = contact.recycled && contact.kept_masses;
+  if (!keeps_masses) contact.kept_pair_solve = false;
   const RecycledShapes shapes = recycled_shapes_of(a, b, contact);
   const float rounding = shapes.rounding_a + shapes.rounding_b;
   float slip_sum = 0.0f;

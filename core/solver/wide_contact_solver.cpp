@@ -141,14 +141,17 @@ void set_lane_points(float* ax, float* ay, float* bx, float* by, int lane, vec2 
 // solved as a pair; beyond it the points are nearly one, and are solved one after the other.
 constexpr float max_pair_condition = 1000.0f;
 
-// Writes the inverse of the two points' normal effective-mass matrix K into lane `lane`;
-// returns false (writing nothing) when K is ill-conditioned. K's diagonal is each point's own
+// The inverse of the two points' normal effective-mass matrix K, and whether K is
+// well-conditioned enough to solve them as a pair. K's diagonal is each point's own
 // 1/normal_mass; its off-diagonal couples them through the bodies' masses and inertias.
-template <int Lanes>
-bool pair_inverse(const Contact& contact, ContactBlockSolve<Lanes>& solve, int lane) {
+void find_pair_inverse(const Contact& contact, PairSolve& pair) {
+  pair.solvable = false;
+  pair.mass_00 = 0.0f;
+  pair.mass_01 = 0.0f;
+  pair.mass_11 = 0.0f;
   const ContactPoint& first = contact.points[0];
   const ContactPoint& second = contact.points[1];
-  if (!(first.normal_mass > 0.0f && second.normal_mass > 0.0f)) return false;
+  if (!(first.normal_mass > 0.0f && second.normal_mass > 0.0f)) return;
   const PairMass& mass = contact.mass;
   const vec2 normal = contact.normal;
   const float k00 = 1.0f / first.normal_mass;
@@ -157,12 +160,12 @@ bool pair_inverse(const Contact& contact, ContactBlockSolve<Lanes>& solve, int l
                     mass.inverse_inertia_a * cross(first.anchor_a, normal) * cross(second.anchor_a, normal) +
                     mass.inverse_inertia_b * cross(first.anchor_b, normal) * cross(second.anchor_b, normal);
   const float determinant = k00 * k11 - k01 * k01;
-  if (!(k00 * k00 < max_pair_condition * determinant)) return false;
+  if (!(k00 * k00 < max_pair_condition * determinant)) return;
   const float inverse_determinant = 1.0f / determinant;
-  solve.pair_mass_00[lane] = k11 * inverse_determinant;
-  solve.pair_mass_01[lane] = -k01 * inverse_determinant;
-  solve.pair_mass_11[lane] = k00 * inverse_determinant;
-  return true;
+  pair.solvable = true;
+  pair.mass_00 = k11 * inverse_determinant;
+  pair.mass_01 = -k01 * inverse_determinant;
+  pair.mass_11 = k00 * inverse_determinant;
 }
 
 // Effective mass (kg) along the tangent at the middle of a two-point contact's points, where
@@ -178,9 +181,20 @@ float middle_tangent_mass(const Contact& contact) {
   return inverse > 0.0f ? 1.0f / inverse : 0.0f;
 }
 
+// A two-point contact's `pair_solve`: found when prepare found its effective masses afresh,
+// else kept from the step that did (it depends on nothing else).
+const PairSolve& pair_solve_of(Contact& contact) {
+  if (!contact.kept_pair_solve) {
+    find_pair_inverse(contact, contact.pair_solve);
+    contact.pair_solve.middle_tangent_mass = middle_tangent_mass(contact);
+    contact.kept_pair_solve = true;
+  }
+  return contact.pair_solve;
+}
+
 // One contact into lane `lane` of a block's three parts.
 template <int Lanes>
-void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
+void pack_contact(Contact& contact, ContactBlock<Lanes>& block,
                   ContactBlockSolve<Lanes>& solve, ContactBlockStick<Lanes>& stick, int lane) {
   const PairMass& mass = contact.mass;
   const bool against_fixed = mass.inverse_mass_a == 0.0f || mass.inverse_mass_b == 0.0f;
@@ -220,11 +234,13 @@ void pack_contact(const Contact& contact, ContactBlock<Lanes>& block,
     load_point_values(block, solve, i, lane, point);
   }
   if (contact.point_count == 2) {
-    solve.points[0].tangent_mass[lane] = middle_tangent_mass(contact);
+    const PairSolve& pair = pair_solve_of(contact);
+    solve.points[0].tangent_mass[lane] = pair.middle_tangent_mass;
     solve.points[1].tangent_mass[lane] = 0.0f;
-  }
-  if (contact.point_count == 2 && pair_inverse(contact, solve, lane)) {
-    flags |= block_point_pair;
+    solve.pair_mass_00[lane] = pair.mass_00;
+    solve.pair_mass_01[lane] = pair.mass_01;
+    solve.pair_mass_11[lane] = pair.mass_11;
+    if (pair.solvable) flags |= block_point_pair;
   } else {
     clear_pair(solve, lane);
   }
@@ -263,7 +279,7 @@ std::size_t WideContactSolver::ColourBlocks<Lanes>::open_block() {
 }
 
 template <int Lanes>
-void WideContactSolver::place(std::size_t index, int colour, const Contact& contact) {
+void WideContactSolver::place(std::size_t index, int colour, Contact& contact) {
   // Each colour fills its blocks Lanes contacts at a time in the list's order (its last block
   // partly); the overflow goes one contact per block, as its contacts may share bodies.
   // The contacts come in the list's order: `index` is the count visited so far.

@@ -170,7 +170,7 @@ class WideContactSolver final : public ContactVisitor {
   /// Gives the list's contact `index` (of colour `colour`, -1: not solved) the next lane of its
   /// colour and packs it there (when the lanes are given as contacts are visited).
   template <int Lanes>
-  void place(std::size_t index, int colour, const Contact& contact);
+  void place(std::size_t index, int colour, Contact& contact);
   /// Gives every solvable contact of the list its lane, colour by colour and within a colour
   /// batch by batch (one batch unless `batched_`), each batch's contacts in the list's order,
   /// and records each batch's blocks in `batch_blocks_`.
