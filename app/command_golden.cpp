@@ -69,12 +69,13 @@ Command add_golden_command(CLI::App& program, const ProgramOptions&) {
   result.own_exit_status = true;  // `golden check`: 1 when a golden failed
   // The arguments as the library takes them, once the command line is parsed.
   auto chosen = [golden, check, update, frame]() -> golden::GoldenCommandArguments& {
-    golden::GoldenCommandArguments& arguments = golden->command;
-    arguments.action = check->parsed() ? "check" : update->parsed() ? "update" : "frame";
-    if (frame->parsed()) arguments.files = {golden->frame_file};
-    arguments.start_run = nullptr;
+    golden::GoldenCommandArguments& library_arguments = golden->command;
+    library_arguments.action = check->parsed() ? "check" : update->parsed() ? "update" : "frame";
+    if (frame->parsed()) library_arguments.files = {golden->frame_file};
+    library_arguments.start_run = nullptr;
     if (frame->parsed() && !golden->load_state.empty()) {
-      arguments.start_run = [file = golden->load_state](SceneRun& run, std::int64_t frame_step) {
+      library_arguments.start_run = [file = golden->load_state](SceneRun& run,
+                                                                std::int64_t frame_step) {
         load_state_file(file, run);
         if (run.step_count() > frame_step) {
           throw UsageError("--load-state " + file + ": saved after " +
@@ -84,8 +85,8 @@ Command add_golden_command(CLI::App& program, const ProgramOptions&) {
         }
       };
     }
-    arguments.executable = "/proc/self/exe";  // this program, for the second process
-    return arguments;
+    library_arguments.executable = "/proc/self/exe";  // this program, for the second process
+    return library_arguments;
   };
   result.dry_run = [chosen](std::ostream& out) {
     try {

@@ -190,10 +190,10 @@ INSTANTIATE_TEST_SUITE_P(
     Golden, RealChanges,
     ::testing::Values(
         RealChange{"friction_mixing_rule", {"ball_pit/motion", "ball_pit/settled"},
-                   other_friction_mixing},
+                   other_friction_mixing, ""},
         RealChange{"restitution_threshold_minus_10_percent",
                    {"random_polygons/motion", "random_polygons/settled"},
-                   [](demos::Scene& scene) { scene.settings.restitution_threshold *= 0.9f; }},
+                   [](demos::Scene& scene) { scene.settings.restitution_threshold *= 0.9f; }, ""},
         // The example project's cannonball (the case) is checked too, but slop +5 %
         // set in its scene settings leaves its state hash unchanged on this build (its
         // contacts never wait on the slop), so the built-in scenes that use slop carry it.
@@ -203,7 +203,7 @@ INSTANTIATE_TEST_SUITE_P(
                    IMPULSE2D_EXAMPLE_PROJECT "/scenes/cannonball.json"},
         RealChange{"slop_plus_5_percent",
                    {"tutorial/settled", "pyramid/settled", "stack/settled", "ball_pit/settled"},
-                   [](demos::Scene& scene) { scene.settings.slop *= 1.05f; }}),
+                   [](demos::Scene& scene) { scene.settings.slop *= 1.05f; }, ""}),
     [](const ::testing::TestParamInfo<RealChange>& param_info) { return param_info.param.name; });
 
 }  // namespace
