@@ -12,6 +12,8 @@ namespace impulse2d {
 
 using namespace contact_detail;
 
+static_assert(max_manifold_points == 2, "a contact's means over its points halve or keep the sum");
+
 namespace {
 
 // Acceleration (m/s^2) of a body's centre from gravity and applied forces.
@@ -93,14 +95,15 @@ void prepare_contact(Contact& contact, const Body& a, const Body& b, const Solve
     load_sum += point.normal_impulse;
   }
   contact.kept_masses = contact.recycled;
-  contact.start_slip = slip_sum / static_cast<float>(contact.point_count);
+  // The means over the points: halving is exact, so it gives the bits dividing by 2 gives.
+  const bool two_points = contact.point_count == 2;
+  contact.start_slip = two_points ? slip_sum * 0.5f : slip_sum;
   contact.start_load = load_sum;
   // Surfaces already slipping faster than static friction can stop within the step slide from
   // its start, whatever set them moving (contact_friction_state.h).
-  const float count = static_cast<float>(contact.point_count);
   if (context.friction_intervals > 0.0f && !contact.sliding && fastest_slip > sticking_speed &&
-      static_friction_cannot_stop(slip_need / count, carried_load, contact.static_friction,
-                                  context.friction_intervals)) {
+      static_friction_cannot_stop(two_points ? slip_need * 0.5f : slip_need, carried_load,
+                                  contact.static_friction, context.friction_intervals)) {
     break_loose(contact);
   }
   if (context.touch_velocities.linear != nullptr) {
