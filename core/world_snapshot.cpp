@@ -346,7 +346,9 @@ void io_contact(IO& io, Contact& c) {
   io_child(io, c.child_b);
   io_vec2(io, c.normal);
   io.i32(c.point_count);
-  if (c.point_count < 0 || c.point_count > max_manifold_points) {
+  // A contact has one point or more (the narrow phase keeps no other, and the solvers read the
+  // first point of every contact they are given).
+  if (c.point_count < 1 || c.point_count > max_manifold_points) {
     throw Error("World::restore_snapshot: corrupt contact point count " + std::to_string(c.point_count));
   }
   for (ContactPoint& p : c.points) {

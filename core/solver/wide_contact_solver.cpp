@@ -192,7 +192,31 @@ const PairSolve& pair_solve_of(Contact& contact) {
   return contact.pair_solve;
 }
 
-// One contact into lane `lane` of a block's three parts.
+// Point `point` into slot `slot` of lane `lane` of a block's three parts, but for its tangent
+// mass (its contact's to write); returns the slot's flag bits. (Inlined: without it GCC 12
+// calls it, and packing costs more than the loop over the points it replaces.)
+template <int Lanes>
+inline __attribute__((always_inline)) std::int32_t pack_point(const ContactPoint& point, int slot, ContactBlock<Lanes>& block,
+                        ContactBlockSolve<Lanes>& solve, ContactBlockStick<Lanes>& stick, int lane) {
+  BlockPointImpulse<Lanes>& impulse = block.points[slot];
+  set_lane_points(impulse.anchor_ax, impulse.anchor_ay, impulse.anchor_bx, impulse.anchor_by, lane,
+                  point.anchor_a, point.anchor_b);
+  BlockPointSolve<Lanes>& solved = solve.points[slot];
+  set_lane_points(solved.surface_ax, solved.surface_ay, solved.surface_bx, solved.surface_by, lane,
+                  point.local_anchor_a, point.local_anchor_b);
+  solved.rounding[lane] = point.rounding;
+  solved.normal_mass[lane] = point.normal_mass;
+  BlockPointStick<Lanes>& stuck = stick.points[slot];
+  set_lane_points(stuck.stick_ax, stuck.stick_ay, stuck.stick_bx, stuck.stick_by, lane,
+                  point.recycle_anchor_a, point.recycle_anchor_b);
+  stuck.stick_offset[lane] = point.stick_offset;
+  load_point_values(block, solve, slot, lane, point);
+  return (block_point_present << slot) | bounce_flags(slot, point) |
+         (point.caught ? block_point_caught << slot : 0);
+}
+
+// One contact into lane `lane` of a block's three parts (a contact's one or two points each
+// written by its own code: no loop over the count).
 template <int Lanes>
 void pack_contact(Contact& contact, ContactBlock<Lanes>& block,
                   ContactBlockSolve<Lanes>& solve, ContactBlockStick<Lanes>& stick, int lane) {
@@ -214,26 +238,10 @@ void pack_contact(Contact& contact, ContactBlock<Lanes>& block,
   solve.friction_at_limit[lane] = 0;
   solve.static_friction[lane] = contact.static_friction;
   solve.dynamic_friction[lane] = contact.dynamic_friction;
-  for (int i = 0; i < contact.point_count; ++i) {
-    const ContactPoint& point = contact.points[i];
-    BlockPointImpulse<Lanes>& impulse = block.points[i];
-    set_lane_points(impulse.anchor_ax, impulse.anchor_ay, impulse.anchor_bx, impulse.anchor_by,
-                    lane, point.anchor_a, point.anchor_b);
-    BlockPointSolve<Lanes>& solved = solve.points[i];
-    set_lane_points(solved.surface_ax, solved.surface_ay, solved.surface_bx, solved.surface_by,
-                    lane, point.local_anchor_a, point.local_anchor_b);
-    solved.rounding[lane] = point.rounding;
-    solved.normal_mass[lane] = point.normal_mass;
-    solved.tangent_mass[lane] = point.tangent_mass;
-    BlockPointStick<Lanes>& stuck = stick.points[i];
-    set_lane_points(stuck.stick_ax, stuck.stick_ay, stuck.stick_bx, stuck.stick_by, lane,
-                    point.recycle_anchor_a, point.recycle_anchor_b);
-    stuck.stick_offset[lane] = point.stick_offset;
-    flags |= (block_point_present << i) | bounce_flags(i, point) |
-             (point.caught ? block_point_caught << i : 0);
-    load_point_values(block, solve, i, lane, point);
-  }
+  flags |= pack_point(contact.points[0], 0, block, solve, stick, lane);
   if (contact.point_count == 2) {
+    flags |= pack_point(contact.points[1], 1, block, solve, stick, lane);
+    // Friction is applied once, at the middle of the two points (see solve_friction).
     const PairSolve& pair = pair_solve_of(contact);
     solve.points[0].tangent_mass[lane] = pair.middle_tangent_mass;
     solve.points[1].tangent_mass[lane] = 0.0f;
@@ -242,10 +250,11 @@ void pack_contact(Contact& contact, ContactBlock<Lanes>& block,
     solve.pair_mass_11[lane] = pair.mass_11;
     if (pair.solvable) flags |= block_point_pair;
   } else {
+    solve.points[0].tangent_mass[lane] = contact.points[0].tangent_mass;
     clear_pair(solve, lane);
+    clear_point(block, solve, 1, lane);
   }
   block.flags[lane] = flags;
-  for (int i = contact.point_count; i < max_manifold_points; ++i) clear_point(block, solve, i, lane);
 }
 
 }  // namespace

@@ -6,8 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <functional>
+#include <iterator>
 #include <vector>
 
 using namespace impulse2d;
@@ -214,4 +217,39 @@ TEST(Snapshot, CorruptBuffersAreErrors) {
   EXPECT_GT(accepted, 0);
   target.restore_snapshot(bytes);
   EXPECT_EQ(target.state_hash(), source.state_hash());
+}
+
+// A contact saved with no points (the narrow phase keeps none such) is refused by name, with
+// its payload hash right: the solvers read a kept contact's first point unasked.
+TEST(Snapshot, AContactWithoutPointsIsRefused) {
+  World source;
+  add_ground(source);
+  BodyDef box;
+  box.type = BodyType::Dynamic;
+  box.position = {0.0f, 0.5f};  // resting on the ground
+  source.create_body(box, make_box({0.5f, 0.5f}));
+  for (int i = 0; i < 5; ++i) source.step();
+  ASSERT_EQ(source.contacts().size(), 1u);
+  const Contact& contact = source.contacts()[0];
+  std::vector<std::uint8_t> bytes = source.save_snapshot();
+  // The contact's normal and point count, as the snapshot writes them (little-endian).
+  std::uint8_t pattern[12];
+  std::memcpy(pattern, &contact.normal.x, 4);
+  std::memcpy(pattern + 4, &contact.normal.y, 4);
+  const std::int32_t count = contact.point_count;
+  std::memcpy(pattern + 8, &count, 4);
+  const auto at = std::search(bytes.begin(), bytes.end(), std::begin(pattern), std::end(pattern));
+  ASSERT_NE(at, bytes.end());
+  std::fill(at + 8, at + 12, std::uint8_t{0});
+  std::uint64_t hash = 14695981039346656037ull;
+  for (std::size_t i = 24; i < bytes.size(); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+  for (int i = 0; i < 8; ++i) bytes[16 + i] = static_cast<std::uint8_t>(hash >> (8 * i));
+  World target;
+  try {
+    target.restore_snapshot(bytes);
+    ADD_FAILURE() << "accepted a contact without points";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("corrupt contact point count 0"), std::string::npos)
+        << error.what();
+  }
 }
