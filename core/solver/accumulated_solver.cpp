@@ -44,7 +44,7 @@ void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context)
     if (context.explicit_euler) stages.integrate_positions(h);  // with the old velocity
     stages.integrate_velocities(h);
     plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false,
-                        stages.solver_body_flags());
+                        stages.solver_body_flags(), stages.solver_bouncing_contacts());
     // Joints: warm-started accumulated impulses, solved before the contacts in every pass with
     // the soft position bias, and relaxed without it after the positions move.
     const bool joints = stages.has_joints();
@@ -62,7 +62,9 @@ void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context)
     }
     if (context.shock_propagation) {
       SupportOrder& order = stages.solver_support_order();
-      build_support_order(contacts, bodies, context.gravity, context.velocity_iterations, order);
+      // Each sub-step collides afresh: its contacts are new.
+      build_support_order(contacts, bodies, context.gravity, context.velocity_iterations,
+                          /*same_contacts=*/false, order);
       solve_shock_pass(contacts, bodies, order, context.block_solver, context.friction);
     }
     if (context.friction) update_friction_state(contacts, bodies);
@@ -73,7 +75,7 @@ void AccumulatedSolver::step(SolverStages& stages, const SolverContext& context)
       joint_pass.use_bias = false;
       for (int i = 0; i < context.velocity_iterations; ++i) solve_joints(stages.solver_joints(), bodies, joint_pass);
     }
-    apply_bounces(contacts, bodies);
+    apply_bounces(contacts, bodies, stages.solver_bouncing_contacts());
     stages.correct_positions();
   }
 }

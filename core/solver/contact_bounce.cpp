@@ -47,18 +47,22 @@ BouncePlan plan_bounce(float approach_speed, float gap, float approach_accelerat
   return plan;
 }
 
-void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+bool plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                          const SolverContext& context, float h, bool bounces_only,
-                         std::vector<std::uint8_t>& bouncing_bodies) {
+                         std::vector<std::uint8_t>& bouncing_bodies,
+                         std::vector<std::uint32_t>& bouncing_contacts) {
   const float inverse_h = 1.0f / h;
   bouncing_bodies.assign(bodies.size(), 0);
+  bouncing_contacts.clear();
   // First the bounces, marking the bodies they involve.
-  for (Contact& contact : contacts) {
+  for (std::size_t index = 0; index < contacts.size(); ++index) {
+    Contact& contact = contacts[index];
     if (!is_solvable(contact)) continue;
     const bool may_bounce = context.restitution && contact.restitution > 0.0f;
     if (bounces_only && !may_bounce) continue;
     const Body& a = bodies[contact.body_a.index];
     const Body& b = bodies[contact.body_b.index];
+    bool contact_bounces = false;
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
       forget_bounce(point);
@@ -72,11 +76,13 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
       point.bouncing = plan.bouncing;
       point.bounce_speed = plan.leave_speed;
       if (plan.bouncing) {
+        contact_bounces = true;
         point.velocity_bias = plan.solve_speed;
         bouncing_bodies[contact.body_a.index] = 1;
         bouncing_bodies[contact.body_b.index] = 1;
       }
     }
+    if (contact_bounces) bouncing_contacts.push_back(static_cast<std::uint32_t>(index));
   }
   // Then the other points: an elastic point beside a bounce that neither approaches, overlaps
   // beyond the slop nor carries impulse waits; the rest get their speculative target.
@@ -92,8 +98,10 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
       ContactPoint& point = contact.points[i];
       point.waiting = false;
       if (point.bouncing) continue;
+      const bool may_wait = may_bounce && beside_bounce;
+      if (bounces_only && !may_wait) continue;  // its target is the soft solver's
       const float gap = current_separation(a, b, contact, point);
-      if (may_bounce && beside_bounce) {
+      if (may_wait) {
         // Does not reach its surface within this step at the velocities the step began with:
         // if the bounce beside drives it in, it collides (and bounces) next step, instead of
         // being stopped inelastically inside this solve.
@@ -108,9 +116,11 @@ void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
       }
     }
   }
+  return !bouncing_contacts.empty();
 }
 
-void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies) {
+void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies,
+                   const std::vector<std::uint32_t>& bouncing_contacts) {
   // Gauss-Seidel passes over the bouncing points only, each pass meeting every bounce's target
   // in turn with accumulated impulses (kept >= 0): the bounces of one step converge together,
   // as the velocity solve's constraints do, so two hits on one body share it as the exact
@@ -118,7 +128,8 @@ void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies) {
   // (the 2x2 block), so a box landing flat leaves flat.
   for (int pass = 0; pass < bounce_passes; ++pass) {
     bool any_bounce = false;
-    for (Contact& contact : contacts) {
+    for (const std::uint32_t index : bouncing_contacts) {
+      Contact& contact = contacts[index];
       if (!is_solvable(contact)) continue;
       Body& a = bodies[contact.body_a.index];
       Body& b = bodies[contact.body_b.index];
@@ -143,7 +154,8 @@ void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies) {
     }
     if (!any_bounce) return;
   }
-  for (Contact& contact : contacts) {
+  for (const std::uint32_t index : bouncing_contacts) {
+    Contact& contact = contacts[index];
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
       if (!point.bouncing) continue;

@@ -43,16 +43,23 @@ BouncePlan plan_bounce(float approach_speed, float gap, float approach_accelerat
 /// step that neither approaches, overlaps nor carries last step's impulse is marked `waiting`
 /// (left out of the solve). With `bounces_only`, points that do not bounce
 /// are left as they are (the soft solver computes their targets itself).
-/// `bouncing_bodies` is scratch (one flag per body slot, reused between calls).
-void plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+/// `bouncing_bodies` is scratch (one flag per body slot, reused between calls);
+/// `bouncing_contacts` is set to the indices of the contacts with a bouncing point, in the
+/// list's order (what `apply_bounces` visits). Returns true when some point bounces (without
+/// one, `apply_bounces` has nothing to do).
+bool plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                          const SolverContext& context, float h, bool bounces_only,
-                         std::vector<std::uint8_t>& bouncing_bodies);
+                         std::vector<std::uint8_t>& bouncing_bodies,
+                         std::vector<std::uint32_t>& bouncing_contacts);
 
 /// After positions moved: raises every bouncing point's relative normal velocity to its
 /// `bounce_speed` (accumulated impulse kept >= 0) in Gauss-Seidel passes over the bouncing
 /// points, so that simultaneous bounces are met together, both points of a manifold at once
-/// (2x2 block); then ends the bounces.
-void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies);
+/// (2x2 block); then ends the bounces. `bouncing_contacts` lists the contacts with a bouncing
+/// point in the list's order, as `plan_contact_speeds` found them (the passes visit only
+/// those).
+void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies,
+                   const std::vector<std::uint32_t>& bouncing_contacts);
 
 /// Current separation (m) of a prepared point, from its core anchors: > 0 apart. Inline: the
 /// soft step asks it for every point in every pass.

@@ -67,7 +67,7 @@ void PerIterationSolver::step(SolverStages& stages, const SolverContext& context
       }
     }
     plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/false,
-                        stages.solver_body_flags());
+                        stages.solver_body_flags(), stages.solver_bouncing_contacts());
     // Joints in the tutorial's form: no memory between steps (nothing warm started), each
     // pass's limit impulse only pushes; motors and force limits bound the step's running total.
     const bool joints = stages.has_joints();
@@ -86,7 +86,7 @@ void PerIterationSolver::step(SolverStages& stages, const SolverContext& context
       joint_pass.use_bias = false;
       for (int i = 0; i < context.velocity_iterations; ++i) solve_joints(stages.solver_joints(), bodies, joint_pass);
     }
-    apply_bounces(contacts, bodies);
+    apply_bounces(contacts, bodies, stages.solver_bouncing_contacts());
     stages.correct_positions();
   }
 }

@@ -119,32 +119,48 @@ bool is_heavy_on_light(const Contact& contact, float mass_ratio) {
 }
 
 void build_support_order(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                         vec2 gravity, int velocity_iterations, SupportOrder& order) {
-  order.contacts_upward.clear();
+                         vec2 gravity, int velocity_iterations, bool same_contacts,
+                         SupportOrder& order) {
   const float g = glm::length(gravity);
-  if (!(g > 0.0f)) return;
+  if (!(g > 0.0f)) {
+    order.contacts_upward.clear();
+    order.supporting.clear();
+    return;
+  }
   const vec2 up = -gravity / g;
-  // Most steps have no heavy-on-light pair at all: then there is no chain to order.
   const float mass_ratio = shock_mass_ratio(velocity_iterations);
-  const auto needs_order = [&](const Contact& contact) {
-    return supports(contact, up) && heavy_on_light(contact, up, bodies, mass_ratio);
-  };
-  if (std::none_of(contacts.begin(), contacts.end(), needs_order)) return;
+  // Which contacts support, asked once of each (the passes below read it four times).
+  order.next_supporting.resize(contacts.size());
+  bool needs_order = false;
+  for (std::size_t index = 0; index < contacts.size(); ++index) {
+    const bool supporting = supports(contacts[index], up);
+    order.next_supporting[index] = supporting ? 1 : 0;
+    needs_order =
+        needs_order || (supporting && heavy_on_light(contacts[index], up, bodies, mass_ratio));
+  }
+  // The rest depends only on which contacts support, the contacts and the bodies' masses.
+  if (same_contacts && order.next_supporting == order.supporting) return;
+  std::swap(order.supporting, order.next_supporting);
+  order.contacts_upward.clear();
+  // Most steps have no heavy-on-light pair at all: then there is no chain to order.
+  if (!needs_order) return;
   const int slots = static_cast<int>(bodies.size());
   order.level.assign(bodies.size(), -1);
   order.edge_start.assign(bodies.size() + 1, 0);
   order.queue.clear();
   // Adjacency in compressed rows: count each body's supporting contacts, then fill.
-  for (const Contact& contact : contacts) {
-    if (!supports(contact, up)) continue;
+  for (std::size_t index = 0; index < contacts.size(); ++index) {
+    if (order.supporting[index] == 0) continue;
+    const Contact& contact = contacts[index];
     ++order.edge_start[contact.body_a.index + 1];
     ++order.edge_start[contact.body_b.index + 1];
   }
   for (int slot = 0; slot < slots; ++slot) order.edge_start[slot + 1] += order.edge_start[slot];
   order.edge_body.resize(static_cast<std::size_t>(order.edge_start[slots]));
   order.queue.assign(order.edge_start.begin(), order.edge_start.end() - 1);  // fill cursors
-  for (const Contact& contact : contacts) {
-    if (!supports(contact, up)) continue;
+  for (std::size_t index = 0; index < contacts.size(); ++index) {
+    if (order.supporting[index] == 0) continue;
+    const Contact& contact = contacts[index];
     const int a = static_cast<int>(contact.body_a.index);
     const int b = static_cast<int>(contact.body_b.index);
     order.edge_body[order.queue[a]++] = b;
@@ -172,8 +188,9 @@ void build_support_order(const std::vector<Contact>& contacts, const std::vector
   // Counting sort of the supporting contacts between levels by the level of their lower body.
   order.level_count.assign(static_cast<std::size_t>(deepest) + 2, 0);
   int between_levels = 0;
-  for (const Contact& contact : contacts) {
-    if (!supports(contact, up) || !lower_is_below(contact, up, order.level)) continue;
+  for (std::size_t index = 0; index < contacts.size(); ++index) {
+    const Contact& contact = contacts[index];
+    if (order.supporting[index] == 0 || !lower_is_below(contact, up, order.level)) continue;
     ++order.level_count[lower_level(contact, order.level) + 1];
     ++between_levels;
   }
@@ -181,7 +198,7 @@ void build_support_order(const std::vector<Contact>& contacts, const std::vector
   order.queue.resize(static_cast<std::size_t>(between_levels));
   for (std::size_t index = 0; index < contacts.size(); ++index) {
     const Contact& contact = contacts[index];
-    if (!supports(contact, up) || !lower_is_below(contact, up, order.level)) continue;
+    if (order.supporting[index] == 0 || !lower_is_below(contact, up, order.level)) continue;
     order.queue[order.level_count[lower_level(contact, order.level)]++] = static_cast<int>(index);
   }
   // From the top down: a contact takes part when it is heavy-on-light or its upper body rests

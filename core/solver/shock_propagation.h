@@ -38,6 +38,10 @@ struct SupportOrder {
   std::vector<int> contacts_upward;
   /// Per body slot: 1 when a heavy body rests on it, directly or through other bodies.
   std::vector<std::uint8_t> under_heavy;
+  /// Per contact of the last build, 1 when it was part of the support graph.
+  std::vector<std::uint8_t> supporting;
+  /// Scratch: the same for the build under way (compared with `supporting`).
+  std::vector<std::uint8_t> next_supporting;
   /// Scratch: per-slot offsets into `edge_body` (size slots + 1).
   std::vector<int> edge_start;
   /// Scratch: the other body of each supporting contact, grouped by body.
@@ -66,9 +70,13 @@ bool is_heavy_on_light(const Contact& contact, float mass_ratio);
 /// is lighter than it by more than `shock_mass_ratio(velocity_iterations)` or carries such a
 /// pair above it: the whole chain that carries the heavy body down to the ground. When no
 /// supporting contact is heavy-on-light (most steps), it returns at once with
-/// `contacts_upward` empty and the rest of `order` left as it was.
+/// `contacts_upward` empty and the rest of `order` left as it was. With `same_contacts` (the
+/// contacts, their normals and the bodies' masses are those of the last build: a later
+/// sub-step of one step), an order whose contacts support as they did is kept as it is: it
+/// would be built again the same.
 void build_support_order(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                         vec2 gravity, int velocity_iterations, SupportOrder& order);
+                         vec2 gravity, int velocity_iterations, bool same_contacts,
+                         SupportOrder& order);
 
 /// One pass over `order.contacts_upward`: the normal impulses (the 2x2 block for two-point
 /// manifolds when `block_solver`, else point by point, toward each point's `velocity_bias`)

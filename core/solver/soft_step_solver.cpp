@@ -98,12 +98,13 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
   if (joints) stages.prepare_joints(h, /*clear_impulses=*/!context.warm_starting);
   for (int substep = 0; substep < context.substeps; ++substep) {
     stages.integrate_solver_velocities(h);
+    bool bounces = false;  // some point bounces in this sub-step
     if (may_bounce) {
       // The plan reads the points' impulses (and drops those of finished bounces).
       wide.store_impulses(contacts);
       states.store(bodies);
-      plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
-                          stages.solver_body_flags());
+      bounces = plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
+                                    stages.solver_body_flags(), stages.solver_bouncing_contacts());
       wide.load_points(contacts);
     }
     if (joints && context.warm_starting) warm_start_joints(joint_list, states.states());
@@ -119,9 +120,13 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
       wide.store_impulses(contacts);
       states.store(bodies);
       SupportOrder& order = stages.solver_support_order();
-      build_support_order(contacts, bodies, context.gravity, context.velocity_iterations, order);
-      solve_shock_pass(contacts, bodies, order, context.block_solver, context.friction);
-      states.load(bodies);
+      // The step's contacts: after the first sub-step, an order that still holds is kept.
+      build_support_order(contacts, bodies, context.gravity, context.velocity_iterations,
+                          /*same_contacts=*/substep > 0, order);
+      if (!order.contacts_upward.empty()) {  // else the pass moves nothing: no need to read back
+        solve_shock_pass(contacts, bodies, order, context.block_solver, context.friction);
+        states.load(bodies);
+      }
     }
     stages.integrate_solver_positions(h);
     joint_pass.use_bias = false;
@@ -131,10 +136,12 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
       }
       wide.solve(context, /*use_bias=*/false, states.states(), stages.workers());  // relax
     }
-    if (may_bounce) {
+    // Without a bounce, applying them changes nothing, and writing the states and impulses out
+    // and reading them back in gives the same bits: both are skipped.
+    if (bounces) {
       wide.store_impulses(contacts);
       states.store(bodies);
-      apply_bounces(contacts, bodies);
+      apply_bounces(contacts, bodies, stages.solver_bouncing_contacts());
       states.load(bodies);
       wide.load_points(contacts);
     }

@@ -69,6 +69,8 @@ class SolverStages {
   std::vector<Body>& solver_bodies() { return world_.bodies; }
   /// Scratch of one flag per body slot for the solver's own use (kept to avoid allocating).
   std::vector<std::uint8_t>& solver_body_flags() { return world_.body_flags; }
+  /// Scratch for the contacts a bounce plan found bouncing (kept to avoid allocating).
+  std::vector<std::uint32_t>& solver_bouncing_contacts() { return world_.bouncing_contacts; }
   /// Scratch for the shock pass's support order (kept to avoid allocating).
   SupportOrder& solver_support_order() { return world_.support_order; }
   /// The compact body states the soft step integrates and solves on (kept to avoid allocating).

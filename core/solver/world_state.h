@@ -54,6 +54,7 @@ struct WorldState {
   std::vector<float> speculative_reach;   ///< per slot, metres (reused)
   std::vector<Aabb> speculative_bounds;   ///< per slot (reused)
   std::vector<std::uint8_t> body_flags;   ///< per slot, solver scratch (reused)
+  std::vector<std::uint32_t> bouncing_contacts;  ///< the bounce plan's contacts (reused)
   SupportOrder support_order;             ///< the shock pass's scratch (reused)
   SolverBodies solver_body_states;        ///< the soft step's compact bodies (reused)
   WideContactSolver wide_contacts;        ///< the soft step's contact arrays (reused)
