@@ -67,8 +67,10 @@ bool plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
       ContactPoint& point = contact.points[i];
       forget_bounce(point);
       BouncePlan plan;
-      if (may_bounce) {
-        const float approach_speed = -glm::dot(relative_velocity(a, b, point), contact.normal);
+      const float approach_speed =
+          may_bounce ? -glm::dot(relative_velocity(a, b, point), contact.normal) : 0.0f;
+      // At or below the threshold plan_bounce plans none whatever the gap: it is not found.
+      if (may_bounce && approach_speed > context.restitution_threshold) {
         plan = plan_bounce(approach_speed, current_separation(a, b, contact, point),
                            contact.approach_acceleration, contact.restitution,
                            context.restitution_threshold, h);
