@@ -47,14 +47,12 @@ BouncePlan plan_bounce(float approach_speed, float gap, float approach_accelerat
   return plan;
 }
 
-bool plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                         const SolverContext& context, float h, bool bounces_only,
-                         std::vector<std::uint8_t>& bouncing_bodies,
-                         std::vector<std::uint32_t>& bouncing_contacts) {
-  const float inverse_h = 1.0f / h;
+bool plan_bounces(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                  const SolverContext& context, float h, bool bounces_only,
+                  std::vector<std::uint8_t>& bouncing_bodies,
+                  std::vector<std::uint32_t>& bouncing_contacts) {
   bouncing_bodies.assign(bodies.size(), 0);
   bouncing_contacts.clear();
-  // First the bounces, marking the bodies they involve.
   for (std::size_t index = 0; index < contacts.size(); ++index) {
     Contact& contact = contacts[index];
     if (!is_solvable(contact)) continue;
@@ -86,8 +84,15 @@ bool plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
     }
     if (contact_bounces) bouncing_contacts.push_back(static_cast<std::uint32_t>(index));
   }
-  // Then the other points: an elastic point beside a bounce that neither approaches, overlaps
-  // beyond the slop nor carries impulse waits; the rest get their speculative target.
+  return !bouncing_contacts.empty();
+}
+
+void plan_waits(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                const SolverContext& context, float h, bool bounces_only,
+                const std::vector<std::uint8_t>& bouncing_bodies) {
+  const float inverse_h = 1.0f / h;
+  // An elastic point beside a bounce that neither approaches, overlaps beyond the slop nor
+  // carries impulse waits; the rest get their speculative target.
   for (Contact& contact : contacts) {
     if (!is_solvable(contact)) continue;
     const bool may_bounce = context.restitution && contact.restitution > 0.0f;
@@ -118,7 +123,16 @@ bool plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>
       }
     }
   }
-  return !bouncing_contacts.empty();
+}
+
+bool plan_contact_speeds(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                         const SolverContext& context, float h, bool bounces_only,
+                         std::vector<std::uint8_t>& bouncing_bodies,
+                         std::vector<std::uint32_t>& bouncing_contacts) {
+  const bool bounces =
+      plan_bounces(contacts, bodies, context, h, bounces_only, bouncing_bodies, bouncing_contacts);
+  plan_waits(contacts, bodies, context, h, bounces_only, bouncing_bodies);
+  return bounces;
 }
 
 void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies,

@@ -37,6 +37,23 @@ struct BouncePlan {
 BouncePlan plan_bounce(float approach_speed, float gap, float approach_acceleration,
                        float restitution, float threshold, float h);
 
+/// The first half of `plan_contact_speeds`: each elastic point's bounce (`bouncing`,
+/// `bounce_speed`, and a bouncing point's `velocity_bias`), after dropping the impulses of a
+/// point whose bounce was applied in an earlier sub-step (`ContactPoint::bounced`); marks the
+/// bodies that bounce in `bouncing_bodies` and lists the contacts in `bouncing_contacts`.
+/// Reads no impulse but those it drops. Returns true when some point bounces.
+bool plan_bounces(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                  const SolverContext& context, float h, bool bounces_only,
+                  std::vector<std::uint8_t>& bouncing_bodies,
+                  std::vector<std::uint32_t>& bouncing_contacts);
+
+/// The second half of `plan_contact_speeds`, after `plan_bounces`: clears every point's
+/// `waiting`, then marks the points that wait beside a bounce (reading their normal impulses)
+/// and, without `bounces_only`, sets the other points' speculative targets.
+void plan_waits(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                const SolverContext& context, float h, bool bounces_only,
+                const std::vector<std::uint8_t>& bouncing_bodies);
+
 /// Sets every point's `velocity_bias` for a (sub-)step of `h` seconds from its current gap
 /// (recomputed from the transforms) and relative velocity: -gap/h while apart, 0 when
 /// touching, or a bounce from `plan_bounce`; an elastic point on a body that bounces in this

@@ -96,16 +96,24 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
   joint_pass.h = h;
   joint_pass.joint_softness = context.joint_softness;
   if (joints) stages.prepare_joints(h, /*clear_impulses=*/!context.warm_starting);
+  // Until a bounce is applied, no point has bounced or waits (the narrow phase and prepare
+  // cleared them): a plan that then finds no bounce changes no point, and neither writes the
+  // impulses out nor reads the points back in.
+  bool bounced_before = false;
   for (int substep = 0; substep < context.substeps; ++substep) {
     stages.integrate_solver_velocities(h);
     bool bounces = false;  // some point bounces in this sub-step
     if (may_bounce) {
-      // The plan reads the points' impulses (and drops those of finished bounces).
-      wide.store_impulses(contacts);
       states.store(bodies);
-      bounces = plan_contact_speeds(contacts, bodies, context, h, /*bounces_only=*/true,
-                                    stages.solver_body_flags(), stages.solver_bouncing_contacts());
-      wide.load_points(contacts);
+      // Dropping the impulses of finished bounces needs the points' impulses written out first.
+      if (bounced_before) wide.store_impulses(contacts);
+      bounces = plan_bounces(contacts, bodies, context, h, /*bounces_only=*/true,
+                             stages.solver_body_flags(), stages.solver_bouncing_contacts());
+      if (bounces || bounced_before) {
+        if (!bounced_before) wide.store_impulses(contacts);  // the waits read the impulses
+        plan_waits(contacts, bodies, context, h, /*bounces_only=*/true, stages.solver_body_flags());
+        wide.load_points(contacts);
+      }
     }
     if (joints && context.warm_starting) warm_start_joints(joint_list, states.states());
     if (context.warm_starting) wide.warm_start(states.states(), stages.workers());
@@ -139,6 +147,7 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
     // Without a bounce, applying them changes nothing, and writing the states and impulses out
     // and reading them back in gives the same bits: both are skipped.
     if (bounces) {
+      bounced_before = true;
       wide.store_impulses(contacts);
       states.store(bodies);
       apply_bounces(contacts, bodies, stages.solver_bouncing_contacts());
