@@ -99,20 +99,29 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
   // Until a bounce is applied, no point has bounced or waits (the narrow phase and prepare
   // cleared them): a plan that then finds no bounce changes no point, and neither writes the
   // impulses out nor reads the points back in.
+  const bool full = stages.full_bounce_stages();  // a test's twin: skip nothing
   bool bounced_before = false;
   for (int substep = 0; substep < context.substeps; ++substep) {
     stages.integrate_solver_velocities(h);
     bool bounces = false;  // some point bounces in this sub-step
     if (may_bounce) {
       states.store(bodies);
-      // Dropping the impulses of finished bounces needs the points' impulses written out first.
-      if (bounced_before) wide.store_impulses(contacts);
-      bounces = plan_bounces(contacts, bodies, context, h, /*bounces_only=*/true,
-                             stages.solver_body_flags(), stages.solver_bouncing_contacts());
-      if (bounces || bounced_before) {
-        if (!bounced_before) wide.store_impulses(contacts);  // the waits read the impulses
+      if (full || bounced_before) {
+        // Dropping the impulses of finished bounces needs the points' impulses written out.
+        wide.store_impulses(contacts);
+        bounces = plan_bounces(contacts, bodies, context, h, /*bounces_only=*/true,
+                               stages.solver_body_flags(), stages.solver_bouncing_contacts());
         plan_waits(contacts, bodies, context, h, /*bounces_only=*/true, stages.solver_body_flags());
         wide.load_points(contacts);
+      } else {
+        bounces = plan_bounces(contacts, bodies, context, h, /*bounces_only=*/true,
+                               stages.solver_body_flags(), stages.solver_bouncing_contacts());
+        if (bounces) {
+          wide.store_impulses(contacts);  // the waits read the impulses
+          plan_waits(contacts, bodies, context, h, /*bounces_only=*/true,
+                     stages.solver_body_flags());
+          wide.load_points(contacts);
+        }
       }
     }
     if (joints && context.warm_starting) warm_start_joints(joint_list, states.states());
@@ -130,8 +139,8 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
       SupportOrder& order = stages.solver_support_order();
       // The step's contacts: after the first sub-step, an order that still holds is kept.
       build_support_order(contacts, bodies, context.gravity, context.velocity_iterations,
-                          /*same_contacts=*/substep > 0, order);
-      if (!order.contacts_upward.empty()) {  // else the pass moves nothing: no need to read back
+                          /*same_contacts=*/substep > 0 && !full, order);
+      if (full || !order.contacts_upward.empty()) {  // else the pass moves nothing: no read-back
         solve_shock_pass(contacts, bodies, order, context.block_solver, context.friction);
         states.load(bodies);
       }
@@ -146,7 +155,7 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
     }
     // Without a bounce, applying them changes nothing, and writing the states and impulses out
     // and reading them back in gives the same bits: both are skipped.
-    if (bounces) {
+    if (bounces || (full && may_bounce)) {
       bounced_before = true;
       wide.store_impulses(contacts);
       states.store(bodies);

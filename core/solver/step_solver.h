@@ -71,6 +71,9 @@ class SolverStages {
   std::vector<std::uint8_t>& solver_body_flags() { return world_.body_flags; }
   /// Scratch for the contacts a bounce plan found bouncing (kept to avoid allocating).
   std::vector<std::uint32_t>& solver_bouncing_contacts() { return world_.bouncing_contacts; }
+  /// True when a test asks the bounce and shock stages to skip nothing
+  /// (`WorldState::full_bounce_stages`).
+  bool full_bounce_stages() const { return world_.full_bounce_stages; }
   /// Scratch for the shock pass's support order (kept to avoid allocating).
   SupportOrder& solver_support_order() { return world_.support_order; }
   /// The compact body states the soft step integrates and solves on (kept to avoid allocating).

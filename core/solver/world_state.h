@@ -55,6 +55,10 @@ struct WorldState {
   std::vector<Aabb> speculative_bounds;   ///< per slot (reused)
   std::vector<std::uint8_t> body_flags;   ///< per slot, solver scratch (reused)
   std::vector<std::uint32_t> bouncing_contacts;  ///< the bounce plan's contacts (reused)
+  /// Test hook: the soft step's bounce and shock stages write the states and impulses out and
+  /// read them back in every sub-step, and build the support order afresh, skipping nothing
+  /// (the skips must give the same bits).
+  bool full_bounce_stages = false;
   SupportOrder support_order;             ///< the shock pass's scratch (reused)
   SolverBodies solver_body_states;        ///< the soft step's compact bodies (reused)
   WideContactSolver wide_contacts;        ///< the soft step's contact arrays (reused)
