@@ -144,9 +144,8 @@ void apply_bounces(std::vector<Contact>& contacts, std::vector<Body>& bodies,
   // (the 2x2 block), so a box landing flat leaves flat.
   for (int pass = 0; pass < bounce_passes; ++pass) {
     bool any_bounce = false;
-    for (const std::uint32_t index : bouncing_contacts) {
+    for (const std::uint32_t index : bouncing_contacts) {  // solvable: the plan listed them
       Contact& contact = contacts[index];
-      if (!is_solvable(contact)) continue;
       Body& a = bodies[contact.body_a.index];
       Body& b = bodies[contact.body_b.index];
       int bouncing = 0;

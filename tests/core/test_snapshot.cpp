@@ -17,6 +17,14 @@ using namespace impulse2d;
 
 namespace {
 
+// Writes the FNV-1a hash of a snapshot's payload (from byte 24) into its header (bytes 16-23),
+// so that a payload changed by a test still passes the reader's hash check.
+void rehash_payload(std::vector<std::uint8_t>& bytes) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (std::size_t i = 24; i < bytes.size(); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+  for (int i = 0; i < 8; ++i) bytes[16 + i] = static_cast<std::uint8_t>(hash >> (8 * i));
+}
+
 void add_ground(World& world) {
   BodyDef ground;
   ground.type = BodyType::Static;
@@ -202,9 +210,7 @@ TEST(Snapshot, CorruptBuffersAreErrors) {
   for (std::size_t at = 24; at < bytes.size(); at += 11) {
     std::vector<std::uint8_t> flipped = bytes;
     flipped[at] ^= 0xFF;
-    std::uint64_t hash = 14695981039346656037ull;
-    for (std::size_t i = 24; i < flipped.size(); ++i) hash = (hash ^ flipped[i]) * 1099511628211ull;
-    for (int i = 0; i < 8; ++i) flipped[16 + i] = static_cast<std::uint8_t>(hash >> (8 * i));
+    rehash_payload(flipped);
     World scratch;
     try {
       scratch.restore_snapshot(flipped);
@@ -241,9 +247,7 @@ TEST(Snapshot, AContactWithoutPointsIsRefused) {
   const auto at = std::search(bytes.begin(), bytes.end(), std::begin(pattern), std::end(pattern));
   ASSERT_NE(at, bytes.end());
   std::fill(at + 8, at + 12, std::uint8_t{0});
-  std::uint64_t hash = 14695981039346656037ull;
-  for (std::size_t i = 24; i < bytes.size(); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
-  for (int i = 0; i < 8; ++i) bytes[16 + i] = static_cast<std::uint8_t>(hash >> (8 * i));
+  rehash_payload(bytes);
   World target;
   try {
     target.restore_snapshot(bytes);
