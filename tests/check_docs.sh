@@ -33,6 +33,7 @@ not_run=(
   '^c\+\+ '                           'compiles against an installed impulse2d: the consumer_installed test does it'
   '^(\./)?crate$'                     'the program the previous line compiles'
   '(^| )build/bench/'                 'benchmark programs, not the impulse2d target (minutes); bench_compare_smoke runs one'
+  '^([A-Z_]+=[^ ]+ )*valgrind '       'instruction counts: minutes under valgrind, which no sanitizer build can run under and setup.sh does not install'
 )
 # impulse2d commands run with --dry-run only (regex, reason).
 dry_run_only=(
