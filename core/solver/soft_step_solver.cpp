@@ -154,14 +154,24 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
       wide.solve(context, /*use_bias=*/false, states.states(), stages.workers());  // relax
     }
     // Without a bounce, applying them changes nothing, and writing the states and impulses out
-    // and reading them back in gives the same bits: both are skipped.
-    if (bounces || (full && may_bounce)) {
+    // and reading them back in gives the same bits: both are skipped. With one, only the
+    // bouncing contacts and their bodies are read and changed: only they go out and back in
+    // (what every later reader of the contacts and bodies reads is written out in full first).
+    if (full && may_bounce) {
       bounced_before = true;
       wide.store_impulses(contacts);
       states.store(bodies);
       apply_bounces(contacts, bodies, stages.solver_bouncing_contacts());
       states.load(bodies);
       wide.load_points(contacts);
+    } else if (bounces) {
+      bounced_before = true;
+      const std::vector<std::uint32_t>& bouncing = stages.solver_bouncing_contacts();
+      wide.store_impulses_of(contacts, bouncing);
+      states.store_bodies_of(bodies, contacts, bouncing);
+      apply_bounces(contacts, bodies, bouncing);
+      states.load_bodies_of(bodies, contacts, bouncing);
+      wide.load_points_of(contacts, bouncing);
     }
   }
 }

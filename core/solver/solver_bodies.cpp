@@ -153,39 +153,59 @@ void SolverBodies::integrate_positions_of(float dt, Slots slots) {
 
 void SolverBodies::store(std::vector<Body>& bodies, WorkerPool* pool) const {
   parallel_for(pool, states_.size(), min_slots_per_chunk, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::uint32_t flags = integration_[i].flags;
-      const SolverBody& state = states_[i];
-      Body& body = bodies[i];
-      if ((flags & flag_solved) != 0) {
-        body.linear_velocity = vec2(state.velocity_x, state.velocity_y);
-        body.angular_velocity = state.angular_velocity;
-      }
-      if ((flags & flag_moves) == 0) continue;
-      body.angle = state.angle;
-      body.transform.position = vec2(state.position_x, state.position_y);
-      body.transform.rotation = Rotation{state.cosine, state.sine};
-    }
+    for (std::size_t i = begin; i < end; ++i) store_slot(i, bodies[i]);
   });
 }
 
 void SolverBodies::load(const std::vector<Body>& bodies) {
-  for (std::size_t i = 0; i < states_.size(); ++i) {
-    const std::uint32_t flags = integration_[i].flags;
-    const Body& body = bodies[i];
-    SolverBody& state = states_[i];
-    if ((flags & flag_solved) != 0) {
-      state.velocity_x = body.linear_velocity.x;
-      state.velocity_y = body.linear_velocity.y;
-      state.angular_velocity = body.angular_velocity;
-    }
-    if ((flags & flag_moves) == 0) continue;
-    state.angle = body.angle;
-    state.position_x = body.transform.position.x;
-    state.position_y = body.transform.position.y;
-    state.cosine = body.transform.rotation.cosine;
-    state.sine = body.transform.rotation.sine;
+  for (std::size_t i = 0; i < states_.size(); ++i) load_slot(i, bodies[i]);
+}
+
+void SolverBodies::store_bodies_of(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                                   const std::vector<std::uint32_t>& listed) const {
+  for (const std::uint32_t index : listed) {
+    const Contact& contact = contacts[index];
+    store_slot(contact.body_a.index, bodies[contact.body_a.index]);
+    store_slot(contact.body_b.index, bodies[contact.body_b.index]);
   }
+}
+
+void SolverBodies::load_bodies_of(const std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                                  const std::vector<std::uint32_t>& listed) {
+  for (const std::uint32_t index : listed) {
+    const Contact& contact = contacts[index];
+    load_slot(contact.body_a.index, bodies[contact.body_a.index]);
+    load_slot(contact.body_b.index, bodies[contact.body_b.index]);
+  }
+}
+
+void SolverBodies::store_slot(std::size_t slot, Body& body) const {
+  const std::uint32_t flags = integration_[slot].flags;
+  const SolverBody& state = states_[slot];
+  if ((flags & flag_solved) != 0) {
+    body.linear_velocity = vec2(state.velocity_x, state.velocity_y);
+    body.angular_velocity = state.angular_velocity;
+  }
+  if ((flags & flag_moves) == 0) return;
+  body.angle = state.angle;
+  body.transform.position = vec2(state.position_x, state.position_y);
+  body.transform.rotation = Rotation{state.cosine, state.sine};
+}
+
+void SolverBodies::load_slot(std::size_t slot, const Body& body) {
+  const std::uint32_t flags = integration_[slot].flags;
+  SolverBody& state = states_[slot];
+  if ((flags & flag_solved) != 0) {
+    state.velocity_x = body.linear_velocity.x;
+    state.velocity_y = body.linear_velocity.y;
+    state.angular_velocity = body.angular_velocity;
+  }
+  if ((flags & flag_moves) == 0) return;
+  state.angle = body.angle;
+  state.position_x = body.transform.position.x;
+  state.position_y = body.transform.position.y;
+  state.cosine = body.transform.rotation.cosine;
+  state.sine = body.transform.rotation.sine;
 }
 
 }  // namespace impulse2d

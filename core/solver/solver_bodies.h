@@ -7,6 +7,7 @@
 /// body instead of the ~340 of a `Body`. The arithmetic is `integrate.h`'s, operation for
 /// operation, so the results are bit-identical to integrating the `Body`s themselves.
 
+#include "core/contact.h"
 #include "core/solver/body_state.h"
 #include "core/settings.h"
 #include "core/solver/solver_body.h"
@@ -63,6 +64,13 @@ class SolverBodies {
   /// Reads what `store` writes back in (after a stage that works
   /// on the `Body`s changed them: bounces, bullet sweeps).
   void load(const std::vector<Body>& bodies);
+  /// `store` for the slots of the bodies of the contacts listed in `listed` (indices into
+  /// `contacts`) only, on this thread (a slot named twice is written twice, alike).
+  void store_bodies_of(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                       const std::vector<std::uint32_t>& listed) const;
+  /// `load` for the same slots only.
+  void load_bodies_of(const std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                      const std::vector<std::uint32_t>& listed);
   /// True when some moving body is a bullet (the continuous sweep has work this step).
   bool has_bullets() const { return has_bullets_; }
   /// The states, one per body slot, for the contact solver.
@@ -74,6 +82,9 @@ class SolverBodies {
   void integrate_velocities_of(float dt, Slots slots);
   template <class Slots>
   void integrate_positions_of(float dt, Slots slots);
+  // `store` and `load` of one slot.
+  void store_slot(std::size_t slot, Body& body) const;
+  void load_slot(std::size_t slot, const Body& body);
 
   std::vector<SolverBody> states_;
   std::vector<BodyIntegration> integration_;

@@ -62,6 +62,26 @@ void for_each_point(Blocks& packed, Contacts& contacts, Visit visit) {
   }
 }
 
+// `for_each_point` for the contacts listed in `listed` (indices into `contacts`) only, in the
+// list's order: `lane_of_contact` and `colouring` say where each is packed in `packed` (a
+// `Colours`); contacts not solved are passed over.
+template <int Lanes, class Packed, class Contacts, class Visit>
+void for_each_listed_point(Packed& packed, const std::vector<std::int32_t>& lane_of_contact,
+                           const ContactColouring& colouring, Contacts& contacts,
+                           const std::vector<std::uint32_t>& listed, Visit visit) {
+  for (const std::uint32_t index : listed) {
+    const std::int32_t slot = lane_of_contact[index];
+    if (slot < 0) continue;
+    auto& blocks = packed[static_cast<std::size_t>(colouring.colour_of(index))];
+    const std::size_t block = static_cast<std::size_t>(slot) / Lanes;
+    const int lane = static_cast<int>(static_cast<std::size_t>(slot) % Lanes);
+    auto& contact = contacts[index];
+    for (int i = 0; i < contact.point_count; ++i) {
+      visit(blocks.blocks[block], blocks.solves[block], i, lane, contact.points[i]);
+    }
+  }
+}
+
 
 // The blocks [first, first + count) of `arrays`.
 template <int Lanes>
@@ -539,6 +559,32 @@ void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
     for (const auto& blocks : colours_8_) for_each_point(blocks, contacts, store);
   } else {
     for (const auto& blocks : colours_4_) for_each_point(blocks, contacts, store);
+  }
+}
+
+void WideContactSolver::load_points_of(const std::vector<Contact>& contacts,
+                                       const std::vector<std::uint32_t>& listed) {
+  auto load = [](auto& block, auto& solve, int slot, int lane, const ContactPoint& point) {
+    load_point_state(block, solve, slot, lane, point);
+  };
+  if (lanes_ == 8) {
+    for_each_listed_point<8>(colours_8_, lane_of_contact_, colouring_, contacts, listed, load);
+  } else {
+    for_each_listed_point<4>(colours_4_, lane_of_contact_, colouring_, contacts, listed, load);
+  }
+}
+
+void WideContactSolver::store_impulses_of(std::vector<Contact>& contacts,
+                                          const std::vector<std::uint32_t>& listed) const {
+  auto store = [](const auto& block, const auto& solve, int slot, int lane, ContactPoint& point) {
+    point.normal_impulse = block.points[slot].normal_impulse[lane];
+    point.tangent_impulse = block.points[slot].tangent_impulse[lane];
+    point.friction_at_limit = (solve.friction_at_limit[lane] & (1 << slot)) != 0;
+  };
+  if (lanes_ == 8) {
+    for_each_listed_point<8>(colours_8_, lane_of_contact_, colouring_, contacts, listed, store);
+  } else {
+    for_each_listed_point<4>(colours_4_, lane_of_contact_, colouring_, contacts, listed, store);
   }
 }
 

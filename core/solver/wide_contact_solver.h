@@ -57,6 +57,10 @@ class WideContactSolver final : public ContactVisitor {
   void load_points(const std::vector<Contact>& contacts);
   /// Copies each point's accumulated impulses and `friction_at_limit` out to the contacts.
   void store_impulses(std::vector<Contact>& contacts) const;
+  /// `store_impulses` for the contacts listed in `listed` (indices into `contacts`) only.
+  void store_impulses_of(std::vector<Contact>& contacts, const std::vector<std::uint32_t>& listed) const;
+  /// `load_points` for the contacts listed in `listed` only.
+  void load_points_of(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& listed);
   /// The same in one walk over the list in its order that does other work too: each contact's
   /// impulses are written back (if it was solved), then `then(contact)` is called on it.
   template <class Then>
