@@ -30,6 +30,16 @@ void forget_bounce(ContactPoint& point) {
   point.bounced = false;
 }
 
+// True when some point of the contact has bounced, bounces or waits: a plan of an earlier
+// sub-step that the next plan changes.
+bool has_bounce_plan(const Contact& contact) {
+  for (int i = 0; i < contact.point_count; ++i) {
+    const ContactPoint& point = contact.points[i];
+    if (point.bounced || point.bouncing || point.waiting) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 BouncePlan plan_bounce(float approach_speed, float gap, float approach_acceleration,
@@ -50,7 +60,7 @@ BouncePlan plan_bounce(float approach_speed, float gap, float approach_accelerat
 bool plan_bounces(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                   const SolverContext& context, float h, bool bounces_only,
                   std::vector<std::uint8_t>& bouncing_bodies,
-                  std::vector<std::uint32_t>& bouncing_contacts) {
+                  std::vector<std::uint32_t>& bouncing_contacts, ContactWriteOut* write_out) {
   bouncing_bodies.assign(bodies.size(), 0);
   bouncing_contacts.clear();
   for (std::size_t index = 0; index < contacts.size(); ++index) {
@@ -60,6 +70,10 @@ bool plan_bounces(std::vector<Contact>& contacts, const std::vector<Body>& bodie
     if (bounces_only && !may_bounce) continue;
     const Body& a = bodies[contact.body_a.index];
     const Body& b = bodies[contact.body_b.index];
+    // (A contact that bounces now is asked for by plan_waits: its bodies bounce.)
+    if (write_out != nullptr && has_bounce_plan(contact)) {
+      write_out->write_out(static_cast<std::uint32_t>(index));
+    }
     bool contact_bounces = false;
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
@@ -89,11 +103,12 @@ bool plan_bounces(std::vector<Contact>& contacts, const std::vector<Body>& bodie
 
 void plan_waits(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                 const SolverContext& context, float h, bool bounces_only,
-                const std::vector<std::uint8_t>& bouncing_bodies) {
+                const std::vector<std::uint8_t>& bouncing_bodies, ContactWriteOut* write_out) {
   const float inverse_h = 1.0f / h;
   // An elastic point beside a bounce that neither approaches, overlaps beyond the slop nor
   // carries impulse waits; the rest get their speculative target.
-  for (Contact& contact : contacts) {
+  for (std::size_t index = 0; index < contacts.size(); ++index) {
+    Contact& contact = contacts[index];
     if (!is_solvable(contact)) continue;
     const bool may_bounce = context.restitution && contact.restitution > 0.0f;
     if (bounces_only && !may_bounce) continue;
@@ -101,6 +116,9 @@ void plan_waits(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
     const Body& b = bodies[contact.body_b.index];
     const bool beside_bounce =
         bouncing_bodies[contact.body_a.index] != 0 || bouncing_bodies[contact.body_b.index] != 0;
+    if (write_out != nullptr && may_bounce && beside_bounce) {
+      write_out->write_out(static_cast<std::uint32_t>(index));
+    }
     for (int i = 0; i < contact.point_count; ++i) {
       ContactPoint& point = contact.points[i];
       point.waiting = false;

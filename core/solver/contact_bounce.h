@@ -37,22 +37,42 @@ struct BouncePlan {
 BouncePlan plan_bounce(float approach_speed, float gap, float approach_acceleration,
                        float restitution, float threshold, float h);
 
+/// What the bounce plans ask before they read or change a contact's accumulated impulses, or
+/// change its plan: a solver that keeps the impulses elsewhere while it runs (the soft step's
+/// lanes) writes that contact's out, and reads back in exactly the contacts written out. The
+/// plans' other callers keep the contacts current and pass none.
+class ContactWriteOut {
+ public:
+  virtual ~ContactWriteOut() = default;
+  /// Writes the accumulated impulses of contact `index` (of the list) out to it, unless they
+  /// were written out since the last read-back: a plan may ask twice, and may have changed
+  /// them in between.
+  virtual void write_out(std::uint32_t index) = 0;
+};
+
 /// The first half of `plan_contact_speeds`: each elastic point's bounce (`bouncing`,
 /// `bounce_speed`, and a bouncing point's `velocity_bias`), after dropping the impulses of a
 /// point whose bounce was applied in an earlier sub-step (`ContactPoint::bounced`); marks the
 /// bodies that bounce in `bouncing_bodies` and lists the contacts in `bouncing_contacts`.
-/// Reads no impulse but those it drops. Returns true when some point bounces.
+/// Reads no impulse but those it drops. Returns true when some point bounces. With a
+/// `write_out`, it is asked for every contact with a point that has bounced, bounces or waits
+/// (an earlier sub-step's plan), before anything of it changes.
 bool plan_bounces(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                   const SolverContext& context, float h, bool bounces_only,
                   std::vector<std::uint8_t>& bouncing_bodies,
-                  std::vector<std::uint32_t>& bouncing_contacts);
+                  std::vector<std::uint32_t>& bouncing_contacts,
+                  ContactWriteOut* write_out = nullptr);
 
 /// The second half of `plan_contact_speeds`, after `plan_bounces`: clears every point's
 /// `waiting`, then marks the points that wait beside a bounce (reading their normal impulses)
-/// and, without `bounces_only`, sets the other points' speculative targets.
+/// and, without `bounces_only`, sets the other points' speculative targets. With a
+/// `write_out`, it is asked for every elastic contact beside a bounce (the bouncing contacts
+/// among them) before its impulses are read; a contact whose wait ends was asked for by
+/// `plan_bounces`.
 void plan_waits(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                 const SolverContext& context, float h, bool bounces_only,
-                const std::vector<std::uint8_t>& bouncing_bodies);
+                const std::vector<std::uint8_t>& bouncing_bodies,
+                ContactWriteOut* write_out = nullptr);
 
 /// Sets every point's `velocity_bias` for a (sub-)step of `h` seconds from its current gap
 /// (recomputed from the transforms) and relative velocity: -gap/h while apart, 0 when

@@ -20,6 +20,18 @@ namespace {
 // contacts, so the passes cost little.
 constexpr int kJointPasses = 4;
 
+// The bounce plans' contacts written out of (and later read back into) the wide solver's lanes.
+class LaneWriteOut final : public ContactWriteOut {
+ public:
+  LaneWriteOut(WideContactSolver& wide, std::vector<Contact>& contacts)
+      : wide_(wide), contacts_(contacts) {}
+  void write_out(std::uint32_t index) override { wide_.write_out(contacts_, index); }
+
+ private:
+  WideContactSolver& wide_;
+  std::vector<Contact>& contacts_;
+};
+
 }  // namespace
 
 void SoftStepSolver::step(SolverStages& stages, const SolverContext& context) const {
@@ -96,18 +108,16 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
   joint_pass.h = h;
   joint_pass.joint_softness = context.joint_softness;
   if (joints) stages.prepare_joints(h, /*clear_impulses=*/!context.warm_starting);
-  // Until a bounce is applied, no point has bounced or waits (the narrow phase and prepare
-  // cleared them): a plan that then finds no bounce changes no point, and neither writes the
-  // impulses out nor reads the points back in.
+  // The plans ask for each contact they read or change (ContactWriteOut): only those go out
+  // and back in (for the rest, reading back what was written out would be a copy).
   const bool full = stages.full_bounce_stages();  // a test's twin: skip nothing
-  bool bounced_before = false;
+  LaneWriteOut lanes(wide, contacts);
   for (int substep = 0; substep < context.substeps; ++substep) {
     stages.integrate_solver_velocities(h);
     bool bounces = false;  // some point bounces in this sub-step
     if (may_bounce) {
       states.store(bodies);
-      if (full || bounced_before) {
-        // Dropping the impulses of finished bounces needs the points' impulses written out.
+      if (full) {
         wide.store_impulses(contacts);
         bounces = plan_bounces(contacts, bodies, context, h, /*bounces_only=*/true,
                                stages.solver_body_flags(), stages.solver_bouncing_contacts());
@@ -115,13 +125,13 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
         wide.load_points(contacts);
       } else {
         bounces = plan_bounces(contacts, bodies, context, h, /*bounces_only=*/true,
-                               stages.solver_body_flags(), stages.solver_bouncing_contacts());
-        if (bounces) {
-          wide.store_impulses(contacts);  // the waits read the impulses
+                               stages.solver_body_flags(), stages.solver_bouncing_contacts(), &lanes);
+        // Without a bounce and with no earlier plan to undo, no point waits or stops waiting.
+        if (bounces || wide.has_written_out()) {
           plan_waits(contacts, bodies, context, h, /*bounces_only=*/true,
-                     stages.solver_body_flags());
-          wide.load_points(contacts);
+                     stages.solver_body_flags(), &lanes);
         }
+        wide.read_back_written(contacts);
       }
     }
     if (joints && context.warm_starting) warm_start_joints(joint_list, states.states());
@@ -158,14 +168,12 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
     // bouncing contacts and their bodies are read and changed: only they go out and back in
     // (what every later reader of the contacts and bodies reads is written out in full first).
     if (full && may_bounce) {
-      bounced_before = true;
       wide.store_impulses(contacts);
       states.store(bodies);
       apply_bounces(contacts, bodies, stages.solver_bouncing_contacts());
       states.load(bodies);
       wide.load_points(contacts);
     } else if (bounces) {
-      bounced_before = true;
       const std::vector<std::uint32_t>& bouncing = stages.solver_bouncing_contacts();
       wide.store_impulses_of(contacts, bouncing);
       states.store_bodies_of(bodies, contacts, bouncing);

@@ -62,14 +62,15 @@ void for_each_point(Blocks& packed, Contacts& contacts, Visit visit) {
   }
 }
 
-// `for_each_point` for the contacts listed in `listed` (indices into `contacts`) only, in the
-// list's order: `lane_of_contact` and `colouring` say where each is packed in `packed` (a
+// `for_each_point` for the `count` contacts listed at `listed` (indices into `contacts`) only,
+// in that order: `lane_of_contact` and `colouring` say where each is packed in `packed` (a
 // `Colours`); contacts not solved are passed over.
 template <int Lanes, class Packed, class Contacts, class Visit>
 void for_each_listed_point(Packed& packed, const std::vector<std::int32_t>& lane_of_contact,
                            const ContactColouring& colouring, Contacts& contacts,
-                           const std::vector<std::uint32_t>& listed, Visit visit) {
-  for (const std::uint32_t index : listed) {
+                           const std::uint32_t* listed, std::size_t count, Visit visit) {
+  for (std::size_t n = 0; n < count; ++n) {
+    const std::uint32_t index = listed[n];
     const std::int32_t slot = lane_of_contact[index];
     if (slot < 0) continue;
     auto& blocks = packed[static_cast<std::size_t>(colouring.colour_of(index))];
@@ -564,27 +565,51 @@ void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
 
 void WideContactSolver::load_points_of(const std::vector<Contact>& contacts,
                                        const std::vector<std::uint32_t>& listed) {
+  load_points_listed(contacts, listed.data(), listed.size());
+}
+
+void WideContactSolver::load_points_listed(const std::vector<Contact>& contacts,
+                                           const std::uint32_t* listed, std::size_t count) {
   auto load = [](auto& block, auto& solve, int slot, int lane, const ContactPoint& point) {
     load_point_state(block, solve, slot, lane, point);
   };
   if (lanes_ == 8) {
-    for_each_listed_point<8>(colours_8_, lane_of_contact_, colouring_, contacts, listed, load);
+    for_each_listed_point<8>(colours_8_, lane_of_contact_, colouring_, contacts, listed, count, load);
   } else {
-    for_each_listed_point<4>(colours_4_, lane_of_contact_, colouring_, contacts, listed, load);
+    for_each_listed_point<4>(colours_4_, lane_of_contact_, colouring_, contacts, listed, count, load);
   }
+}
+
+void WideContactSolver::write_out(std::vector<Contact>& contacts, std::uint32_t index) {
+  if (written_out_.size() < contacts.size()) written_out_.resize(contacts.size(), 0);
+  if (written_out_[index] != 0) return;
+  written_out_[index] = 1;
+  written_list_.push_back(index);
+  store_impulses_listed(contacts, &index, 1);
+}
+
+void WideContactSolver::read_back_written(const std::vector<Contact>& contacts) {
+  load_points_listed(contacts, written_list_.data(), written_list_.size());
+  for (const std::uint32_t index : written_list_) written_out_[index] = 0;
+  written_list_.clear();
 }
 
 void WideContactSolver::store_impulses_of(std::vector<Contact>& contacts,
                                           const std::vector<std::uint32_t>& listed) const {
+  store_impulses_listed(contacts, listed.data(), listed.size());
+}
+
+void WideContactSolver::store_impulses_listed(std::vector<Contact>& contacts,
+                                              const std::uint32_t* listed, std::size_t count) const {
   auto store = [](const auto& block, const auto& solve, int slot, int lane, ContactPoint& point) {
     point.normal_impulse = block.points[slot].normal_impulse[lane];
     point.tangent_impulse = block.points[slot].tangent_impulse[lane];
     point.friction_at_limit = (solve.friction_at_limit[lane] & (1 << slot)) != 0;
   };
   if (lanes_ == 8) {
-    for_each_listed_point<8>(colours_8_, lane_of_contact_, colouring_, contacts, listed, store);
+    for_each_listed_point<8>(colours_8_, lane_of_contact_, colouring_, contacts, listed, count, store);
   } else {
-    for_each_listed_point<4>(colours_4_, lane_of_contact_, colouring_, contacts, listed, store);
+    for_each_listed_point<4>(colours_4_, lane_of_contact_, colouring_, contacts, listed, count, store);
   }
 }
 

@@ -61,6 +61,13 @@ class WideContactSolver final : public ContactVisitor {
   void store_impulses_of(std::vector<Contact>& contacts, const std::vector<std::uint32_t>& listed) const;
   /// `load_points` for the contacts listed in `listed` only.
   void load_points_of(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& listed);
+  /// Writes contact `index`'s impulses out (`store_impulses` for it alone) unless it was
+  /// written out since the last `read_back_written`, and remembers it.
+  void write_out(std::vector<Contact>& contacts, std::uint32_t index);
+  /// `load_points` for the contacts written out since the last call, which it then forgets.
+  void read_back_written(const std::vector<Contact>& contacts);
+  /// True when some contact was written out since the last `read_back_written`.
+  bool has_written_out() const { return !written_list_.empty(); }
   /// The same in one walk over the list in its order that does other work too: each contact's
   /// impulses are written back (if it was solved), then `then(contact)` is called on it.
   template <class Then>
@@ -192,6 +199,11 @@ class WideContactSolver final : public ContactVisitor {
   void finish_packing(std::vector<Contact>& contacts);
   template <int Lanes, class Then>
   void store_impulses_in_order(std::vector<Contact>& contacts, Then then) const;
+  /// `store_impulses` and `load_points` for the `count` contacts listed at `listed` only.
+  void store_impulses_listed(std::vector<Contact>& contacts, const std::uint32_t* listed,
+                             std::size_t count) const;
+  void load_points_listed(const std::vector<Contact>& contacts, const std::uint32_t* listed,
+                          std::size_t count);
 
   /// Runs `pass(arrays)` over each colour's blocks in turn (`arrays` a range of them), shared
   /// among `pool`'s workers, then over the overflow blocks on this thread.
@@ -235,6 +247,10 @@ class WideContactSolver final : public ContactVisitor {
   /// Per contact of the list: its lane among its colour's blocks' lanes (block * lanes +
   /// lane; the colour is `colouring_.colour_of`), -1 when it is not solved.
   std::vector<std::int32_t> lane_of_contact_;
+  /// Per contact of the list: 1 when written out since the last `read_back_written` (grown on
+  /// demand; all 0 between read-backs).
+  std::vector<std::uint8_t> written_out_;
+  std::vector<std::uint32_t> written_list_;  ///< those contacts, in the order written out
 };
 
 template <int Lanes, class Then>
