@@ -175,11 +175,11 @@ void SoftStepSolver::solve_pass_by_pass(SolverStages& stages, const SolverContex
       wide.load_points(contacts);
     } else if (bounces) {
       const std::vector<std::uint32_t>& bouncing = stages.solver_bouncing_contacts();
-      wide.store_impulses_of(contacts, bouncing);
+      for (const std::uint32_t index : bouncing) wide.write_out(contacts, index);
       states.store_bodies_of(bodies, contacts, bouncing);
       apply_bounces(contacts, bodies, bouncing);
       states.load_bodies_of(bodies, contacts, bouncing);
-      wide.load_points_of(contacts, bouncing);
+      wide.read_back_written(contacts);
     }
   }
 }

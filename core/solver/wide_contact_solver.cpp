@@ -563,11 +563,6 @@ void WideContactSolver::store_impulses(std::vector<Contact>& contacts) const {
   }
 }
 
-void WideContactSolver::load_points_of(const std::vector<Contact>& contacts,
-                                       const std::vector<std::uint32_t>& listed) {
-  load_points_listed(contacts, listed.data(), listed.size());
-}
-
 void WideContactSolver::load_points_listed(const std::vector<Contact>& contacts,
                                            const std::uint32_t* listed, std::size_t count) {
   auto load = [](auto& block, auto& solve, int slot, int lane, const ContactPoint& point) {
@@ -592,11 +587,6 @@ void WideContactSolver::read_back_written(const std::vector<Contact>& contacts) 
   load_points_listed(contacts, written_list_.data(), written_list_.size());
   for (const std::uint32_t index : written_list_) written_out_[index] = 0;
   written_list_.clear();
-}
-
-void WideContactSolver::store_impulses_of(std::vector<Contact>& contacts,
-                                          const std::vector<std::uint32_t>& listed) const {
-  store_impulses_listed(contacts, listed.data(), listed.size());
 }
 
 void WideContactSolver::store_impulses_listed(std::vector<Contact>& contacts,

@@ -57,10 +57,6 @@ class WideContactSolver final : public ContactVisitor {
   void load_points(const std::vector<Contact>& contacts);
   /// Copies each point's accumulated impulses and `friction_at_limit` out to the contacts.
   void store_impulses(std::vector<Contact>& contacts) const;
-  /// `store_impulses` for the contacts listed in `listed` (indices into `contacts`) only.
-  void store_impulses_of(std::vector<Contact>& contacts, const std::vector<std::uint32_t>& listed) const;
-  /// `load_points` for the contacts listed in `listed` only.
-  void load_points_of(const std::vector<Contact>& contacts, const std::vector<std::uint32_t>& listed);
   /// Writes contact `index`'s impulses out (`store_impulses` for it alone) unless it was
   /// written out since the last `read_back_written`, and remembers it.
   void write_out(std::vector<Contact>& contacts, std::uint32_t index);
