@@ -196,25 +196,38 @@ std::uint32_t PrimitiveRenderer::add_software_parameters(const V& shape) {
   return static_cast<std::uint32_t>(list->size() - 1);
 }
 
+namespace {
+
+// The pixels [first, last] of a row (or column) `size` pixels long whose centres (i + 0.5) lie
+// in [low, high]; first > last when there are none or a bound is NaN. The bounds are first
+// brought within a pixel of the row, where an integer conversion rounds them exactly (the
+// ceiling and floor of the rounded values, without a libm call).
+void pixel_span(float low, float high, int size, int& first, int& last) {
+  first = 0;
+  last = -1;
+  if (!(low <= high)) return;
+  const float end = static_cast<float>(size);
+  const float from = std::min(std::max(low - 0.5f, -1.0f), end);
+  const float to = std::min(std::max(high - 0.5f, -1.0f), end);
+  int ceiling = static_cast<int>(from);  // truncation: the ceiling for negative values, else below it
+  if (static_cast<float>(ceiling) < from) ++ceiling;
+  int floor = static_cast<int>(to);  // the floor for non-negative values, else above it
+  if (static_cast<float>(floor) > to) --floor;
+  first = std::max(ceiling, 0);
+  last = std::min(floor, size - 1);
+}
+
+}  // namespace
+
 template <typename V>
 SoftwarePrimitive* PrimitiveRenderer::push_software(PrimitiveKind kind, const V& shape, vec2 lower, vec2 upper) {
-  // The pixels whose centres (column + 0.5, row + 0.5) lie in [lower, upper], inside the frame;
-  // the comparisons also reject NaN bounds.
-  const float width = static_cast<float>(camera_.width());
-  const float height = static_cast<float>(camera_.height());
-  const float left = std::ceil(lower.x - 0.5f);
-  const float bottom = std::ceil(lower.y - 0.5f);
-  const float right = std::floor(upper.x - 0.5f);
-  const float top = std::floor(upper.y - 0.5f);
-  if (!(left <= right && bottom <= top && right >= 0.0f && top >= 0.0f && left < width && bottom < height)) {
-    return nullptr;
-  }
+  // The pixels whose centres (column + 0.5, row + 0.5) lie in [lower, upper], inside the frame.
   SoftwarePrimitive primitive;
+  pixel_span(lower.x, upper.x, camera_.width(), primitive.left, primitive.right);
+  if (primitive.left > primitive.right) return nullptr;
+  pixel_span(lower.y, upper.y, camera_.height(), primitive.bottom, primitive.top);
+  if (primitive.bottom > primitive.top) return nullptr;
   primitive.kind = kind;
-  primitive.left = static_cast<int>(std::max(left, 0.0f));
-  primitive.bottom = static_cast<int>(std::max(bottom, 0.0f));
-  primitive.right = static_cast<int>(std::min(right, width - 1.0f));
-  primitive.top = static_cast<int>(std::min(top, height - 1.0f));
   primitive.index = add_software_parameters(shape);
   return &software_open_[static_cast<int>(kind)].emplace_back(primitive);
 }

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -301,4 +302,39 @@ TEST(RenderSoftware, ClippedMarksStayInsideTheFrameAndRowsAreNotFlipped) {
   for (int row = 35; row < 65; ++row) EXPECT_EQ(frame.pixel(0, row), background) << "row " << row;
   EXPECT_NE(frame.pixel(0, 99), background);  // bottom-left disc, in the bottom row
   for (int column = 0; column < 200; ++column) EXPECT_EQ(frame.pixel(column, 0), background) << column;
+}
+
+TEST(RenderSoftware, MarksFarBeyondOrNotFiniteAreClippedOrDropped) {
+  // A band from 1e15 m left of the frame to 1e15 m right of it covers its row from the first
+  // column to the last; a band wholly right of the frame, and marks at NaN or infinite
+  // positions, touch nothing (their pixel bounds are empty, not wrapped or overflowed).
+  const float far = 1.0e15f;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float infinity = std::numeric_limits<float>::infinity();
+  FrameRenderer renderer(200, 100);
+  Frame frame;
+  renderer.render_primitives(test_camera(), kBackground,
+                             [&](PrimitiveRenderer& draw) {
+                               draw.start_software_layers();
+                               draw.draw_band({-far, 0.0f}, {far, 0.0f}, 4.0f, kMark);
+                               draw.draw_band({11.0f, 2.0f}, {far, 2.0f}, 4.0f, kMark);
+                               draw.draw_point({nan, 3.0f}, 6.0f, kMark);
+                               draw.draw_point({-infinity, 3.0f}, 6.0f, kMark);
+                               draw.draw_segment({0.0f, nan}, {1.0f, 3.0f}, kMark);
+                               draw.draw_arrow({-5.0f, 3.0f}, {infinity, 3.0f}, kMark);
+                             },
+                             frame);
+  Frame empty;
+  renderer.render_primitives(test_camera(), kBackground, [](PrimitiveRenderer& draw) { draw.start_software_layers(); },
+                             empty);
+  const Pixel background = empty.pixel(100, 50);
+  for (int column = 0; column < 200; ++column) {
+    EXPECT_NE(frame.pixel(column, 50), background) << "column " << column << " of the band's row";
+  }
+  for (int row = 0; row < 100; ++row) {
+    if (row >= 47 && row <= 52) continue;  // the band: 4 px wide about row 50's top edge
+    for (int column = 0; column < 200; ++column) {
+      ASSERT_EQ(frame.pixel(column, row), empty.pixel(column, row)) << "column " << column << ", row " << row;
+    }
+  }
 }
