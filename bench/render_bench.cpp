@@ -3,6 +3,7 @@
 //
 //   bench_render [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE] [--render-only [--flags MASK]]
 //   bench_render --ratio [--repeats N]
+//   bench_render --state-ratio [--step N] [--frames N] [--only all|none]
 //
 // Prints a Markdown table: render ms/frame, wall-clock and CPU time of all threads (llvmpipe
 // rasterises on its own threads); PNG encode ms/frame and size with image/'s `Small` setting
@@ -26,6 +27,13 @@
 // --repeats times (default 5), and prints the CPU time of all threads per frame of each, the
 // every-overlay / shapes-only ratio of each pair with the median and range; then the same for
 // the render alone (`FrameRenderer::render`, both overlay sets rendered at each frame's step).
+// --state-ratio steps ball_pit to --step (default 400) and renders that one world state
+// --frames times (default 60) with every overlay and as often shapes only, in turn, and prints
+// the median and lower quartile CPU time of all threads per render of each, their ratio and the
+// every-overlay frame's hash: the render alone without the spread of different frames, and a
+// check that a change kept the pixels. --only all|none renders one set only, for instruction
+// counts: `valgrind --tool=callgrind bench_render --state-ratio --only all --frames N` for N = 2
+// and 6, the difference of the totals over 4 is one render's instructions of every thread.
 #include "core/world.h"
 #include "demos/scene_registry.h"
 #include "frames/frame_plan.h"
@@ -137,6 +145,9 @@ struct Arguments {
   std::uint32_t render_only_flags = draw_all;
   bool ratio = false;
   int repeats = 5;
+  bool state_ratio = false;
+  int step = 400;
+  std::string only;  // --state-ratio: "all" or "none" renders that set alone
 };
 
 Arguments parse_arguments(int argc, char** argv) {
@@ -156,6 +167,12 @@ Arguments parse_arguments(int argc, char** argv) {
       args.render_only = true;
     } else if (flag == "--ratio") {
       args.ratio = true;
+    } else if (flag == "--state-ratio") {
+      args.state_ratio = true;
+    } else if (flag == "--step" && has_value) {
+      args.step = std::atoi(argv[++i]);
+    } else if (flag == "--only" && has_value) {
+      args.only = argv[++i];
     } else if (flag == "--repeats" && has_value) {
       args.repeats = std::atoi(argv[++i]);
     } else if (flag == "--flags" && has_value) {
@@ -163,13 +180,18 @@ Arguments parse_arguments(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: %s [--frames N] [--warmup STEPS] [--out DIR] [--dump-frame FILE] [--render-only "
-                   "[--flags MASK]]\n       %s --ratio [--repeats N]\n",
-                   argv[0], argv[0]);
+                   "[--flags MASK]]\n       %s --ratio [--repeats N]\n       %s --state-ratio [--step N] "
+                   "[--frames N] [--only all|none]\n",
+                   argv[0], argv[0], argv[0]);
       std::exit(2);
     }
   }
-  if (args.frames < 1 || args.warmup < 0 || args.repeats < 1) {
-    std::fprintf(stderr, "bench_render: --frames and --repeats must be >= 1 and --warmup >= 0\n");
+  if (args.frames < 1 || args.warmup < 0 || args.repeats < 1 || args.step < 0) {
+    std::fprintf(stderr, "bench_render: --frames and --repeats must be >= 1, --warmup and --step >= 0\n");
+    std::exit(2);
+  }
+  if (!args.only.empty() && args.only != "all" && args.only != "none") {
+    std::fprintf(stderr, "bench_render: --only takes all or none, not '%s'\n", args.only.c_str());
     std::exit(2);
   }
   return args;
@@ -359,10 +381,64 @@ int run_ratio(const Arguments& args, const fs::path& out) {
   print_pairs("Render alone (FrameRenderer::render)", render_only);
   return 0;
 }
+// --state-ratio: one world state of ball_pit rendered with every overlay and shapes only, in turn.
+int run_state_ratio(const Arguments& args) {
+  const demos::Scene& scene = *demos::find_builtin_scene(kRatioScene);
+  demos::SceneRun run(scene, demos::Params(scene.params));
+  while (run.step_count() < args.step) run.step();
+  FrameRenderer renderer(kWidth, kHeight);
+  const Camera camera = demos::frame_camera(demos::run_camera(run, kWidth, kHeight), run);
+  DebugDrawOptions draw = scene.view.draw;
+  FrameOptions options[2] = {demos::view_frame_options(run, draw, Theme::Light),
+                             demos::view_frame_options(run, draw, Theme::Light)};
+  options[0].draw.flags = demos::parse_overlays("all");
+  options[1].draw.flags = demos::parse_overlays("none");
+  HudInfo hud;
+  hud.scene_name = demos::scene_title(scene);
+  hud.step = args.step;
+  const bool renders[2] = {args.only != "none", args.only != "all"};
+  Frame frame;
+  std::uint64_t all_hash = 0;
+  for (int which = 0; which < 2; ++which) {  // the first render of each set compiles its shaders
+    if (!renders[which]) continue;
+    demos::update_view_frame(run, options[which], hud);
+    renderer.render(run.world(), camera, options[which], hud, frame);
+    if (which == 0) all_hash = frame.hash();
+  }
+  std::vector<double> cpu[2];
+  for (int i = 0; i < args.frames; ++i) {
+    for (int turn = 0; turn < 2; ++turn) {
+      const int which = (turn + i) % 2;
+      if (!renders[which]) continue;
+      demos::update_view_frame(run, options[which], hud);
+      const double cpu_start = process_cpu_milliseconds();
+      renderer.render(run.world(), camera, options[which], hud, frame);
+      cpu[which].push_back(process_cpu_milliseconds() - cpu_start);
+    }
+  }
+  const auto quartile = [](std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 4];
+  };
+  std::printf("bench_render --state-ratio: %s at step %d, %dx%d, %d renders of each set, in turn; %u hardware threads\n",
+              kRatioScene, args.step, kWidth, kHeight, args.frames, std::thread::hardware_concurrency());
+  std::printf("\nFrameRenderer::render of one state, CPU of all threads, ms/render\n\n| overlays | median | lower quartile |\n|---|---|---|\n");
+  const char* names[2] = {"every overlay", "shapes only"};
+  for (int which = 0; which < 2; ++which) {
+    if (renders[which]) std::printf("| %s | %.2f | %.2f |\n", names[which], median(cpu[which]), quartile(cpu[which]));
+  }
+  if (renders[0] && renders[1]) {
+    std::printf("| ratio | **%.3f** | %.3f |\n", median(cpu[0]) / median(cpu[1]), quartile(cpu[0]) / quartile(cpu[1]));
+  }
+  if (renders[0]) std::printf("\nevery-overlay frame hash: %016llx\n", static_cast<unsigned long long>(all_hash));
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const Arguments args = parse_arguments(argc, argv);
+  if (args.state_ratio) return run_state_ratio(args);
   const bool temporary_output = args.out.empty();
   const fs::path out = temporary_output
                            ? fs::temp_directory_path() / ("impulse2d-bench-render-" + std::to_string(::getpid()))
