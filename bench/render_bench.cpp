@@ -52,6 +52,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -304,16 +305,23 @@ struct RenderPair {
   double none = 0.0;
 };
 
+// The frame options of `scene`'s view for `run`, with every overlay (first) and shapes only
+// (second).
+std::array<FrameOptions, 2> all_and_none_options(const demos::SceneRun& run, const demos::Scene& scene) {
+  DebugDrawOptions draw = scene.view.draw;
+  std::array<FrameOptions, 2> options = {demos::view_frame_options(run, draw, Theme::Light),
+                                         demos::view_frame_options(run, draw, Theme::Light)};
+  options[0].draw.flags = demos::parse_overlays("all");
+  options[1].draw.flags = demos::parse_overlays("none");
+  return options;
+}
+
 RenderPair render_cpu_per_frame(const demos::Scene& scene) {
   demos::SceneRun run(scene, demos::Params(scene.params));
   const demos::FramePlan plan = demos::plan_frames(scene.view.frames, scene.view.steps);
   FrameRenderer renderer(kWidth, kHeight);
   const Camera camera = demos::run_camera(run, kWidth, kHeight);
-  DebugDrawOptions draw = scene.view.draw;
-  FrameOptions options[2] = {demos::view_frame_options(run, draw, Theme::Light),
-                             demos::view_frame_options(run, draw, Theme::Light)};
-  options[0].draw.flags = demos::parse_overlays("all");
-  options[1].draw.flags = demos::parse_overlays("none");
+  std::array<FrameOptions, 2> options = all_and_none_options(run, scene);
   HudInfo hud;
   hud.scene_name = demos::scene_title(scene);
   Frame frame;
@@ -388,11 +396,7 @@ int run_state_ratio(const Arguments& args) {
   while (run.step_count() < args.step) run.step();
   FrameRenderer renderer(kWidth, kHeight);
   const Camera camera = demos::frame_camera(demos::run_camera(run, kWidth, kHeight), run);
-  DebugDrawOptions draw = scene.view.draw;
-  FrameOptions options[2] = {demos::view_frame_options(run, draw, Theme::Light),
-                             demos::view_frame_options(run, draw, Theme::Light)};
-  options[0].draw.flags = demos::parse_overlays("all");
-  options[1].draw.flags = demos::parse_overlays("none");
+  std::array<FrameOptions, 2> options = all_and_none_options(run, scene);
   HudInfo hud;
   hud.scene_name = demos::scene_title(scene);
   hud.step = args.step;
