@@ -11,6 +11,7 @@
 #include <libdeflate.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -76,6 +77,34 @@ namespace {
 /// 11.3 / 337, average 11.9 / 380, Paeth 15.3 / 341, stb's per-row search 22.5 / 340.
 constexpr int kRowFilter = 0;
 
+/// Channels a PNG row holds when every pixel is opaque: the alpha bytes are left out. Measured
+/// on the 151 frames of `ball_pit` at 800x600, libdeflate level 1: RGB takes 1.0-1.5 ms less a
+/// frame than RGBA with every overlay (about 10 against 11 ms) and the same with shapes only;
+/// the bytes are 4 % fewer and 6 % more.
+constexpr int kOpaqueChannels = 3;
+
+/// The rows of `image` without their alpha bytes, packed three bytes a pixel, in `rgb` (its
+/// size is three bytes a pixel and one more), when every pixel's alpha is 255; false, with
+/// `rgb` unspecified, as soon as one is not.
+bool opaque_rgb(const Image& image, std::vector<std::uint8_t>& rgb) {
+  const std::size_t pixels = image.pixel_count();
+  rgb.resize(pixels * kOpaqueChannels + 1);
+  const std::uint8_t* source = image.rgba.data();
+  std::uint8_t* target = rgb.data();
+  const std::size_t row_pixels = static_cast<std::size_t>(image.width);
+  for (std::size_t row_start = 0; row_start < pixels; row_start += row_pixels) {
+    unsigned alpha = 255;
+    for (std::size_t pixel = row_start; pixel < row_start + row_pixels; ++pixel) {
+      // Four bytes copied, three kept: the fourth is overwritten by the next pixel's red (the
+      // last pixel's lands in the spare byte).
+      std::memcpy(target + pixel * kOpaqueChannels, source + pixel * kChannels, 4);
+      alpha &= source[pixel * kChannels + 3];
+    }
+    if (alpha != 255) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> encode_png(const Image& image, PngCompression compression) {
@@ -92,9 +121,13 @@ std::vector<std::uint8_t> encode_png(const Image& image, PngCompression compress
   }();
   (void)configured;
   t_deflate_level = compression == PngCompression::Small ? 12 : 1;
+  thread_local std::vector<std::uint8_t> rgb;
+  const bool opaque = opaque_rgb(image, rgb);
+  const int channels = opaque ? kOpaqueChannels : kChannels;
   int length = 0;
-  unsigned char* encoded = stbi_write_png_to_mem(image.rgba.data(), static_cast<int>(image.stride()),
-                                                 image.width, image.height, kChannels, &length);
+  unsigned char* encoded = stbi_write_png_to_mem(opaque ? rgb.data() : image.rgba.data(),
+                                                 image.width * channels, image.width, image.height,
+                                                 channels, &length);
   if (encoded == nullptr) {
     throw ImageError("encode_png: the encoder failed on a " + std::to_string(image.width) + "x" +
                      std::to_string(image.height) + " image (out of memory?)");

@@ -1,7 +1,7 @@
 #pragma once
 /// @file png.h
-/// The project's one PNG path: images to 8-bit RGBA PNG bytes and files (with their tEXt
-/// chunks) and back. Encoding is stb_image_write's PNG writer with libdeflate as its
+/// The project's one PNG path: images to 8-bit PNG bytes and files (RGB when every pixel is
+/// opaque, as frames are, else RGBA; with their tEXt chunks) and back. Encoding is stb_image_write's PNG writer with libdeflate as its
 /// compressor and one fixed row filter (none: flat-coloured frames deflate best unfiltered);
 /// decoding is stb_image, after a structure check (image/png_check.h).
 
@@ -19,7 +19,8 @@ enum class PngCompression {
   Small,  ///< libdeflate level 12: files kept in a repository (goldens) or a report
 };
 
-/// Encodes `image` as an 8-bit RGBA PNG with `image.text` as tEXt chunks. Thread-safe. Throws
+/// Encodes `image` as an 8-bit PNG with `image.text` as tEXt chunks: RGB (colour type 2) when
+/// every pixel's alpha is 255, else RGBA (colour type 6); decoding gives the same RGBA bytes. Thread-safe. Throws
 /// `ImageError` for an empty or inconsistent image or when the encoder fails.
 std::vector<std::uint8_t> encode_png(const Image& image,
                                      PngCompression compression = PngCompression::Small);

@@ -51,6 +51,34 @@ TEST(RenderPng, RoundTripThroughStbImageIsExactAndOpaque) {
   }
 }
 
+TEST(RenderPng, OpaqueImagesAreWrittenAsRgbOthersAsRgbaBothExactly) {
+  // Every byte value in every channel, rows of an odd width; the PNG's IHDR colour type is the
+  // byte at offset 25 (8 signature, 8 chunk header, 4 width, 4 height, 1 depth).
+  image::Image picture;
+  picture.resize(7, 5);
+  for (std::size_t byte = 0; byte < picture.rgba.size(); ++byte) {
+    picture.rgba[byte] = (byte % 4 == 3) ? 255 : static_cast<std::uint8_t>(byte * 37 % 256);
+  }
+  picture.text["Scene"] = "png";
+  constexpr std::size_t colour_type_offset = 25;
+  for (const image::PngCompression encoding : {image::PngCompression::Fast, image::PngCompression::Small}) {
+    const std::vector<std::uint8_t> opaque_png = image::encode_png(picture, encoding);
+    ASSERT_GT(opaque_png.size(), colour_type_offset);
+    EXPECT_EQ(opaque_png[colour_type_offset], 2) << "an opaque image is written as RGB";
+    const image::Image opaque_decoded = image::decode_png(opaque_png, "opaque.png");
+    EXPECT_EQ(opaque_decoded.rgba, picture.rgba);
+    EXPECT_EQ(opaque_decoded.text, picture.text);
+    // One alpha below 255, in the first pixel and then in the last, keeps the alpha channel.
+    for (const std::size_t pixel : {std::size_t{0}, picture.pixel_count() - 1}) {
+      image::Image translucent = picture;
+      translucent.rgba[pixel * 4 + 3] = 254;
+      const std::vector<std::uint8_t> png = image::encode_png(translucent, encoding);
+      EXPECT_EQ(png[colour_type_offset], 6) << "pixel " << pixel;
+      EXPECT_EQ(image::decode_png(png, "translucent.png").rgba, translucent.rgba) << "pixel " << pixel;
+    }
+  }
+}
+
 TEST(RenderPng, TopRowOfTheFileIsTheTopOfTheScene) {
   // A red band at the top of the picture (world y up) must be the first rows of the PNG.
   FrameRenderer renderer(40, 20);
