@@ -28,13 +28,13 @@ float item_width(const LegendEntry& entry) {
   return (entry.swatch ? legend_swatch_width + legend_swatch_gap : 0.0f) + text_width(entry.label);
 }
 
-// The items of each row when `items` flow into rows at most `max_width` font pixels wide (an
-// item wider than that has a row of its own).
-std::vector<std::vector<std::size_t>> flow(const std::vector<LegendEntry>& items, float max_width) {
+// The items of each row when items `widths` wide (font pixels) flow into rows at most
+// `max_width` font pixels wide (an item wider than that has a row of its own).
+std::vector<std::vector<std::size_t>> flow(const std::vector<float>& widths, float max_width) {
   std::vector<std::vector<std::size_t>> rows;
   float row_width = 0.0f;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const float width = item_width(items[i]);
+  for (std::size_t i = 0; i < widths.size(); ++i) {
+    const float width = widths[i];
     if (rows.empty() || row_width + legend_entry_gap + width > max_width) {
       rows.push_back({i});
       row_width = width;
@@ -46,17 +46,31 @@ std::vector<std::vector<std::size_t>> flow(const std::vector<LegendEntry>& items
   return rows;
 }
 
-// `items` in as few rows as `max_width` allows, each row as short as that many rows allow.
+// `items` in as few rows as `max_width` allows, each row as short as that many rows allow: the
+// narrowest whole font pixel from the rows' mean width up that keeps the row count. Widths are
+// whole font pixels (exact in floats) and flowing wraps greedily, so the row count never grows
+// with the width, and that narrowest width is found by bisection.
 std::vector<std::vector<std::size_t>> balanced_flow(const std::vector<LegendEntry>& items, float max_width) {
-  const std::size_t row_count = flow(items, max_width).size();
+  std::vector<float> widths;
+  widths.reserve(items.size());
+  for (const LegendEntry& item : items) widths.push_back(item_width(item));
+  const std::size_t row_count = flow(widths, max_width).size();
   float total = 0.0f;
-  for (const LegendEntry& item : items) total += item_width(item) + legend_entry_gap;
-  for (float width = std::floor(total / static_cast<float>(std::max<std::size_t>(row_count, 1)));
-       width < max_width; width += 1.0f) {
-    std::vector<std::vector<std::size_t>> rows = flow(items, width);
-    if (rows.size() <= row_count) return rows;
+  for (const float width : widths) total += width + legend_entry_gap;
+  const float narrowest = std::floor(total / static_cast<float>(std::max<std::size_t>(row_count, 1)));
+  // Candidate widths narrowest + k for k in [0, candidates): those below max_width.
+  const int candidates = narrowest < max_width ? static_cast<int>(std::ceil(max_width - narrowest)) : 0;
+  int low = 0;
+  int high = candidates;
+  while (low < high) {
+    const int middle = low + (high - low) / 2;
+    if (flow(widths, narrowest + static_cast<float>(middle)).size() <= row_count) {
+      high = middle;
+    } else {
+      low = middle + 1;
+    }
   }
-  return flow(items, max_width);
+  return flow(widths, low < candidates ? narrowest + static_cast<float>(low) : max_width);
 }
 
 float row_width(const std::vector<LegendEntry>& items, const std::vector<std::size_t>& row) {
