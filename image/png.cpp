@@ -85,7 +85,7 @@ constexpr int kOpaqueChannels = 3;
 
 /// The rows of `image` without their alpha bytes, packed three bytes a pixel, in `rgb` (its
 /// size is three bytes a pixel and one more), when every pixel's alpha is 255; false, with
-/// `rgb` unspecified, as soon as one is not.
+/// `rgb` unspecified, after the first row with an alpha below 255.
 bool opaque_rgb(const Image& image, std::vector<std::uint8_t>& rgb) {
   const std::size_t pixels = image.pixel_count();
   rgb.resize(pixels * kOpaqueChannels + 1);
