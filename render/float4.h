@@ -101,6 +101,18 @@ struct Pixels4 {
     const __m128i result = _mm_or_si128(_mm_and_si128(write, colour), _mm_andnot_si128(write, bytes));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(at), result);
   }
+
+  /// Writes the red, green and blue bytes of `rgb` (bytes 0, 1, 2; byte 3 unused) to the pixels
+  /// at `at` (16 bytes) whose lane of `where` is above 0, alpha as it was; the others keep their
+  /// bytes.
+  static void paint(std::uint8_t* at, Float4 where, std::uint32_t rgb) {
+    const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(at));
+    const __m128i colour = _mm_or_si128(_mm_set1_epi32(static_cast<int>(rgb & 0x00FFFFFFu)),
+                                        _mm_andnot_si128(_mm_set1_epi32(0x00FFFFFF), bytes));
+    const __m128i write = _mm_castps_si128(_mm_cmpgt_ps(where.v, _mm_setzero_ps()));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(at),
+                     _mm_or_si128(_mm_and_si128(write, colour), _mm_andnot_si128(write, bytes)));
+  }
 };
 
 #else
@@ -182,6 +194,18 @@ struct Pixels4 {
       at[4 * i] = static_cast<std::uint8_t>(red.v[i]);
       at[4 * i + 1] = static_cast<std::uint8_t>(green.v[i]);
       at[4 * i + 2] = static_cast<std::uint8_t>(blue.v[i]);
+    }
+  }
+
+  /// Writes the red, green and blue bytes of `rgb` (bytes 0, 1, 2; byte 3 unused) to the pixels
+  /// at `at` (16 bytes) whose lane of `where` is above 0, alpha as it was; the others keep their
+  /// bytes.
+  static void paint(std::uint8_t* at, Float4 where, std::uint32_t rgb) {
+    for (int i = 0; i < 4; ++i) {
+      if (!(where.v[i] > 0.0f)) continue;
+      at[4 * i] = static_cast<std::uint8_t>(rgb);
+      at[4 * i + 1] = static_cast<std::uint8_t>(rgb >> 8);
+      at[4 * i + 2] = static_cast<std::uint8_t>(rgb >> 16);
     }
   }
 };

@@ -129,6 +129,17 @@ struct Pixels8 {
                          blended(red, green, blue, alpha));
   }
 
+  /// Writes the red, green and blue bytes of `rgb` (bytes 0, 1, 2; byte 3 unused) to the pixels
+  /// at `at` (32 bytes) whose lane of `where` is above 0, alpha as it was; the others keep their
+  /// bytes.
+  static void paint(std::uint8_t* at, Float8 where, std::uint32_t rgb) {
+    const __m256i bytes = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(at));
+    const __m256i colour = _mm256_or_si256(_mm256_set1_epi32(static_cast<int>(rgb & 0x00FFFFFFu)),
+                                           _mm256_andnot_si256(_mm256_set1_epi32(0x00FFFFFF), bytes));
+    const __m256i write = _mm256_castps_si256(_mm256_cmp_ps(where.v, _mm256_setzero_ps(), _CMP_GT_OQ));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(at), _mm256_blendv_epi8(bytes, colour, write));
+  }
+
  private:
   // The bytes `store` writes.
   __m256i blended(Float8 red, Float8 green, Float8 blue, Float8 alpha) const {

@@ -618,6 +618,73 @@ void draw_axis_box(const SoftwarePrimitive& primitive, const ShapeVertex& shape,
   }
 }
 
+// Whether a text run's corner and size are whole pixels, as labels and the HUD place them:
+// then its coverage at every pixel centre is exactly 0 or 1 (`draw_text_run`'s factors are
+// saturate(k + 0.5 + 0.5) for integers k, and ink is 0 or 1).
+bool in_whole_pixels(const TextVertex& run) {
+  // A conversion to int truncates, which gives back a value within 2^23 exactly when it is whole
+  // (no libm call here: see the file comment on linkage).
+  for (const float value : run.run) {
+    if (!(std::abs(value) < 8388608.0f) || static_cast<float>(static_cast<int>(value)) != value) return false;
+  }
+  return true;
+}
+
+// `draw_text_run` of an opaque run in whole pixels: each pixel with ink inside the run gets the
+// colour `blended_channel` gives for coverage 1 and alpha 1 (min(c + byte / 255 * 0, 1) * 255
+// + 0.5, which is `to_byte(c)`: the same bytes), written without blending; the margin's pixels
+// (coverage 0) are not visited.
+template <typename F>
+void draw_opaque_text_run(const SoftwarePrimitive& primitive, const TextVertex& run, int first_row, int last_row,
+                          Frame& frame) {
+  const Rgba fill = normalised(run.fill);
+  const std::uint32_t rgb = static_cast<std::uint32_t>(to_byte(fill.r)) |
+                            static_cast<std::uint32_t>(to_byte(fill.g)) << 8 |
+                            static_cast<std::uint32_t>(to_byte(fill.b)) << 16;
+  // The pixels whose centres lie inside the run (a factor of 1): columns run[0] ..
+  // run[0] + run[2] - 1 and rows run[1] - run[3] .. run[1] - 1.
+  const RowSpans columns =
+      columns_between(run.run[0] + 0.5f, run.run[0] + run.run[2] - 0.5f, primitive.left, primitive.right);
+  const RowSpans rows = columns_between(run.run[1] - run.run[3] + 0.5f, run.run[1] - 0.5f,
+                                        std::max(primitive.bottom, first_row), std::min(primitive.top, last_row));
+  if (columns.count == 0 || rows.count == 0) return;
+  const std::size_t stride = frame.stride();
+  constexpr int chunk = 64;  // pixel columns whose font columns are held at once
+  std::int32_t bit_columns[chunk + F::width] = {};
+  for (int first_column = columns.first[0]; first_column <= columns.last[0]; first_column += chunk) {
+    const int last_column = std::min(first_column + chunk - 1, columns.last[0]);
+    for (int column = first_column; column <= last_column; ++column) {
+      const float qx = static_cast<float>(column) + 0.5f - run.run[0];
+      bit_columns[column - first_column] = std::min(static_cast<int>(qx * run.font_scale), 31) * font_glyph_rows;
+    }
+    for (int row = rows.first[0]; row <= rows.last[0]; ++row) {
+      const float qy = run.run[1] - (static_cast<float>(row) + 0.5f);
+      const int font_row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
+      std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
+      for (int column = first_column; column <= last_column; column += F::width) {
+        F ink = F::bits(run.bits, bit_columns + (column - first_column), font_row);
+        if (!any_positive(ink)) continue;
+        std::uint8_t* const pixel = row_pixels + static_cast<std::size_t>(column) * 4;
+        if (column + F::width - 1 <= last_column) {
+          F::Pixels::paint(pixel, ink, rgb);
+          continue;
+        }
+        // The last group: lanes past the run's columns are not painted; near the row's end a copy.
+        const int count = last_column - column + 1;
+        ink = ink * F::first_lanes(count);
+        if (column + F::width <= frame.width) {
+          F::Pixels::paint(pixel, ink, rgb);
+          continue;
+        }
+        std::uint8_t spill[4 * F::width] = {};
+        std::memcpy(spill, pixel, static_cast<std::size_t>(count) * 4);
+        F::Pixels::paint(spill, ink, rgb);
+        std::memcpy(pixel, spill, static_cast<std::size_t>(count) * 4);
+      }
+    }
+  }
+}
+
 // A text run in window rows [first_row, last_row]: ink where the font pixel under the pixel
 // centre is set, within the run (the text fragment program's formula), F::width pixels at a time.
 // The font column under each pixel column is found once per call and the font row once per row,
@@ -627,6 +694,10 @@ template <typename F>
 void draw_text_run(const SoftwarePrimitive& primitive, const TextVertex& run, int first_row, int last_row,
                    Frame& frame) {
   const Rgba fill = normalised(run.fill);
+  if (fill.a == 1.0f && in_whole_pixels(run)) {
+    draw_opaque_text_run<F>(primitive, run, first_row, last_row, frame);
+    return;
+  }
   const std::size_t stride = frame.stride();
   const int bottom = std::max(primitive.bottom, first_row);
   const int top = std::min(primitive.top, last_row);

@@ -2,6 +2,7 @@
 // the run, exact coverage where the formulas give it, clipping at the frame's edges, rows
 // flipped like GL's read-back, and pixels within a few levels of llvmpipe's.
 #include "render/camera.h"
+#include "render/easy_font.h"
 #include "render/frame_renderer.h"
 #include "render/primitive_renderer.h"
 #include "render/software_raster.h"
@@ -335,6 +336,104 @@ TEST(RenderSoftware, MarksFarBeyondOrNotFiniteAreClippedOrDropped) {
     if (row >= 47 && row <= 52) continue;  // the band: 4 px wide about row 50's top edge
     for (int column = 0; column < 200; ++column) {
       ASSERT_EQ(frame.pixel(column, row), empty.pixel(column, row)) << "column " << column << ", row " << row;
+    }
+  }
+}
+
+namespace {
+
+// The text fragment program's coverage (primitive_shaders.cpp) at the centre of pixel (column,
+// window row), one pixel at a time: ink under the centre times the run's anti-aliased inside.
+float text_coverage(const TextVertex& run, int column, int row) {
+  const float qx = static_cast<float>(column) + 0.5f - run.run[0];
+  const float qy = run.run[1] - (static_cast<float>(row) + 0.5f);
+  const auto saturate = [](float value) { return std::min(std::max(value, 0.0f), 1.0f); };
+  const float inside = saturate(std::min(qx, run.run[2] - qx) + 0.5f) * saturate(std::min(qy, run.run[3] - qy) + 0.5f);
+  if (!(inside > 0.0f)) return 0.0f;
+  const int font_column = std::min(static_cast<int>(qx * run.font_scale), 31);
+  const int font_row = std::min(static_cast<int>(qy * run.font_scale), font_glyph_rows - 1);
+  const int bit = std::min(std::max(font_column * font_glyph_rows + font_row, 0), 255);
+  return inside * static_cast<float>((run.bits[bit / 32] >> (bit % 32)) & 1u);
+}
+
+// `run` blended premultiplied over `frame` pixel by pixel, as GL blends the fragment program's
+// output: the reference the rasteriser's bytes are held to.
+void blend_text_by_pixel(const TextVertex& run, const SoftwarePrimitive& primitive, Frame& frame) {
+  for (int row = primitive.bottom; row <= primitive.top; ++row) {
+    for (int column = primitive.left; column <= primitive.right; ++column) {
+      const float alpha = static_cast<float>(run.fill[3]) / 255.0f * text_coverage(run, column, row);
+      if (!(alpha > 0.0f)) continue;
+      std::uint8_t* const pixel = frame.rgba.data() + (static_cast<std::size_t>(frame.height - 1 - row) *
+                                                           static_cast<std::size_t>(frame.width) +
+                                                       static_cast<std::size_t>(column)) * 4;
+      for (int channel = 0; channel < 3; ++channel) {
+        const float source = static_cast<float>(run.fill[channel]) / 255.0f * alpha;
+        const float blended = source + static_cast<float>(pixel[channel]) / 255.0f * (1.0f - alpha);
+        pixel[channel] = static_cast<std::uint8_t>(std::min(blended, 1.0f) * 255.0f + 0.5f);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+// Labels and the HUD place text in whole pixels, and their colours are opaque: the rasteriser
+// paints such runs without blending (coverage is exactly 0 or 1 there). The bytes must be the
+// formula's, at scales 1 to 3, across the frame's edges (a right edge no multiple of eight
+// pixels away), overlapping, at either lane width and any thread count.
+TEST(RenderSoftware, OpaqueTextInWholePixelsGivesTheFormulasBytes) {
+  constexpr int width = 203;
+  constexpr int height = 77;
+  Lcg random;
+  Frame background;
+  background.resize(width, height);
+  for (std::size_t i = 0; i < background.rgba.size(); ++i) {
+    background.rgba[i] = i % 4 == 3 ? 255 : static_cast<std::uint8_t>(random.next() * 256.0f);
+  }
+  SoftwareBatch batch;
+  Frame expected = background;
+  for (int i = 0; i < 80; ++i) {
+    TextVertex run;
+    const int scale = 1 + i % 3;
+    run.font_scale = 1.0f / static_cast<float>(scale);
+    run.run[0] = std::floor(random.next() * 230.0f) - 15.0f;
+    run.run[1] = std::floor(random.next() * 110.0f) - 10.0f;
+    run.run[2] = static_cast<float>((1 + static_cast<int>(random.next() * text_run_columns)) * scale);
+    run.run[3] = static_cast<float>(font_glyph_rows * scale);
+    set_rgba(run.fill, random);
+    run.fill[3] = 255;
+    for (std::uint32_t& word : run.bits) word = static_cast<std::uint32_t>(random.next() * 4294967040.0f);
+    // The pixels a push_text run may touch: a pixel's margin around it, clipped to the frame.
+    SoftwarePrimitive primitive;
+    primitive.kind = PrimitiveKind::text;
+    primitive.left = std::max(0, static_cast<int>(std::ceil(run.run[0] - 1.0f - 0.5f)));
+    primitive.right = std::min(width - 1, static_cast<int>(std::floor(run.run[0] + run.run[2] + 1.0f - 0.5f)));
+    primitive.bottom = std::max(0, static_cast<int>(std::ceil(run.run[1] - run.run[3] - 1.0f - 0.5f)));
+    primitive.top = std::min(height - 1, static_cast<int>(std::floor(run.run[1] + 1.0f - 0.5f)));
+    if (primitive.left > primitive.right || primitive.bottom > primitive.top) continue;
+    primitive.index = static_cast<std::uint32_t>(batch.texts.size());
+    batch.texts.push_back(run);
+    batch.primitives.push_back(primitive);
+    blend_text_by_pixel(run, primitive, expected);
+  }
+  ASSERT_GT(batch.primitives.size(), 60u);
+  std::size_t inked = 0;
+  for (std::size_t i = 0; i < expected.rgba.size(); ++i) inked += expected.rgba[i] != background.rgba[i] ? 1 : 0;
+  ASSERT_GT(inked, 3000u);
+  for (const RasterLanes lanes : {RasterLanes::four, RasterLanes::eight}) {
+    for (const int threads : {1, 3}) {
+      Frame frame = background;
+      SoftwareRaster(threads, lanes).draw(batch, frame);
+      std::size_t differing = 0;
+      std::size_t first = frame.rgba.size();
+      for (std::size_t i = 0; i < frame.rgba.size(); ++i) {
+        if (frame.rgba[i] == expected.rgba[i]) continue;
+        ++differing;
+        first = std::min(first, i);
+      }
+      EXPECT_EQ(differing, 0u) << (lanes == RasterLanes::eight ? "eight" : "four") << " lanes, " << threads
+                               << " threads: first differing byte " << first << " (pixel " << first / 4 % width
+                               << ", " << first / 4 / width << " from the top)";
     }
   }
 }
