@@ -211,6 +211,22 @@ bool same_every_row(const RowLimit& limit) {
   return limit.along_row && limit.from_slope == 0.0f && limit.to_slope == 0.0f;
 }
 
+// The columns of the one span `spans` left and right of the hole's [hole_from, hole_to].
+RowSpans beside_hole(const RowSpans& spans, float hole_from, float hole_to) {
+  const RowSpans inside = columns_between(hole_from, hole_to, spans.first[0], spans.last[0]);
+  if (inside.count == 0) return spans;
+  RowSpans sides;
+  if (inside.first[0] > spans.first[0]) {
+    sides.first[sides.count] = spans.first[0];
+    sides.last[sides.count++] = inside.first[0] - 1;
+  }
+  if (inside.last[0] < spans.last[0]) {
+    sides.first[sides.count] = inside.last[0] + 1;
+    sides.last[sides.count++] = spans.last[0];
+  }
+  return sides;
+}
+
 // The columns of each row that a disc, box or arrow may cover: its frame rectangle
 // [lower, upper] (p.x = ax x + ay y - (ax ox + ay oy), p.y = -ay x + ax y + (ay ox - ax oy)),
 // without a box outline's hole (where its coverage is exactly 1 - 1 = 0). In an axis-aligned
@@ -270,22 +286,6 @@ class FrameColumns {
     const float oy = shape.frame[1];
     out[0] = row_limit(ax, ay, -(ax * ox + ay * oy), lower.x, upper.x);
     out[1] = row_limit(-ay, ax, ay * ox - ax * oy, lower.y, upper.y);
-  }
-
-  // The columns of the one span `spans` left and right of the hole's [hole_from, hole_to].
-  static RowSpans beside_hole(const RowSpans& spans, float hole_from, float hole_to) {
-    const RowSpans inside = columns_between(hole_from, hole_to, spans.first[0], spans.last[0]);
-    if (inside.count == 0) return spans;
-    RowSpans sides;
-    if (inside.first[0] > spans.first[0]) {
-      sides.first[sides.count] = spans.first[0];
-      sides.last[sides.count++] = inside.first[0] - 1;
-    }
-    if (inside.last[0] < spans.last[0]) {
-      sides.first[sides.count] = inside.last[0] + 1;
-      sides.last[sides.count++] = spans.last[0];
-    }
-    return sides;
   }
 
   int left_;
@@ -534,7 +534,11 @@ void blend_in_frame(const SoftwarePrimitive& primitive, int first_row, int last_
 // An axis-aligned box (bounding boxes, panels, the highlight) in window rows [first_row,
 // last_row]: its coverage is a column factor times a row factor of `rectangle` (an outline's
 // less the hole's), each computed as there (the same bytes), so each row's factors are found
-// once and each F::width columns' once for all the rows that share the columns' spans.
+// once and each F::width columns' once for all the rows that share the columns' spans. The
+// columns are the bounds'; on an outline's rows whose inner row factor is exactly 1 (so is the
+// outer one), those beside the hole, whose inner column factor is 1 for sure (coverage
+// 1 1 - 1 1 = 0 inside it). On those rows the coverage of a column does not depend on the row
+// (x 1 is exact), so a group's colour is found once for all of them.
 template <typename F>
 void draw_axis_box(const SoftwarePrimitive& primitive, const ShapeVertex& shape, int first_row, int last_row,
                    Frame& frame) {
@@ -542,75 +546,84 @@ void draw_axis_box(const SoftwarePrimitive& primitive, const ShapeVertex& shape,
   const int top = std::min(primitive.top, last_row);
   if (bottom > top) return;
   const bool outline = shape.box[3] > 0.0f;
-  const FrameColumns columns(primitive, shape, outline);
   const Rgba fill = normalised(shape.fill);
   const float outer_x = shape.box[0] + 0.5f;
   const float outer_y = shape.box[1] + 0.5f;
   const float inner_x = (shape.box[0] - shape.box[3]) + 0.5f;
   const float inner_y = (shape.box[1] - shape.box[3]) + 0.5f;
-  // The rows of each of the frame's two sets of spans, with each row's factors.
-  const RowSpans* sets[2] = {nullptr, nullptr};
+  // Set 0: every column of the bounds; set 1 (an outline's rows inside the hole): beside it.
+  RowSpans spans[2];
+  spans[0].first[0] = primitive.left;
+  spans[0].last[0] = primitive.right;
+  spans[0].count = 1;
+  spans[1] = spans[0];
+  // |px| <= inner_x - 1 gives an inner column factor of 1; the slack covers px's rounding.
+  const float hole = inner_x - 1.0f - span_slack;
+  if (outline && hole > 0.0f) spans[1] = beside_hole(spans[0], shape.frame[0] - hole, shape.frame[0] + hole);
   int set_rows[2][band_rows];
   int set_row_count[2] = {0, 0};
   float outer_row[band_rows];
   float inner_row[band_rows];
   for (int row = bottom; row <= top; ++row) {
-    const float y = static_cast<float>(row) + 0.5f;
-    const float py = y - shape.frame[1];
+    const float py = (static_cast<float>(row) + 0.5f) - shape.frame[1];
     const int i = row - bottom;
-    const RowSpans* const spans = &columns.fixed_row(y);
     outer_row[i] = saturate(outer_y - std::abs(py));
     inner_row[i] = saturate(inner_y - std::abs(py));
-    if (spans->count == 0) continue;
-    const int set = sets[0] == nullptr || sets[0] == spans ? 0 : 1;
-    sets[set] = spans;
+    if (!(outer_row[i] > 0.0f)) continue;  // coverage 0 (the inner factor is at most the outer)
+    const int set = outline && inner_row[i] == 1.0f ? 1 : 0;
     set_rows[set][set_row_count[set]++] = row;
   }
   const F origin_x(shape.frame[0]);
   const std::size_t stride = frame.stride();
+  // The coverage of the columns `outer_column`, `inner_column` on the rows of `set`, at `i`.
+  const auto coverage_at = [&](int set, F outer_column, F inner_column, int i) {
+    if (set == 1) return outer_column * F(1.0f) - inner_column * F(1.0f);
+    F coverage = outer_column * F(outer_row[i]);
+    if (outline) coverage = coverage - inner_column * F(inner_row[i]);
+    return coverage;
+  };
   for (int set = 0; set < 2; ++set) {
-    const RowSpans* const spans = sets[set];
-    if (spans == nullptr) continue;
+    const RowSpans& set_spans = spans[set];
+    if (set_row_count[set] == 0) continue;
     if constexpr (F::width == 8) {
       // An outline's sides beside the hole, each at most four pixels wide: both in one group.
-      if (spans->count == 2 && is_thin<F>(spans->first[0], spans->last[0], frame.width) &&
-          is_thin<F>(spans->first[1], spans->last[1], frame.width) && spans->first[0] + 4 <= spans->first[1]) {
-        const F px = F::ramp_halves(static_cast<float>(spans->first[0]) + 0.5f,
-                                    static_cast<float>(spans->first[1]) + 0.5f) -
+      if (set_spans.count == 2 && is_thin<F>(set_spans.first[0], set_spans.last[0], frame.width) &&
+          is_thin<F>(set_spans.first[1], set_spans.last[1], frame.width) && set_spans.first[0] + 4 <= set_spans.first[1]) {
+        const F px = F::ramp_halves(static_cast<float>(set_spans.first[0]) + 0.5f,
+                                    static_cast<float>(set_spans.first[1]) + 0.5f) -
                      origin_x;
         const F outer_column = saturate(F(outer_x) - abs(px));
         const F inner_column = saturate(F(inner_x) - abs(px));
-        const F lanes = F::first_lanes_halves(spans->last[0] - spans->first[0] + 1, spans->last[1] - spans->first[1] + 1);
+        const F lanes =
+            F::first_lanes_halves(set_spans.last[0] - set_spans.first[0] + 1, set_spans.last[1] - set_spans.first[1] + 1);
+        const Premultiplied<F> same = premultiplied(fill, coverage_at(1, outer_column, inner_column, 0));
         for (int k = 0; k < set_row_count[set]; ++k) {
           const int row = set_rows[set][k];
-          const int i = row - bottom;
-          F coverage = outer_column * F(outer_row[i]);
-          if (outline) coverage = coverage - inner_column * F(inner_row[i]);
           std::uint8_t* const row_pixels = frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
-          const Premultiplied<F> source = premultiplied(fill, coverage);
-          blend_group_halves(row_pixels + static_cast<std::size_t>(spans->first[0]) * 4,
-                             row_pixels + static_cast<std::size_t>(spans->first[1]) * 4, source, source.a * lanes);
+          const Premultiplied<F> source =
+              set == 1 ? same : premultiplied(fill, coverage_at(set, outer_column, inner_column, row - bottom));
+          blend_group_halves(row_pixels + static_cast<std::size_t>(set_spans.first[0]) * 4,
+                             row_pixels + static_cast<std::size_t>(set_spans.first[1]) * 4, source, source.a * lanes);
         }
         continue;
       }
     }
-    for (int span = 0; span < spans->count; ++span) {
-      for (int column = spans->first[span]; column <= spans->last[span]; column += F::width) {
+    for (int span = 0; span < set_spans.count; ++span) {
+      for (int column = set_spans.first[span]; column <= set_spans.last[span]; column += F::width) {
         const F px = F::ramp(static_cast<float>(column) + 0.5f) - origin_x;
         const F outer_column = saturate(F(outer_x) - abs(px));
         const F inner_column = saturate(F(inner_x) - abs(px));
+        const Premultiplied<F> same = premultiplied(fill, coverage_at(1, outer_column, inner_column, 0));
         for (int k = 0; k < set_row_count[set]; ++k) {
           const int row = set_rows[set][k];
-          const int i = row - bottom;
-          F coverage = outer_column * F(outer_row[i]);
-          if (outline) coverage = coverage - inner_column * F(inner_row[i]);
           std::uint8_t* const row_pixels =
               frame.rgba.data() + static_cast<std::size_t>(frame.height - 1 - row) * stride;
-          const Premultiplied<F> source = premultiplied(fill, coverage);
-          if (column + F::width - 1 <= spans->last[span]) {
+          const Premultiplied<F> source =
+              set == 1 ? same : premultiplied(fill, coverage_at(set, outer_column, inner_column, row - bottom));
+          if (column + F::width - 1 <= set_spans.last[span]) {
             blend_group(row_pixels + static_cast<std::size_t>(column) * 4, source, source.a);
           } else {
-            blend_tail(row_pixels, column, spans->last[span], frame.width, source);
+            blend_tail(row_pixels, column, set_spans.last[span], frame.width, source);
           }
         }
       }

@@ -437,3 +437,100 @@ TEST(RenderSoftware, OpaqueTextInWholePixelsGivesTheFormulasBytes) {
     }
   }
 }
+
+namespace {
+
+// The box fragment program's coverage at window point (x, y) for an axis-aligned box centred on
+// (cx, cy): `rectangle` of the half extents, less that of the hole for an outline.
+float axis_box_coverage(const ShapeVertex& shape, float x, float y) {
+  const float px = x - shape.frame[0];
+  const float py = y - shape.frame[1];
+  const auto saturate = [](float value) { return std::min(std::max(value, 0.0f), 1.0f); };
+  const auto rectangle = [&](float hx, float hy) {
+    return saturate(hx + 0.5f - std::abs(px)) * saturate(hy + 0.5f - std::abs(py));
+  };
+  float coverage = rectangle(shape.box[0], shape.box[1]);
+  if (shape.box[3] > 0.0f) coverage = coverage - rectangle(shape.box[0] - shape.box[3], shape.box[1] - shape.box[3]);
+  return coverage;
+}
+
+}  // namespace
+
+// Bounding boxes, panels and highlights are axis-aligned boxes, filled or outlines: the
+// rasteriser finds each row's and each column's factor once and skips an outline's hole. The
+// bytes must be the formula's, pixel by pixel, for boxes of every size from under a pixel to
+// wider than a band, outlines as thick as the box or thinner than a pixel, across the frame's
+// edges, at either lane width and any thread count.
+TEST(RenderSoftware, AxisAlignedBoxesGiveTheFormulasBytes) {
+  constexpr int width = 203;
+  constexpr int height = 77;
+  Lcg random;
+  Frame background;
+  background.resize(width, height);
+  for (std::size_t i = 0; i < background.rgba.size(); ++i) {
+    background.rgba[i] = i % 4 == 3 ? 255 : static_cast<std::uint8_t>(random.next() * 256.0f);
+  }
+  SoftwareBatch batch;
+  Frame expected = background;
+  for (int i = 0; i < 300; ++i) {
+    ShapeVertex shape;
+    shape.frame[0] = random.next() * 230.0f - 15.0f;
+    shape.frame[1] = random.next() * 100.0f - 10.0f;
+    shape.frame[2] = 1.0f;
+    shape.frame[3] = 0.0f;
+    const float size = i % 10 == 0 ? 20.0f + random.next() * 30.0f : 0.2f + random.next() * 12.0f;
+    shape.box[0] = size * (0.3f + random.next());
+    shape.box[1] = size * (0.3f + random.next());
+    shape.box[3] = i % 3 == 0 ? 0.0f : 0.25f + random.next() * 0.5f * std::min(shape.box[0], shape.box[1]) * 2.2f;
+    set_rgba(shape.fill, random);
+    if (i % 4 == 0) shape.fill[3] = 255;
+    // The pixels it may touch: the box grown by a pixel, clipped to the frame.
+    SoftwarePrimitive primitive;
+    primitive.kind = PrimitiveKind::box;
+    primitive.frame_lower = vec2(-shape.box[0] - 1.0f, -shape.box[1] - 1.0f);
+    primitive.frame_upper = vec2(shape.box[0] + 1.0f, shape.box[1] + 1.0f);
+    primitive.left = std::max(0, static_cast<int>(std::ceil(shape.frame[0] - shape.box[0] - 1.0f - 0.5f)));
+    primitive.right = std::min(width - 1, static_cast<int>(std::floor(shape.frame[0] + shape.box[0] + 1.0f - 0.5f)));
+    primitive.bottom = std::max(0, static_cast<int>(std::ceil(shape.frame[1] - shape.box[1] - 1.0f - 0.5f)));
+    primitive.top = std::min(height - 1, static_cast<int>(std::floor(shape.frame[1] + shape.box[1] + 1.0f - 0.5f)));
+    if (primitive.left > primitive.right || primitive.bottom > primitive.top) continue;
+    primitive.index = static_cast<std::uint32_t>(batch.shapes.size());
+    batch.shapes.push_back(shape);
+    batch.primitives.push_back(primitive);
+    for (int row = primitive.bottom; row <= primitive.top; ++row) {
+      for (int column = primitive.left; column <= primitive.right; ++column) {
+        const float coverage =
+            axis_box_coverage(shape, static_cast<float>(column) + 0.5f, static_cast<float>(row) + 0.5f);
+        const float alpha = static_cast<float>(shape.fill[3]) / 255.0f * coverage;
+        if (!(alpha > 0.0f)) continue;
+        std::uint8_t* const pixel = expected.rgba.data() + (static_cast<std::size_t>(height - 1 - row) * width +
+                                                            static_cast<std::size_t>(column)) * 4;
+        for (int channel = 0; channel < 3; ++channel) {
+          const float source = static_cast<float>(shape.fill[channel]) / 255.0f * alpha;
+          const float blended = source + static_cast<float>(pixel[channel]) / 255.0f * (1.0f - alpha);
+          pixel[channel] = static_cast<std::uint8_t>(std::min(blended, 1.0f) * 255.0f + 0.5f);
+        }
+      }
+    }
+  }
+  ASSERT_GT(batch.primitives.size(), 250u);
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < expected.rgba.size(); ++i) changed += expected.rgba[i] != background.rgba[i] ? 1 : 0;
+  ASSERT_GT(changed, 10000u);
+  for (const RasterLanes lanes : {RasterLanes::four, RasterLanes::eight}) {
+    for (const int threads : {1, 3}) {
+      Frame frame = background;
+      SoftwareRaster(threads, lanes).draw(batch, frame);
+      std::size_t differing = 0;
+      std::size_t first = frame.rgba.size();
+      for (std::size_t i = 0; i < frame.rgba.size(); ++i) {
+        if (frame.rgba[i] == expected.rgba[i]) continue;
+        ++differing;
+        first = std::min(first, i);
+      }
+      EXPECT_EQ(differing, 0u) << (lanes == RasterLanes::eight ? "eight" : "four") << " lanes, " << threads
+                               << " threads: first differing byte " << first << " (pixel " << first / 4 % width
+                               << ", " << first / 4 / width << " from the top)";
+    }
+  }
+}
