@@ -536,9 +536,9 @@ void blend_in_frame(const SoftwarePrimitive& primitive, int first_row, int last_
 // less the hole's), each computed as there (the same bytes), so each row's factors are found
 // once and each F::width columns' once for all the rows that share the columns' spans. The
 // columns are the bounds'; on an outline's rows whose inner row factor is exactly 1 (so is the
-// outer one), those beside the hole, whose inner column factor is 1 for sure (coverage
-// 1 1 - 1 1 = 0 inside it). On those rows the coverage of a column does not depend on the row
-// (x 1 is exact), so a group's colour is found once for all of them.
+// outer one), only those beside the hole: inside it the inner column factor is 1 for sure, and so
+// the coverage is 1 x 1 - 1 x 1 = 0. On those rows a column's coverage does not depend on the
+// row (a product with 1 is exact), so a group's colour is found once for all of them.
 template <typename F>
 void draw_axis_box(const SoftwarePrimitive& primitive, const ShapeVertex& shape, int first_row, int last_row,
                    Frame& frame) {
