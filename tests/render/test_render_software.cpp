@@ -356,21 +356,76 @@ float text_coverage(const TextVertex& run, int column, int row) {
   return inside * static_cast<float>((run.bits[bit / 32] >> (bit % 32)) & 1u);
 }
 
-// `run` blended premultiplied over `frame` pixel by pixel, as GL blends the fragment program's
-// output: the reference the rasteriser's bytes are held to.
-void blend_text_by_pixel(const TextVertex& run, const SoftwarePrimitive& primitive, Frame& frame) {
+// `fill` over `coverage(column, row)` of each pixel of `primitive`'s bounds, blended premultiplied
+// over `frame` pixel by pixel as GL blends a fragment program's output: the reference the
+// rasteriser's bytes are held to.
+template <typename Coverage>
+void blend_by_pixel(const std::uint8_t (&fill)[4], const SoftwarePrimitive& primitive, const Coverage& coverage,
+                    Frame& frame) {
   for (int row = primitive.bottom; row <= primitive.top; ++row) {
     for (int column = primitive.left; column <= primitive.right; ++column) {
-      const float alpha = static_cast<float>(run.fill[3]) / 255.0f * text_coverage(run, column, row);
+      const float alpha = static_cast<float>(fill[3]) / 255.0f * coverage(column, row);
       if (!(alpha > 0.0f)) continue;
       std::uint8_t* const pixel = frame.rgba.data() + (static_cast<std::size_t>(frame.height - 1 - row) *
                                                            static_cast<std::size_t>(frame.width) +
                                                        static_cast<std::size_t>(column)) * 4;
       for (int channel = 0; channel < 3; ++channel) {
-        const float source = static_cast<float>(run.fill[channel]) / 255.0f * alpha;
+        const float source = static_cast<float>(fill[channel]) / 255.0f * alpha;
         const float blended = source + static_cast<float>(pixel[channel]) / 255.0f * (1.0f - alpha);
         pixel[channel] = static_cast<std::uint8_t>(std::min(blended, 1.0f) * 255.0f + 0.5f);
       }
+    }
+  }
+}
+
+// Sets `primitive`'s bounds to the pixels of a `width` x `height` frame whose centres lie in the
+// window rectangle [lower, upper]; false when there are none.
+bool cover(SoftwarePrimitive& primitive, vec2 lower, vec2 upper, int width, int height) {
+  primitive.left = std::max(0, static_cast<int>(std::ceil(lower.x - 0.5f)));
+  primitive.right = std::min(width - 1, static_cast<int>(std::floor(upper.x - 0.5f)));
+  primitive.bottom = std::max(0, static_cast<int>(std::ceil(lower.y - 0.5f)));
+  primitive.top = std::min(height - 1, static_cast<int>(std::floor(upper.y - 0.5f)));
+  return primitive.left <= primitive.right && primitive.bottom <= primitive.top;
+}
+
+// An opaque frame of random colours.
+Frame random_opaque_frame(int width, int height, Lcg& random) {
+  Frame frame;
+  frame.resize(width, height);
+  for (std::size_t i = 0; i < frame.rgba.size(); ++i) {
+    frame.rgba[i] = i % 4 == 3 ? 255 : static_cast<std::uint8_t>(random.next() * 256.0f);
+  }
+  return frame;
+}
+
+// How many bytes of two frames of one size differ, and the first that does.
+struct ByteDifference {
+  std::size_t count = 0;
+  std::size_t first = 0;
+};
+ByteDifference byte_difference(const Frame& a, const Frame& b) {
+  ByteDifference difference{0, a.rgba.size()};
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+    if (a.rgba[i] == b.rgba[i]) continue;
+    ++difference.count;
+    difference.first = std::min(difference.first, i);
+  }
+  return difference;
+}
+
+// Expects `batch` drawn over `background` to give `expected`'s bytes at four and eight lanes, on
+// 1 and 3 threads.
+void expect_formulas_bytes(const SoftwareBatch& batch, const Frame& background, const Frame& expected) {
+  for (const RasterLanes lanes : {RasterLanes::four, RasterLanes::eight}) {
+    for (const int threads : {1, 3}) {
+      Frame frame = background;
+      SoftwareRaster(threads, lanes).draw(batch, frame);
+      const ByteDifference difference = byte_difference(frame, expected);
+      EXPECT_EQ(difference.count, 0u) << (lanes == RasterLanes::eight ? "eight" : "four") << " lanes, " << threads
+                                      << " threads: first differing byte " << difference.first << " (pixel "
+                                      << difference.first / 4 % static_cast<std::size_t>(frame.width) << ", "
+                                      << difference.first / 4 / static_cast<std::size_t>(frame.width)
+                                      << " from the top)";
     }
   }
 }
@@ -385,11 +440,7 @@ TEST(RenderSoftware, OpaqueTextInWholePixelsGivesTheFormulasBytes) {
   constexpr int width = 203;
   constexpr int height = 77;
   Lcg random;
-  Frame background;
-  background.resize(width, height);
-  for (std::size_t i = 0; i < background.rgba.size(); ++i) {
-    background.rgba[i] = i % 4 == 3 ? 255 : static_cast<std::uint8_t>(random.next() * 256.0f);
-  }
+  const Frame background = random_opaque_frame(width, height, random);
   SoftwareBatch batch;
   Frame expected = background;
   for (int i = 0; i < 80; ++i) {
@@ -406,36 +457,19 @@ TEST(RenderSoftware, OpaqueTextInWholePixelsGivesTheFormulasBytes) {
     // The pixels a push_text run may touch: a pixel's margin around it, clipped to the frame.
     SoftwarePrimitive primitive;
     primitive.kind = PrimitiveKind::text;
-    primitive.left = std::max(0, static_cast<int>(std::ceil(run.run[0] - 1.0f - 0.5f)));
-    primitive.right = std::min(width - 1, static_cast<int>(std::floor(run.run[0] + run.run[2] + 1.0f - 0.5f)));
-    primitive.bottom = std::max(0, static_cast<int>(std::ceil(run.run[1] - run.run[3] - 1.0f - 0.5f)));
-    primitive.top = std::min(height - 1, static_cast<int>(std::floor(run.run[1] + 1.0f - 0.5f)));
-    if (primitive.left > primitive.right || primitive.bottom > primitive.top) continue;
+    if (!cover(primitive, vec2(run.run[0], run.run[1] - run.run[3]) - 1.0f,
+               vec2(run.run[0] + run.run[2], run.run[1]) + 1.0f, width, height)) {
+      continue;
+    }
     primitive.index = static_cast<std::uint32_t>(batch.texts.size());
     batch.texts.push_back(run);
     batch.primitives.push_back(primitive);
-    blend_text_by_pixel(run, primitive, expected);
+    blend_by_pixel(run.fill, primitive, [&](int column, int row) { return text_coverage(run, column, row); },
+                   expected);
   }
   ASSERT_GT(batch.primitives.size(), 60u);
-  std::size_t inked = 0;
-  for (std::size_t i = 0; i < expected.rgba.size(); ++i) inked += expected.rgba[i] != background.rgba[i] ? 1 : 0;
-  ASSERT_GT(inked, 3000u);
-  for (const RasterLanes lanes : {RasterLanes::four, RasterLanes::eight}) {
-    for (const int threads : {1, 3}) {
-      Frame frame = background;
-      SoftwareRaster(threads, lanes).draw(batch, frame);
-      std::size_t differing = 0;
-      std::size_t first = frame.rgba.size();
-      for (std::size_t i = 0; i < frame.rgba.size(); ++i) {
-        if (frame.rgba[i] == expected.rgba[i]) continue;
-        ++differing;
-        first = std::min(first, i);
-      }
-      EXPECT_EQ(differing, 0u) << (lanes == RasterLanes::eight ? "eight" : "four") << " lanes, " << threads
-                               << " threads: first differing byte " << first << " (pixel " << first / 4 % width
-                               << ", " << first / 4 / width << " from the top)";
-    }
-  }
+  ASSERT_GT(byte_difference(expected, background).count, 3000u);
+  expect_formulas_bytes(batch, background, expected);
 }
 
 namespace {
@@ -465,11 +499,7 @@ TEST(RenderSoftware, AxisAlignedBoxesGiveTheFormulasBytes) {
   constexpr int width = 203;
   constexpr int height = 77;
   Lcg random;
-  Frame background;
-  background.resize(width, height);
-  for (std::size_t i = 0; i < background.rgba.size(); ++i) {
-    background.rgba[i] = i % 4 == 3 ? 255 : static_cast<std::uint8_t>(random.next() * 256.0f);
-  }
+  const Frame background = random_opaque_frame(width, height, random);
   SoftwareBatch batch;
   Frame expected = background;
   for (int i = 0; i < 300; ++i) {
@@ -489,48 +519,18 @@ TEST(RenderSoftware, AxisAlignedBoxesGiveTheFormulasBytes) {
     primitive.kind = PrimitiveKind::box;
     primitive.frame_lower = vec2(-shape.box[0] - 1.0f, -shape.box[1] - 1.0f);
     primitive.frame_upper = vec2(shape.box[0] + 1.0f, shape.box[1] + 1.0f);
-    primitive.left = std::max(0, static_cast<int>(std::ceil(shape.frame[0] - shape.box[0] - 1.0f - 0.5f)));
-    primitive.right = std::min(width - 1, static_cast<int>(std::floor(shape.frame[0] + shape.box[0] + 1.0f - 0.5f)));
-    primitive.bottom = std::max(0, static_cast<int>(std::ceil(shape.frame[1] - shape.box[1] - 1.0f - 0.5f)));
-    primitive.top = std::min(height - 1, static_cast<int>(std::floor(shape.frame[1] + shape.box[1] + 1.0f - 0.5f)));
-    if (primitive.left > primitive.right || primitive.bottom > primitive.top) continue;
+    const vec2 centre(shape.frame[0], shape.frame[1]);
+    if (!cover(primitive, centre + primitive.frame_lower, centre + primitive.frame_upper, width, height)) continue;
     primitive.index = static_cast<std::uint32_t>(batch.shapes.size());
     batch.shapes.push_back(shape);
     batch.primitives.push_back(primitive);
-    for (int row = primitive.bottom; row <= primitive.top; ++row) {
-      for (int column = primitive.left; column <= primitive.right; ++column) {
-        const float coverage =
-            axis_box_coverage(shape, static_cast<float>(column) + 0.5f, static_cast<float>(row) + 0.5f);
-        const float alpha = static_cast<float>(shape.fill[3]) / 255.0f * coverage;
-        if (!(alpha > 0.0f)) continue;
-        std::uint8_t* const pixel = expected.rgba.data() + (static_cast<std::size_t>(height - 1 - row) * width +
-                                                            static_cast<std::size_t>(column)) * 4;
-        for (int channel = 0; channel < 3; ++channel) {
-          const float source = static_cast<float>(shape.fill[channel]) / 255.0f * alpha;
-          const float blended = source + static_cast<float>(pixel[channel]) / 255.0f * (1.0f - alpha);
-          pixel[channel] = static_cast<std::uint8_t>(std::min(blended, 1.0f) * 255.0f + 0.5f);
-        }
-      }
-    }
+    blend_by_pixel(shape.fill, primitive,
+                   [&](int column, int row) {
+                     return axis_box_coverage(shape, static_cast<float>(column) + 0.5f, static_cast<float>(row) + 0.5f);
+                   },
+                   expected);
   }
   ASSERT_GT(batch.primitives.size(), 250u);
-  std::size_t changed = 0;
-  for (std::size_t i = 0; i < expected.rgba.size(); ++i) changed += expected.rgba[i] != background.rgba[i] ? 1 : 0;
-  ASSERT_GT(changed, 10000u);
-  for (const RasterLanes lanes : {RasterLanes::four, RasterLanes::eight}) {
-    for (const int threads : {1, 3}) {
-      Frame frame = background;
-      SoftwareRaster(threads, lanes).draw(batch, frame);
-      std::size_t differing = 0;
-      std::size_t first = frame.rgba.size();
-      for (std::size_t i = 0; i < frame.rgba.size(); ++i) {
-        if (frame.rgba[i] == expected.rgba[i]) continue;
-        ++differing;
-        first = std::min(first, i);
-      }
-      EXPECT_EQ(differing, 0u) << (lanes == RasterLanes::eight ? "eight" : "four") << " lanes, " << threads
-                               << " threads: first differing byte " << first << " (pixel " << first / 4 % width
-                               << ", " << first / 4 / width << " from the top)";
-    }
-  }
+  ASSERT_GT(byte_difference(expected, background).count, 10000u);
+  expect_formulas_bytes(batch, background, expected);
 }
